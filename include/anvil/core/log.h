@@ -1,0 +1,17 @@
+// Run log: one sink (stdout, optionally mirrored to a file in the output
+// directory). Plain printf-style formatting keeps hot code free of streams.
+#pragma once
+#include <cstdio>
+#include <string>
+
+namespace anvil::log {
+
+/// Mirror every line into `path` (the run's log file) from now on.
+void open_file(const std::string& path);
+void close_file();
+/// Silence the terminal (tests); the file mirror, if open, still receives lines.
+void set_quiet(bool quiet);
+
+void info(const char* format, ...) __attribute__((format(printf, 1, 2)));
+
+} // namespace anvil::log

@@ -1,0 +1,61 @@
+// Global assembly of the condensed P1+/P1 system of one body:
+//   [ K  Bᵀ ] [Δv]     [r_v]
+//   [ B −C  ] [Δp] = − [r_p]      (DESIGN §2), over the free dofs only.
+// The sparsity pattern and an element colouring (no two elements of a colour
+// share a node) are built once per mesh; assembly runs colour by colour with
+// TBB, so the result does not depend on the thread count.
+#pragma once
+#include "anvil/fem/DofMap.h"
+#include "anvil/fem/mini_element.h"
+
+#include <Eigen/Sparse>
+#include <vector>
+
+namespace anvil::fem {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, long>;
+
+/// The unknowns of one body.
+struct BodyUnknowns {
+  Eigen::VectorXd nodal;  ///< 4 × nodes, interleaved [vx vy vz p] (mm/s or mm, MPa)
+  Eigen::VectorXd bubble; ///< 3 × elements, bubble coefficients
+};
+
+/// What the assembly returns besides the matrix.
+struct AssemblyResult {
+  Eigen::VectorXd residual;    ///< 4 × nodes; includes prescribed dofs (their entries are reactions, N)
+  double bubble_residual_sq = 0.0;
+  int bad_element = -1;        ///< first inverted or flat element (0-based), or −1
+};
+
+class Assembler {
+public:
+  Assembler(const mesh::TetMesh& mesh, const DofMap& dofs);
+
+  /// Residual R = internal − external (external = `nodal_forces`, 4 × nodes,
+  /// e.g. tractions) and, when `tangent` is given, the condensed tangent over
+  /// free dofs (pattern fixed at construction). Stores what the bubble
+  /// update needs; call bubble_increment() after the linear solve.
+  AssemblyResult assemble(const mesh::TetMesh& mesh, const material::Material& law,
+                          const std::vector<double>& equivalent_strain, const BodyUnknowns& unknowns,
+                          const Eigen::VectorXd& nodal_forces, const BodyForce& body_force, SparseMatrix* tangent);
+
+  /// Bubble increments (3 × elements) that go with the nodal increments
+  /// `delta` (4 × nodes), from the data of the last assemble() (
+  /// static condensation: Δb = −K_bb⁻¹ (r_b + K_bl Δv + G_b Δp)).
+  void bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorXd& delta,
+                        Eigen::VectorXd& bubble_delta) const;
+
+  /// A matrix with the tangent's pattern and zero values (for analyse-once solvers).
+  const SparseMatrix& pattern() const { return pattern_; }
+  int colour_count() const { return static_cast<int>(colours_.size()); }
+
+private:
+  const DofMap& dofs_;
+  SparseMatrix pattern_;
+  std::vector<std::vector<int>> colours_; ///< element indices per colour
+  /// Per element: K_bb⁻¹ [K_bl G_b] (3×16) and K_bb⁻¹ r_b (3).
+  std::vector<Eigen::Matrix<double, 3, 17>> bubble_condensation_;
+};
+
+} // namespace anvil::fem

@@ -1,0 +1,85 @@
+// Constitutive laws (DESIGN §2). Stateless: the stress follows from the strain
+// rate (or small strain, for elastic laws) and the history passed in; the
+// history itself (ε̄, T) lives in the body's per-element arrays.
+#pragma once
+#include "anvil/material/mandel.h"
+
+#include <limits>
+#include <memory>
+#include <string>
+
+namespace anvil::material {
+
+/// History and temperature at an integration point.
+struct PointState {
+  double equivalent_strain = 0.0; ///< ε̄ (-)
+  double temperature = 20.0;      ///< T (°C)
+};
+
+/// Deviatoric stress s and its tangent ds/dε for a strain rate ε (Mandel,
+/// any trace: the law applies it to dev ε). s derives from a convex potential,
+/// so the tangent is symmetric positive semi-definite.
+class Material {
+public:
+  virtual ~Material() = default;
+
+  /// s (MPa) and tangent (MPa·s) at strain rate ε (1/s); for elastic laws ε is
+  /// the small strain (-) and the tangent is in MPa.
+  virtual void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress,
+                                 Mat6& tangent) const = 0;
+
+  /// Bulk modulus κ (MPa, or MPa·s): the pressure equation is
+  /// div v + p/κ = 0. Infinite for incompressible laws.
+  virtual double bulk_modulus() const { return std::numeric_limits<double>::infinity(); }
+
+  /// True when the unknown is a displacement (mm) rather than a velocity (mm/s).
+  virtual bool is_elastic() const { return false; }
+
+  /// One line for the log: law and parameters with units.
+  virtual std::string describe() const = 0;
+};
+
+/// Norton-Hoff viscoplastic law: s = 2K (√3 ε̄̇_r)^(m-1) dev ε̇ with the
+/// regularised rate ε̄̇_r = sqrt(ε̄̇² + ε̄̇₀²) (DESIGN §2). m = 1 is Newtonian
+/// with viscosity η = K.
+class NortonHoff final : public Material {
+public:
+  /// K in MPa·s^m, 0 < m ≤ 1, ε̄̇₀ ≥ 0 in 1/s (> 0 required when m < 1 so
+  /// that rigid zones have a finite viscosity).
+  NortonHoff(double consistency, double sensitivity, double regularisation_rate);
+
+  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
+                         Mat6& tangent) const override;
+  std::string describe() const override;
+
+  double consistency() const { return consistency_; }
+  double sensitivity() const { return sensitivity_; }
+  double regularisation_rate() const { return regularisation_rate_; }
+  /// Viscosity η = K (√3 ε̄̇_r)^(m-1) at equivalent strain rate ε̄̇ (MPa·s).
+  double viscosity(double equivalent_rate) const;
+
+private:
+  double consistency_;
+  double sensitivity_;
+  double regularisation_rate_;
+};
+
+/// Isotropic linear elasticity, small strain, in u-p mixed form: s = 2G dev ε,
+/// p = -κ tr ε enforced weakly, so ν → 0.5 (κ → ∞) does not lock.
+class LinearElastic final : public Material {
+public:
+  /// E in MPa, -1 < ν ≤ 0.5.
+  LinearElastic(double young_modulus, double poisson_ratio);
+
+  void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress,
+                         Mat6& tangent) const override;
+  double bulk_modulus() const override;
+  bool is_elastic() const override { return true; }
+  std::string describe() const override;
+
+private:
+  double young_modulus_;
+  double poisson_ratio_;
+};
+
+} // namespace anvil::material

@@ -1,0 +1,44 @@
+// A linear tetrahedral mesh as a plain value (DESIGN §1).
+#pragma once
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace anvil::mesh {
+
+using Point = Eigen::Vector3d;
+using Tet = std::array<int, 4>;
+using Triangle = std::array<int, 3>;
+
+/// Coordinates (mm), connectivity (0-based node indices) and the boundary.
+/// Invariants once `validate` has passed: every tet has positive orientation,
+/// det[x1-x0, x2-x0, x3-x0] > 0; every node is used by a tet; boundary_faces
+/// are exactly the tet faces used once, ordered so their normal
+/// (x1-x0)×(x2-x0) points out of the body; boundary_tags[i] is the tag of
+/// boundary_faces[i] (0 = untagged).
+struct TetMesh {
+  std::vector<Point> nodes;
+  std::vector<Tet> tets;
+  std::vector<Triangle> boundary_faces;
+  std::vector<int> boundary_tags;
+
+  int node_count() const { return static_cast<int>(nodes.size()); }
+  int tet_count() const { return static_cast<int>(tets.size()); }
+};
+
+/// Fills mesh.boundary_faces from the tets (outward orientation) and gives each
+/// face the tag of the matching triangle in `tagged` (any vertex order), else 0.
+/// Triangles of `tagged` that are not on the boundary (internal surfaces) are ignored.
+void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged = {},
+                    const std::vector<int>& tags = {});
+
+/// Throws InputError naming `source` and the first offending element or node
+/// (1-based numbers, as in mesh files): indices out of range, repeated
+/// vertices, inverted or degenerate tets, unreferenced nodes, no tets.
+void validate(const TetMesh& mesh, const std::string& source);
+
+/// Sum of tet volumes (mm³).
+double volume(const TetMesh& mesh);
+
+} // namespace anvil::mesh

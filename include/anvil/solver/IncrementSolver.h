@@ -1,0 +1,76 @@
+// Newton-Raphson with line search on (v, p) for one increment of one body
+// (DESIGN §2): exact consistent tangent of the condensed MINI system, sparse
+// direct solve, convergence on the force residual, the incompressibility
+// residual and the velocity increment, each printed per iteration.
+#pragma once
+#include "anvil/core/Timers.h"
+#include "anvil/fem/Assembler.h"
+#include "anvil/solver/LinearSolver.h"
+
+#include <string>
+#include <vector>
+
+namespace anvil::solver {
+
+struct NewtonSettings {
+  double tolerance = 1e-8;      ///< relative: force residual, div residual and |Δv|/|v|
+  int max_iterations = 30;
+  int max_line_search_cuts = 10; ///< step halvings per iteration
+  bool verbose = true;           ///< one log line per iteration
+};
+
+struct NewtonIteration {
+  double force_residual;    ///< |r_v| / force scale (-)
+  double flux_residual;     ///< |r_p| / flux scale (-)
+  double increment;         ///< |Δv| / |v| (-)
+  double step;              ///< line-search step length taken
+};
+
+struct NewtonReport {
+  bool converged = false;
+  std::vector<NewtonIteration> iterations;
+  std::string failure; ///< why it stopped, when not converged
+};
+
+class IncrementSolver {
+public:
+  /// `prescribed` marks dofs (4 × nodes, see DofMap) whose values are imposed.
+  IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, LinearSolverKind kind, Timers& timers);
+
+  /// Solves for the free unknowns of `unknowns` (prescribed entries are kept
+  /// as given). `nodal_forces`: external nodal forces (N), 4 × nodes.
+  NewtonReport solve(const material::Material& law, const std::vector<double>& equivalent_strain,
+                     const Eigen::VectorXd& nodal_forces, const fem::BodyForce& body_force,
+                     const NewtonSettings& settings, fem::BodyUnknowns& unknowns);
+
+  /// Residual of the last evaluation, 4 × nodes: at prescribed dofs it is the
+  /// reaction (N) that the constraint exerts, with the sign of an internal force.
+  const Eigen::VectorXd& residual() const { return residual_; }
+  const fem::DofMap& dofs() const { return dofs_; }
+  int free_count() const { return dofs_.free_count(); }
+
+private:
+  /// Squared residual norms, absolute: velocity rows (N²), pressure rows
+  /// ((mm³/s)²), bubble rows (N²).
+  struct Merit {
+    double force_sq, flux_sq, bubble_sq;
+  };
+  /// Assembles residual and tangent at `unknowns`.
+  Merit evaluate(const material::Material& law, const std::vector<double>& equivalent_strain,
+                 const Eigen::VectorXd& nodal_forces, const fem::BodyForce& body_force,
+                 const fem::BodyUnknowns& unknowns);
+  /// Force scale (N): the larger of the reaction norm and the applied load norm.
+  double force_scale(const Eigen::VectorXd& nodal_forces) const;
+
+  const mesh::TetMesh& mesh_;
+  std::vector<char> prescribed_;
+  fem::DofMap dofs_;
+  fem::Assembler assembler_;
+  LinearSolver linear_solver_;
+  Timers& timers_;
+  fem::SparseMatrix tangent_;
+  Eigen::VectorXd residual_;
+  int bad_element_ = -1;
+};
+
+} // namespace anvil::solver

@@ -1,0 +1,152 @@
+#include "anvil/fem/Assembler.h"
+
+#include "anvil/core/error.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace anvil::fem {
+namespace {
+
+/// Greedy colouring: each element takes the lowest colour not used at its nodes.
+std::vector<std::vector<int>> colour_elements(const mesh::TetMesh& mesh) {
+  constexpr int kWords = 8; // up to 512 colours; meshes need a few tens
+  std::vector<std::uint64_t> used(static_cast<std::size_t>(mesh.node_count()) * kWords, 0);
+  std::vector<std::vector<int>> colours;
+  for (int e = 0; e < mesh.tet_count(); ++e) {
+    int colour = 0;
+    for (int w = 0; w < kWords; ++w) {
+      std::uint64_t taken = 0;
+      for (int v : mesh.tets[e]) taken |= used[static_cast<std::size_t>(v) * kWords + w];
+      if (~taken != 0) {
+        colour = 64 * w + __builtin_ctzll(~taken);
+        break;
+      }
+      colour = -1;
+    }
+    ANVIL_ASSERT(colour >= 0);
+    for (int v : mesh.tets[e]) used[static_cast<std::size_t>(v) * kWords + colour / 64] |= std::uint64_t{1} << (colour % 64);
+    if (colour >= static_cast<int>(colours.size())) colours.resize(static_cast<std::size_t>(colour) + 1);
+    colours[colour].push_back(e);
+  }
+  return colours;
+}
+
+/// Position of (row, col) in a compressed column-major matrix.
+long entry_position(const SparseMatrix& m, long row, long col) {
+  const long* begin = m.innerIndexPtr() + m.outerIndexPtr()[col];
+  const long* end = m.innerIndexPtr() + m.outerIndexPtr()[col + 1];
+  const long* it = std::lower_bound(begin, end, row);
+  ANVIL_ASSERT(it != end && *it == row);
+  return it - m.innerIndexPtr();
+}
+
+} // namespace
+
+Assembler::Assembler(const mesh::TetMesh& mesh, const DofMap& dofs)
+    : dofs_(dofs), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()) {
+  // Node adjacency through elements, then 4×4 blocks filtered to free dofs.
+  std::vector<std::vector<int>> neighbours(mesh.nodes.size());
+  for (const mesh::Tet& t : mesh.tets)
+    for (int a : t)
+      for (int b : t) neighbours[a].push_back(b);
+  long nnz = 0;
+  for (auto& n : neighbours) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+    nnz += 16 * static_cast<long>(n.size());
+  }
+  const int free = dofs.free_count();
+  pattern_.resize(free, free);
+  std::vector<long> outer(static_cast<std::size_t>(free) + 1, 0);
+  std::vector<long> inner;
+  inner.reserve(static_cast<std::size_t>(nnz));
+  for (int node = 0; node < mesh.node_count(); ++node)
+    for (int c = 0; c < kDofsPerNode; ++c) {
+      const int col = dofs.free_index(kDofsPerNode * node + c);
+      if (col < 0) continue;
+      for (int other : neighbours[node])
+        for (int d = 0; d < kDofsPerNode; ++d) {
+          const int row = dofs.free_index(kDofsPerNode * other + d);
+          if (row >= 0) inner.push_back(row);
+        }
+      outer[col + 1] = static_cast<long>(inner.size());
+    }
+  std::vector<double> zeros(inner.size(), 0.0);
+  pattern_ = Eigen::Map<const SparseMatrix>(free, free, static_cast<long>(inner.size()), outer.data(), inner.data(),
+                                            zeros.data());
+  pattern_.makeCompressed();
+}
+
+AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const material::Material& law,
+                                   const std::vector<double>& equivalent_strain, const BodyUnknowns& unknowns,
+                                   const Eigen::VectorXd& nodal_forces, const BodyForce& body_force,
+                                   SparseMatrix* tangent) {
+  AssemblyResult result;
+  result.residual = -nodal_forces;
+  if (tangent) {
+    if (tangent->nonZeros() != pattern_.nonZeros()) *tangent = pattern_;
+    std::fill(tangent->valuePtr(), tangent->valuePtr() + tangent->nonZeros(), 0.0);
+  }
+  std::vector<char> bad(mesh.tets.size(), 0);
+  std::vector<double> bubble_sq(mesh.tets.size(), 0.0);
+  for (const std::vector<int>& colour : colours_) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, colour.size(), 64), [&](const auto& range) {
+      MiniElementInput in;
+      MiniElementSystem system;
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const int e = colour[i];
+        const mesh::Tet& t = mesh.tets[e];
+        for (int a = 0; a < 4; ++a) {
+          in.vertices[a] = mesh.nodes[t[a]];
+          in.nodal_velocity[a] = unknowns.nodal.segment<3>(kDofsPerNode * t[a]);
+          in.nodal_pressure[a] = unknowns.nodal[kDofsPerNode * t[a] + 3];
+        }
+        in.bubble_velocity = unknowns.bubble.segment<3>(3 * e);
+        in.state.equivalent_strain = equivalent_strain.empty() ? 0.0 : equivalent_strain[e];
+        if (!mini_element(in, law, tangent != nullptr, body_force, system)) {
+          bad[e] = 1;
+          continue;
+        }
+        bubble_sq[e] = system.bubble_residual_sq;
+        bubble_condensation_[e].leftCols<16>() = system.bubble_gain;
+        bubble_condensation_[e].col(16) = system.bubble_residual_solved;
+        for (int a = 0; a < 4; ++a)
+          result.residual.segment<4>(kDofsPerNode * t[a]) += system.residual.segment<4>(4 * a);
+        if (!tangent) continue;
+        for (int a = 0; a < 4; ++a)
+          for (int c = 0; c < 4; ++c) {
+            const int col = dofs_.free_index(kDofsPerNode * t[a] + c);
+            if (col < 0) continue;
+            for (int b = 0; b < 4; ++b)
+              for (int d = 0; d < 4; ++d) {
+                const int row = dofs_.free_index(kDofsPerNode * t[b] + d);
+                if (row >= 0) tangent->valuePtr()[entry_position(*tangent, row, col)] += system.tangent(4 * b + d, 4 * a + c);
+              }
+          }
+      }
+    });
+  }
+  for (std::size_t e = 0; e < bad.size(); ++e) {
+    if (bad[e] && result.bad_element < 0) result.bad_element = static_cast<int>(e);
+    result.bubble_residual_sq += bubble_sq[e];
+  }
+  return result;
+}
+
+void Assembler::bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorXd& delta,
+                                 Eigen::VectorXd& bubble_delta) const {
+  bubble_delta.resize(3 * mesh.tet_count());
+  tbb::parallel_for(tbb::blocked_range<int>(0, mesh.tet_count(), 256), [&](const auto& range) {
+    Vec16 local;
+    for (int e = range.begin(); e != range.end(); ++e) {
+      for (int a = 0; a < 4; ++a) local.segment<4>(4 * a) = delta.segment<4>(kDofsPerNode * mesh.tets[e][a]);
+      const auto& c = bubble_condensation_[e];
+      bubble_delta.segment<3>(3 * e) = -(c.col(16) + c.leftCols<16>() * local);
+    }
+  });
+}
+
+} // namespace anvil::fem

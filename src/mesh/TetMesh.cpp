@@ -1,0 +1,85 @@
+#include "anvil/mesh/TetMesh.h"
+
+#include "anvil/core/error.h"
+#include "anvil/mesh/tet_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace anvil::mesh {
+namespace {
+
+std::array<int, 3> sorted(Triangle f) {
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+// Faces of a positively oriented tet, each ordered with its normal pointing out.
+constexpr int kFaceVertices[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+} // namespace
+
+void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged, const std::vector<int>& tags) {
+  std::map<std::array<int, 3>, std::pair<Triangle, int>> once; // sorted key -> (oriented face, count)
+  for (const Tet& t : mesh.tets) {
+    for (const auto& fv : kFaceVertices) {
+      const Triangle face{t[fv[0]], t[fv[1]], t[fv[2]]};
+      auto [it, inserted] = once.try_emplace(sorted(face), face, 0);
+      ++it->second.second;
+    }
+  }
+  std::map<std::array<int, 3>, int> tag_of;
+  for (std::size_t i = 0; i < tagged.size(); ++i) tag_of[sorted(tagged[i])] = tags[i];
+
+  mesh.boundary_faces.clear();
+  mesh.boundary_tags.clear();
+  for (const auto& [key, face_count] : once) {
+    if (face_count.second != 1) continue;
+    mesh.boundary_faces.push_back(face_count.first);
+    auto it = tag_of.find(key);
+    mesh.boundary_tags.push_back(it == tag_of.end() ? 0 : it->second);
+  }
+}
+
+void validate(const TetMesh& mesh, const std::string& source) {
+  const int n = mesh.node_count();
+  if (mesh.tets.empty()) throw InputError(source + ": the mesh has no tetrahedra");
+  std::vector<char> used(static_cast<std::size_t>(n), 0);
+  for (int e = 0; e < mesh.tet_count(); ++e) {
+    const Tet& t = mesh.tets[e];
+    for (int v : t) {
+      if (v < 0 || v >= n)
+        throw InputError(source + ": tetrahedron " + std::to_string(e + 1) + " refers to node " +
+                         std::to_string(v + 1) + ", but the mesh has " + std::to_string(n) + " nodes");
+      used[v] = 1;
+    }
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        if (t[a] == t[b])
+          throw InputError(source + ": tetrahedron " + std::to_string(e + 1) + " repeats node " +
+                           std::to_string(t[a] + 1));
+    const double q = quality(mesh, e);
+    if (!std::isfinite(q) || q <= 0.0)
+      throw InputError(source + ": tetrahedron " + std::to_string(e + 1) +
+                       (q < 0.0 ? " is inverted (negative volume: det[x1-x0,x2-x0,x3-x0] < 0)"
+                                : " is degenerate (zero volume)"));
+    if (q < 1e-8)
+      throw InputError(source + ": tetrahedron " + std::to_string(e + 1) + " is degenerate (quality " +
+                       std::to_string(q) + ", volume " + std::to_string(signed_volume(mesh, e)) + " mm3)");
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!used[i])
+      throw InputError(source + ": node " + std::to_string(i + 1) + " is not used by any tetrahedron");
+    if (!mesh.nodes[i].allFinite())
+      throw InputError(source + ": node " + std::to_string(i + 1) + " has a non-finite coordinate");
+  }
+}
+
+double volume(const TetMesh& mesh) {
+  double v = 0.0;
+  for (int e = 0; e < mesh.tet_count(); ++e) v += signed_volume(mesh, e);
+  return v;
+}
+
+} // namespace anvil::mesh

@@ -1,0 +1,125 @@
+#include "anvil/solver/IncrementSolver.h"
+
+#include "anvil/core/error.h"
+#include "anvil/core/log.h"
+#include "anvil/mesh/TetMesh.h"
+
+#include <cmath>
+
+namespace anvil::solver {
+
+using fem::kDofsPerNode;
+
+IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, LinearSolverKind kind,
+                                 Timers& timers)
+    : mesh_(mesh), prescribed_(std::move(prescribed)), dofs_(prescribed_), assembler_(mesh, dofs_),
+      linear_solver_(kind), timers_(timers) {}
+
+IncrementSolver::Merit IncrementSolver::evaluate(const material::Material& law,
+                                                 const std::vector<double>& equivalent_strain,
+                                                 const Eigen::VectorXd& nodal_forces,
+                                                 const fem::BodyForce& body_force,
+                                                 const fem::BodyUnknowns& unknowns) {
+  Timers::Scope scope(timers_, "assembly");
+  fem::AssemblyResult r =
+      assembler_.assemble(mesh_, law, equivalent_strain, unknowns, nodal_forces, body_force, &tangent_);
+  residual_ = std::move(r.residual);
+  bad_element_ = r.bad_element;
+  Merit m{0.0, 0.0, r.bubble_residual_sq};
+  for (int d = 0; d < dofs_.dof_count(); ++d) {
+    if (dofs_.free_index(d) < 0) continue;
+    (d % kDofsPerNode == 3 ? m.flux_sq : m.force_sq) += residual_[d] * residual_[d];
+  }
+  return m;
+}
+
+double IncrementSolver::force_scale(const Eigen::VectorXd& nodal_forces) const {
+  double reaction_sq = 0.0;
+  for (int d = 0; d < dofs_.dof_count(); ++d)
+    if (dofs_.free_index(d) < 0 && d % kDofsPerNode != 3) reaction_sq += residual_[d] * residual_[d];
+  return std::max({std::sqrt(reaction_sq), nodal_forces.norm(), 1e-300});
+}
+
+NewtonReport IncrementSolver::solve(const material::Material& law, const std::vector<double>& equivalent_strain,
+                                    const Eigen::VectorXd& nodal_forces, const fem::BodyForce& body_force,
+                                    const NewtonSettings& settings, fem::BodyUnknowns& unknowns) {
+  NewtonReport report;
+  const int n = dofs_.dof_count();
+  // Residuals are made relative: forces against the larger of the applied
+  // loads and the reactions; fluxes (mm³/s) against |v|max × body area.
+  double velocity_max = 0.0;
+  for (int d = 0; d < n; ++d)
+    if (d % kDofsPerNode != 3) velocity_max = std::max(velocity_max, std::abs(unknowns.nodal[d]));
+  const double flux_scale = std::max(velocity_max * std::pow(std::abs(mesh::volume(mesh_)), 2.0 / 3.0), 1e-300);
+  auto relative = [&](const Merit& m, double f) {
+    return (m.force_sq + m.bubble_sq) / (f * f) + m.flux_sq / (flux_scale * flux_scale);
+  };
+
+  Merit merit = evaluate(law, equivalent_strain, nodal_forces, body_force, unknowns);
+  double scale = force_scale(nodal_forces);
+  Eigen::VectorXd rhs(dofs_.free_count()), solution(dofs_.free_count()), delta(n), bubble_delta;
+  fem::BodyUnknowns trial;
+  for (int it = 1; it <= settings.max_iterations; ++it) {
+    if (bad_element_ >= 0) {
+      report.failure = "element " + std::to_string(bad_element_ + 1) + " is inverted or flat";
+      return report;
+    }
+    for (int d = 0; d < n; ++d)
+      if (int f = dofs_.free_index(d); f >= 0) rhs[f] = -residual_[d];
+    {
+      Timers::Scope scope(timers_, "solve");
+      if (!linear_solver_.factorize(tangent_) || !linear_solver_.solve(rhs, solution)) {
+        report.failure = "the linear solver (" + to_string(linear_solver_.kind()) + ") failed on the tangent";
+        return report;
+      }
+    }
+    delta.setZero();
+    for (int d = 0; d < n; ++d)
+      if (int f = dofs_.free_index(d); f >= 0) delta[d] = solution[f];
+    assembler_.bubble_increment(mesh_, delta, bubble_delta);
+
+    // Backtracking line search on the squared relative residual (Armijo with
+    // c = 1e-4; for the exact Newton direction its slope at step 0 is −2 × merit).
+    // Each trial assembles the tangent too, so the accepted one is ready for the next iteration.
+    const double merit_start = relative(merit, scale);
+    double step = 1.0;
+    for (int cut = 0;; ++cut) {
+      trial.nodal = unknowns.nodal + step * delta;
+      trial.bubble = unknowns.bubble + step * bubble_delta;
+      merit = evaluate(law, equivalent_strain, nodal_forces, body_force, trial);
+      if (bad_element_ < 0 && relative(merit, scale) <= (1.0 - 2e-4 * step) * merit_start) break;
+      if (cut == settings.max_line_search_cuts) break; // take the smallest step and let Newton go on
+      step *= 0.5;
+    }
+    unknowns.nodal.swap(trial.nodal);
+    unknowns.bubble.swap(trial.bubble);
+    scale = force_scale(nodal_forces); // reactions follow the velocity field
+
+    double velocity_sq = 0.0, delta_sq = 0.0;
+    for (int d = 0; d < n; ++d)
+      if (d % kDofsPerNode != 3) {
+        velocity_sq += unknowns.nodal[d] * unknowns.nodal[d];
+        delta_sq += step * step * delta[d] * delta[d];
+      }
+    const NewtonIteration record{std::sqrt(merit.force_sq + merit.bubble_sq) / scale,
+                                 std::sqrt(merit.flux_sq) / flux_scale,
+                                 std::sqrt(delta_sq / std::max(velocity_sq, 1e-300)), step};
+    report.iterations.push_back(record);
+    if (settings.verbose)
+      log::info("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g", it,
+                record.force_residual, record.flux_residual, record.increment, record.step);
+    if (!std::isfinite(record.force_residual + record.flux_residual + record.increment)) {
+      report.failure = "the residual is not finite";
+      return report;
+    }
+    if (record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance &&
+        record.increment <= settings.tolerance) {
+      report.converged = true;
+      return report;
+    }
+  }
+  report.failure = "no convergence in " + std::to_string(settings.max_iterations) + " Newton iterations";
+  return report;
+}
+
+} // namespace anvil::solver

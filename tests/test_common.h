@@ -1,0 +1,8 @@
+// The one place that includes Catch2 (v2 on bookworm; v3 renames the header).
+#pragma once
+#include <catch2/catch.hpp>
+
+#include <string>
+
+/// Absolute path of a file in the source tree.
+inline std::string source_path(const std::string& relative) { return std::string(ANVIL_SOURCE_DIR) + "/" + relative; }
