@@ -45,14 +45,38 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
                                     const NewtonSettings& settings, fem::BodyUnknowns& unknowns) {
   NewtonReport report;
   const int n = dofs_.dof_count();
+  const double body_volume = std::abs(mesh::volume(mesh_));
+  auto velocity_max = [&] {
+    double v = 0.0;
+    for (int d = 0; d < n; ++d)
+      if (d % kDofsPerNode != 3) v = std::max(v, std::abs(unknowns.nodal[d]));
+    return v;
+  };
+
+  // Predictor: a near-rigid-plastic law started from rest sees huge viscosities
+  // wherever the guess is still, and Newton crawls. One Newtonian solve at the
+  // secant viscosity of a reference rate (|v|max / body size) gives a start
+  // in the quadratic basin.
+  bool at_rest = true;
+  for (int d = 0; d < n && at_rest; ++d)
+    if (dofs_.free_index(d) >= 0 && unknowns.nodal[d] != 0.0) at_rest = false;
+  if (at_rest && !law.is_linear() && velocity_max() > 0.0) {
+    const double reference_rate = velocity_max() / std::cbrt(body_volume);
+    const material::NortonHoff newtonian(law.secant_viscosity(reference_rate, {}), 1.0, 0.0);
+    NewtonSettings predictor = settings;
+    predictor.max_iterations = 2; // linear: one step, the second confirms it
+    predictor.verbose = false;
+    solve(newtonian, equivalent_strain, nodal_forces, body_force, predictor, unknowns);
+    if (settings.verbose) log::info("    predictor: Newtonian solve at viscosity %.4g MPa.s (rate %.3g 1/s)",
+                                    newtonian.consistency(), reference_rate);
+  }
+
   // Residuals are made relative: forces against the larger of the applied
-  // loads and the reactions; fluxes (mm³/s) against |v|max × body area.
-  double velocity_max = 0.0;
-  for (int d = 0; d < n; ++d)
-    if (d % kDofsPerNode != 3) velocity_max = std::max(velocity_max, std::abs(unknowns.nodal[d]));
-  const double flux_scale = std::max(velocity_max * std::pow(std::abs(mesh::volume(mesh_)), 2.0 / 3.0), 1e-300);
-  auto relative = [&](const Merit& m, double f) {
-    return (m.force_sq + m.bubble_sq) / (f * f) + m.flux_sq / (flux_scale * flux_scale);
+  // loads and the reactions; fluxes (mm³/s) against |v|max × body area, both
+  // refreshed as the field develops.
+  const double area = std::pow(body_volume, 2.0 / 3.0);
+  auto relative = [](const Merit& m, double force, double flux) {
+    return (m.force_sq + m.bubble_sq) / (force * force) + m.flux_sq / (flux * flux);
   };
 
   Merit merit = evaluate(law, equivalent_strain, nodal_forces, body_force, unknowns);
@@ -81,19 +105,28 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
     // Backtracking line search on the squared relative residual (Armijo with
     // c = 1e-4; for the exact Newton direction its slope at step 0 is −2 × merit).
     // Each trial assembles the tangent too, so the accepted one is ready for the next iteration.
-    const double merit_start = relative(merit, scale);
+    // Start and trial are compared with one flux scale, the larger of the two
+    // (a body starting at rest has none of its own).
+    const Merit merit_start = merit;
+    const double velocity_start = velocity_max();
     double step = 1.0;
     for (int cut = 0;; ++cut) {
       trial.nodal = unknowns.nodal + step * delta;
       trial.bubble = unknowns.bubble + step * bubble_delta;
       merit = evaluate(law, equivalent_strain, nodal_forces, body_force, trial);
-      if (bad_element_ < 0 && relative(merit, scale) <= (1.0 - 2e-4 * step) * merit_start) break;
+      double velocity_trial = 0.0;
+      for (int d = 0; d < n; ++d)
+        if (d % kDofsPerNode != 3) velocity_trial = std::max(velocity_trial, std::abs(trial.nodal[d]));
+      const double flux = std::max(std::max(velocity_start, velocity_trial) * area, 1e-300);
+      if (bad_element_ < 0 && relative(merit, scale, flux) <= (1.0 - 2e-4 * step) * relative(merit_start, scale, flux))
+        break;
       if (cut == settings.max_line_search_cuts) break; // take the smallest step and let Newton go on
       step *= 0.5;
     }
     unknowns.nodal.swap(trial.nodal);
     unknowns.bubble.swap(trial.bubble);
     scale = force_scale(nodal_forces); // reactions follow the velocity field
+    const double flux_scale = std::max(velocity_max() * area, 1e-300);
 
     double velocity_sq = 0.0, delta_sq = 0.0;
     for (int d = 0; d < n; ++d)

@@ -35,6 +35,13 @@ public:
   /// True when the unknown is a displacement (mm) rather than a velocity (mm/s).
   virtual bool is_elastic() const { return false; }
 
+  /// True when s is linear in ε (Newton then converges in one step).
+  virtual bool is_linear() const = 0;
+
+  /// Secant viscosity (or shear modulus) s / (2 dev ε) at equivalent rate
+  /// ε̄̇ (1/s): the Newtonian law that best stands in for this one at that rate.
+  virtual double secant_viscosity(double equivalent_rate, const PointState& state) const = 0;
+
   /// One line for the log: law and parameters with units.
   virtual std::string describe() const = 0;
 };
@@ -51,6 +58,10 @@ public:
   void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
                          Mat6& tangent) const override;
   std::string describe() const override;
+  bool is_linear() const override { return sensitivity_ == 1.0; }
+  double secant_viscosity(double equivalent_rate, const PointState&) const override {
+    return viscosity(equivalent_rate);
+  }
 
   double consistency() const { return consistency_; }
   double sensitivity() const { return sensitivity_; }
@@ -75,6 +86,10 @@ public:
                          Mat6& tangent) const override;
   double bulk_modulus() const override;
   bool is_elastic() const override { return true; }
+  bool is_linear() const override { return true; }
+  double secant_viscosity(double, const PointState&) const override {
+    return young_modulus_ / (2.0 * (1.0 + poisson_ratio_));
+  }
   std::string describe() const override;
 
 private:

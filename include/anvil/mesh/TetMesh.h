@@ -1,6 +1,7 @@
 // A linear tetrahedral mesh as a plain value (DESIGN §1).
 #pragma once
 #include <Eigen/Core>
+#include <Eigen/Geometry> // cross products on Point
 #include <array>
 #include <string>
 #include <vector>

@@ -1,0 +1,94 @@
+#include "test_common.h"
+
+#include "anvil/fem/mini_element.h"
+
+#include <Eigen/Dense>
+
+using namespace anvil;
+
+namespace {
+
+fem::MiniElementInput distorted_element() {
+  fem::MiniElementInput in;
+  in.vertices = {mesh::Point(0.1, -0.05, 0.0), mesh::Point(1.2, 0.1, 0.05), mesh::Point(0.2, 0.9, -0.1),
+                 mesh::Point(0.05, 0.15, 1.1)};
+  in.nodal_velocity = {fem::Vec3(0.3, -0.2, 0.1), fem::Vec3(-0.1, 0.4, 0.2), fem::Vec3(0.5, 0.1, -0.3),
+                       fem::Vec3(-0.2, -0.3, 0.6)};
+  in.nodal_pressure = {0.2, -0.1, 0.3, 0.05};
+  return in;
+}
+
+/// Condensed residual with the bubble in equilibrium (r_b = 0, found by a
+/// local Newton): the function whose exact derivative is the condensed tangent.
+fem::Vec16 condensed_residual(fem::MiniElementInput in, const material::Material& law) {
+  fem::MiniElementSystem s;
+  for (int it = 0; it < 50; ++it) {
+    REQUIRE(fem::mini_element(in, law, false, {}, s));
+    in.bubble_velocity -= s.bubble_residual_solved;
+    if (s.bubble_residual_sq < 1e-28) break;
+  }
+  REQUIRE(fem::mini_element(in, law, false, {}, s));
+  return s.residual;
+}
+
+void set_dof(fem::MiniElementInput& in, int i, double value) {
+  if (i % 4 == 3) in.nodal_pressure[i / 4] = value;
+  else in.nodal_velocity[i / 4][i % 4] = value;
+}
+double get_dof(const fem::MiniElementInput& in, int i) {
+  return i % 4 == 3 ? in.nodal_pressure[i / 4] : in.nodal_velocity[i / 4][i % 4];
+}
+
+} // namespace
+
+TEST_CASE("condensed MINI tangent equals finite differences of the residual", "[unit]") {
+  // m = 1, 0.15, 0.02; regularisation small against the element's strain rates (~1/s).
+  const double m = GENERATE(1.0, 0.15, 0.02);
+  const material::NortonHoff law(10.0, m, 1e-3);
+  fem::MiniElementInput in = distorted_element();
+  // Put the bubble in equilibrium first: there the condensed tangent is the
+  // derivative of the condensed residual.
+  const fem::Vec16 r0 = condensed_residual(in, law);
+  (void)r0;
+  fem::MiniElementSystem s;
+  for (int it = 0; it < 50; ++it) {
+    REQUIRE(fem::mini_element(in, law, false, {}, s));
+    in.bubble_velocity -= s.bubble_residual_solved;
+  }
+  REQUIRE(fem::mini_element(in, law, true, {}, s));
+  const fem::Mat16 tangent = s.tangent;
+  CHECK((tangent - tangent.transpose()).norm() <= 1e-12 * tangent.norm());
+
+  fem::Mat16 fd;
+  for (int j = 0; j < 16; ++j) {
+    const double h = 1e-6 * std::max(1.0, std::abs(get_dof(in, j)));
+    fem::MiniElementInput plus = in, minus = in;
+    set_dof(plus, j, get_dof(in, j) + h);
+    set_dof(minus, j, get_dof(in, j) - h);
+    fd.col(j) = (condensed_residual(plus, law) - condensed_residual(minus, law)) / (2 * h);
+  }
+  INFO("m = " << m << ", max |tangent - fd| = " << (tangent - fd).cwiseAbs().maxCoeff()
+              << ", max |tangent| = " << tangent.cwiseAbs().maxCoeff());
+  // Central differences: error O(h²·|R'''|) + round-off ~1e-16·|R|/h: 1e-6 relative is the floor.
+  CHECK((tangent - fd).cwiseAbs().maxCoeff() <= 1e-6 * tangent.cwiseAbs().maxCoeff());
+}
+
+TEST_CASE("rigid motion gives zero residual and the condensed tangent is symmetric", "[unit]") {
+  const material::NortonHoff law(5.0, 1.0, 0.0);
+  fem::MiniElementInput in = distorted_element();
+  const fem::Vec3 translation(0.3, -0.7, 0.2), rotation(0.1, 0.2, -0.4);
+  for (int a = 0; a < 4; ++a) in.nodal_velocity[a] = translation + rotation.cross(in.vertices[a]);
+  in.nodal_pressure = {0, 0, 0, 0};
+  fem::MiniElementSystem s;
+  REQUIRE(fem::mini_element(in, law, true, {}, s));
+  CHECK(s.residual.norm() <= 1e-12);
+  CHECK((s.tangent - s.tangent.transpose()).norm() <= 1e-12 * s.tangent.norm());
+}
+
+TEST_CASE("an inverted element is reported, not computed", "[unit]") {
+  const material::NortonHoff law(5.0, 1.0, 0.0);
+  fem::MiniElementInput in = distorted_element();
+  std::swap(in.vertices[0], in.vertices[1]);
+  fem::MiniElementSystem s;
+  CHECK_FALSE(fem::mini_element(in, law, true, {}, s));
+}
