@@ -1,0 +1,41 @@
+// Every key of the case file and of the material cards, declared once with
+// type, default, range, unit and a one-line doc (STYLE "Input and errors").
+// The readers accept nothing that is not declared here; `anvil --schema`
+// prints it.
+#pragma once
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace anvil::scene {
+
+enum class KeyType { integer, number, string, boolean, vector3, list, map };
+
+struct KeySpec {
+  std::string path;          ///< dotted; list items as "[]", e.g. "bodies[].mesh.file"
+  KeyType type;
+  std::string default_value; ///< as text; empty when required or optional without default
+  bool required = false;
+  double min = -std::numeric_limits<double>::infinity(); ///< numbers: allowed range
+  double max = std::numeric_limits<double>::infinity();
+  bool min_exclusive = false;
+  std::vector<std::string> choices; ///< strings: allowed values (empty = any)
+  std::string unit;
+  std::string doc;
+};
+
+/// Keys of a case file (format version 1).
+const std::vector<KeySpec>& case_schema();
+/// Keys of a material card (format version 1).
+const std::vector<KeySpec>& material_schema();
+
+/// Looks `path` up in `schema`; nullptr if undeclared.
+const KeySpec* find_key(const std::vector<KeySpec>& schema, const std::string& path);
+
+/// "number > 0 (mm)", "one of box, cylinder" ...: what a value must be.
+std::string expectation(const KeySpec& key);
+
+/// The schema as text, one key per line, for `anvil --schema`.
+std::string schema_text();
+
+} // namespace anvil::scene

@@ -1,0 +1,161 @@
+#include "checked_yaml.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace anvil::scene {
+namespace {
+
+std::string parent_of(const std::string& spec_path) {
+  const auto dot = spec_path.rfind('.');
+  return dot == std::string::npos ? "" : spec_path.substr(0, dot);
+}
+std::string leaf_of(const std::string& spec_path) {
+  const auto dot = spec_path.rfind('.');
+  return dot == std::string::npos ? spec_path : spec_path.substr(dot + 1);
+}
+std::string join(const std::string& prefix, const std::string& key) { return prefix.empty() ? key : prefix + "." + key; }
+
+std::optional<double> parse_number(const YAML::Node& node) {
+  if (!node.IsScalar()) return std::nullopt;
+  std::istringstream s(node.Scalar());
+  double value = 0.0;
+  if (!(s >> value) || !(s >> std::ws).eof() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+std::string shown_value(const YAML::Node& node) {
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsNull()) return "(empty)";
+  if (node.IsSequence()) return "a list";
+  return "a map";
+}
+
+} // namespace
+
+CheckedYaml::CheckedYaml(const std::string& path, const std::vector<KeySpec>& schema) : path_(path), schema_(schema) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the file");
+  try {
+    root_ = YAML::Load(in);
+  } catch (const YAML::Exception& e) {
+    throw InputError(where(path, e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (!root_.IsMap()) throw InputError(path + ": expected a YAML map of keys at the top level");
+  check(root_, "", "");
+}
+
+std::string CheckedYaml::at(const YAML::Node& node) const {
+  const int line = node.Mark().line;
+  return where(path_, line >= 0 ? line + 1 : 0);
+}
+
+void CheckedYaml::fail(const YAML::Node& node, const std::string& shown_key, const std::string& message) const {
+  throw InputError(at(node) + ": key '" + shown_key + "': " + message);
+}
+
+const KeySpec& CheckedYaml::spec(const std::string& spec_path) const {
+  const KeySpec* k = find_key(schema_, spec_path);
+  ANVIL_ASSERT(k != nullptr);
+  return *k;
+}
+
+void CheckedYaml::check(const YAML::Node& node, const std::string& spec_prefix, const std::string& shown_prefix) const {
+  if (!node.IsMap()) {
+    throw InputError(at(node) + ": " + (shown_prefix.empty() ? std::string("the file") : "key '" + shown_prefix + "'") +
+                     ": expected a map of keys, found " + shown_value(node));
+  }
+  for (const auto& entry : node) {
+    const std::string key = entry.first.as<std::string>();
+    const std::string spec_path = join(spec_prefix, key), shown = join(shown_prefix, key);
+    const KeySpec* k = find_key(schema_, spec_path);
+    if (!k) {
+      std::string known;
+      for (const KeySpec& s : schema_)
+        if (parent_of(s.path) == spec_prefix) known += (known.empty() ? "" : ", ") + leaf_of(s.path);
+      throw InputError(at(entry.first) + ": unknown key '" + shown + "' (known keys here: " + known + ")");
+    }
+    check_value(entry.second, *k, shown);
+  }
+  for (const KeySpec& s : schema_)
+    if (s.required && parent_of(s.path) == spec_prefix && !node[leaf_of(s.path)])
+      throw InputError(at(node) + ": missing key '" + join(shown_prefix, leaf_of(s.path)) + "': expected " +
+                       expectation(s) + " — " + s.doc);
+}
+
+void CheckedYaml::check_value(const YAML::Node& value, const KeySpec& k, const std::string& shown) const {
+  auto wrong = [&] { fail(value, shown, "value " + shown_value(value) + " is not valid; expected " + expectation(k)); };
+  switch (k.type) {
+  case KeyType::map: check(value, k.path, shown); return;
+  case KeyType::list:
+    if (!value.IsSequence() || value.size() == 0) fail(value, shown, "expected a non-empty list, found " + shown_value(value));
+    for (std::size_t i = 0; i < value.size(); ++i) check(value[i], k.path + "[]", shown + "[" + std::to_string(i) + "]");
+    return;
+  case KeyType::string:
+    if (!value.IsScalar()) wrong();
+    if (!k.choices.empty() && std::find(k.choices.begin(), k.choices.end(), value.Scalar()) == k.choices.end()) wrong();
+    return;
+  case KeyType::boolean:
+    if (!value.IsScalar() || (value.Scalar() != "true" && value.Scalar() != "false")) wrong();
+    return;
+  case KeyType::vector3:
+    if (!value.IsSequence() || value.size() != 3) wrong();
+    for (const auto& c : value)
+      if (!c.IsNull() && !parse_number(c)) wrong();
+    return;
+  case KeyType::integer:
+  case KeyType::number: {
+    const auto v = parse_number(value);
+    if (!v) wrong();
+    if (k.type == KeyType::integer && *v != std::floor(*v)) wrong();
+    if (*v < k.min || *v > k.max || (k.min_exclusive && *v == k.min)) wrong();
+    return;
+  }
+  }
+}
+
+double CheckedYaml::number(const YAML::Node& map, const std::string& key, const std::string& spec_path) const {
+  const YAML::Node v = map[key];
+  if (v) return *parse_number(v);
+  const KeySpec& k = spec(spec_path);
+  if (k.default_value.empty()) fail(map, key, "missing; expected " + expectation(k) + " — " + k.doc);
+  return std::stod(k.default_value);
+}
+
+int CheckedYaml::integer(const YAML::Node& map, const std::string& key, const std::string& spec_path) const {
+  return static_cast<int>(number(map, key, spec_path));
+}
+
+std::string CheckedYaml::text(const YAML::Node& map, const std::string& key, const std::string& spec_path) const {
+  const YAML::Node v = map[key];
+  return v ? v.Scalar() : spec(spec_path).default_value;
+}
+
+bool CheckedYaml::boolean(const YAML::Node& map, const std::string& key, const std::string& spec_path) const {
+  return text(map, key, spec_path) == "true";
+}
+
+std::array<std::optional<double>, 3> CheckedYaml::partial_vector(const YAML::Node& map, const std::string& key) const {
+  std::array<std::optional<double>, 3> out;
+  const YAML::Node v = map[key];
+  if (!v) return out;
+  for (int c = 0; c < 3; ++c)
+    if (!v[c].IsNull()) out[c] = parse_number(v[c]);
+  return out;
+}
+
+mesh::Point CheckedYaml::vector(const YAML::Node& map, const std::string& key, const std::string& spec_path) const {
+  const YAML::Node v = map[key];
+  if (!v) {
+    const KeySpec& k = spec(spec_path);
+    if (k.default_value.empty()) fail(map, key, "missing; expected " + expectation(k) + " — " + k.doc);
+    const YAML::Node d = YAML::Load(k.default_value);
+    return {d[0].as<double>(), d[1].as<double>(), d[2].as<double>()};
+  }
+  for (int c = 0; c < 3; ++c)
+    if (v[c].IsNull()) fail(v, key, "all three components are needed here");
+  return {*parse_number(v[0]), *parse_number(v[1]), *parse_number(v[2])};
+}
+
+} // namespace anvil::scene

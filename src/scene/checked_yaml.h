@@ -1,0 +1,51 @@
+// Private to src/scene: a YAML file checked against a schema before use.
+// Every error names file, line, key, value and what was expected.
+#pragma once
+#include "anvil/core/error.h"
+#include "anvil/mesh/TetMesh.h"
+#include "anvil/scene/schema.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace anvil::scene {
+
+class CheckedYaml {
+public:
+  /// Parses `path` and checks every key against `schema` (unknown keys,
+  /// types, ranges, choices, required keys). Throws InputError.
+  CheckedYaml(const std::string& path, const std::vector<KeySpec>& schema);
+
+  const YAML::Node& root() const { return root_; }
+  const std::string& path() const { return path_; }
+
+  /// "file:line" of a node.
+  std::string at(const YAML::Node& node) const;
+
+  // Typed access to child `key` of `map` whose schema path is `spec_path`;
+  // the schema default applies when the key is absent. Values were checked at load.
+  double number(const YAML::Node& map, const std::string& key, const std::string& spec_path) const;
+  int integer(const YAML::Node& map, const std::string& key, const std::string& spec_path) const;
+  std::string text(const YAML::Node& map, const std::string& key, const std::string& spec_path) const;
+  bool boolean(const YAML::Node& map, const std::string& key, const std::string& spec_path) const;
+  /// A vector whose components may be null (~).
+  std::array<std::optional<double>, 3> partial_vector(const YAML::Node& map, const std::string& key) const;
+  mesh::Point vector(const YAML::Node& map, const std::string& key, const std::string& spec_path) const;
+
+  /// Throws InputError "file:line: key 'shown': message".
+  [[noreturn]] void fail(const YAML::Node& node, const std::string& shown_key, const std::string& message) const;
+
+private:
+  void check(const YAML::Node& node, const std::string& spec_prefix, const std::string& shown_prefix) const;
+  void check_value(const YAML::Node& value, const KeySpec& spec, const std::string& shown) const;
+  const KeySpec& spec(const std::string& spec_path) const;
+
+  std::string path_;
+  const std::vector<KeySpec>& schema_;
+  YAML::Node root_;
+};
+
+} // namespace anvil::scene

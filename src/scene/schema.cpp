@@ -1,0 +1,171 @@
+#include "anvil/scene/schema.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace anvil::scene {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+KeySpec key(std::string path, KeyType type, std::string doc, std::string unit = "") {
+  KeySpec k;
+  k.path = std::move(path);
+  k.type = type;
+  k.doc = std::move(doc);
+  k.unit = std::move(unit);
+  return k;
+}
+KeySpec required(KeySpec k) {
+  k.required = true;
+  return k;
+}
+KeySpec with_default(KeySpec k, std::string value) {
+  k.default_value = std::move(value);
+  return k;
+}
+KeySpec range(KeySpec k, double min, double max, bool min_exclusive = false) {
+  k.min = min;
+  k.max = max;
+  k.min_exclusive = min_exclusive;
+  return k;
+}
+KeySpec choices(KeySpec k, std::vector<std::string> values) {
+  k.choices = std::move(values);
+  return k;
+}
+
+const char* type_name(KeyType t) {
+  switch (t) {
+  case KeyType::integer: return "integer";
+  case KeyType::number: return "number";
+  case KeyType::string: return "string";
+  case KeyType::boolean: return "boolean";
+  case KeyType::vector3: return "[x, y, z]";
+  case KeyType::list: return "list";
+  case KeyType::map: return "map";
+  }
+  return "?";
+}
+
+} // namespace
+
+const std::vector<KeySpec>& case_schema() {
+  using T = KeyType;
+  static const std::vector<KeySpec> schema = {
+      required(range(key("anvil", T::integer, "case file format version"), 1, 1)),
+      with_default(key("title", T::string, "one line shown in the log and summary"), ""),
+      key("output", T::map, "what is written and where"),
+      with_default(key("output.directory", T::string,
+                       "output folder, relative to the working directory; default out/<case name>; -o overrides"), ""),
+      with_default(key("output.vtk", T::boolean, "write the .vtu/.pvd series"), "true"),
+      key("solver", T::map, "Newton and linear solver settings"),
+      with_default(range(key("solver.tolerance", T::number,
+                             "relative tolerance on force residual, div residual and |dv|/|v|"), 1e-14, 1e-2), "1e-8"),
+      with_default(range(key("solver.max_iterations", T::integer, "Newton iterations per increment"), 1, 500), "30"),
+      with_default(choices(key("solver.linear_solver", T::string,
+                               "sparse solver; umfpack pivots (robust), the LDLT ones need a quasi-definite matrix"),
+                           {"umfpack", "cholmod_ldlt", "eigen_ldlt"}),
+                   "umfpack"),
+      required(key("bodies", T::list, "deformable bodies (one for now: contact comes with a later release)")),
+      required(key("bodies[].name", T::string, "name used by boundary conditions and in outputs")),
+      required(key("bodies[].material", T::string, "material card (YAML), path relative to the case file")),
+      required(key("bodies[].mesh", T::map, "a mesh file or a generated shape")),
+      key("bodies[].mesh.file", T::string, "Gmsh .msh (2.2, 4.1 ASCII) or Medit .mesh, relative to the case file"),
+      choices(key("bodies[].mesh.generate", T::string, "generated shape instead of a file"), {"box", "cylinder"}),
+      with_default(key("bodies[].mesh.origin", T::vector3, "box: lowest corner", "mm"), "[0, 0, 0]"),
+      key("bodies[].mesh.size", T::vector3, "box: edge lengths", "mm"),
+      range(key("bodies[].mesh.radius", T::number, "cylinder (axis z, base at z = 0): radius", "mm"), 0, kInf, true),
+      range(key("bodies[].mesh.height", T::number, "cylinder: height", "mm"), 0, kInf, true),
+      range(key("bodies[].mesh.element_size", T::number, "generated shapes: target edge length", "mm"), 0, kInf, true),
+      key("boundary", T::list, "boundary conditions, applied in order (later ones win on shared nodes)"),
+      required(key("boundary[].name", T::string, "name shown in loads.csv")),
+      key("boundary[].body", T::string, "body it applies to; default: the only body"),
+      required(choices(key("boundary[].type", T::string,
+                           "velocity: given components; symmetry: zero normal velocity; sticking_plate: all "
+                           "components = plate velocity; frictionless_plate: normal component only; traction; pressure"),
+                       {"velocity", "symmetry", "sticking_plate", "frictionless_plate", "traction", "pressure"})),
+      range(key("boundary[].tag", T::integer, "select the faces with this boundary tag"), 0, kInf),
+      key("boundary[].plane", T::map, "select the boundary faces lying on a plane"),
+      required(key("boundary[].plane.point", T::vector3, "a point of the plane", "mm")),
+      required(key("boundary[].plane.normal", T::vector3, "plane normal (need not be unit)")),
+      with_default(range(key("boundary[].plane.tolerance", T::number, "distance within which a node is on the plane", "mm"),
+                         0, kInf, true), "1e-6"),
+      key("boundary[].velocity", T::vector3,
+          "velocity, plates: velocity; a component written ~ (null) is left free (velocity type only)", "mm/s"),
+      key("boundary[].traction", T::vector3, "traction: surface force density", "MPa"),
+      key("boundary[].pressure", T::number, "pressure: positive pushes into the body", "MPa"),
+  };
+  return schema;
+}
+
+const std::vector<KeySpec>& material_schema() {
+  using T = KeyType;
+  static const std::vector<KeySpec> schema = {
+      required(range(key("format", T::integer, "material card format version"), 1, 1)),
+      required(key("name", T::string, "material name and condition")),
+      required(choices(key("law", T::string, "constitutive law"), {"newtonian", "norton_hoff", "linear_elastic"})),
+      range(key("temperature", T::number, "temperature at which the numbers hold", "°C"), -273.15, kInf, true),
+      range(key("viscosity", T::number, "newtonian: viscosity η", "MPa.s"), 0, kInf, true),
+      range(key("consistency", T::number, "norton_hoff: consistency K", "MPa.s^m"), 0, kInf, true),
+      range(key("sensitivity", T::number, "norton_hoff: strain-rate sensitivity m", "-"), 0, 1, true),
+      with_default(range(key("regularisation_rate", T::number,
+                             "norton_hoff: ε̄̇₀ in sqrt(ε̄̇² + ε̄̇₀²), keeps rigid zones finite", "1/s"), 0, kInf, true),
+                   "1e-4"),
+      range(key("young_modulus", T::number, "linear_elastic: E", "MPa"), 0, kInf, true),
+      range(key("poisson_ratio", T::number, "linear_elastic: ν (0.5 allowed: u-p form)", "-"), -1, 0.5, true),
+      required(key("sources", T::map, "where each number comes from: one entry per numeric key")),
+      key("sources.temperature", T::string, "source of temperature"),
+      key("sources.viscosity", T::string, "source of viscosity"),
+      key("sources.consistency", T::string, "source of consistency"),
+      key("sources.sensitivity", T::string, "source of sensitivity"),
+      key("sources.regularisation_rate", T::string, "source (or reason) of regularisation_rate"),
+      key("sources.young_modulus", T::string, "source of young_modulus"),
+      key("sources.poisson_ratio", T::string, "source of poisson_ratio"),
+  };
+  return schema;
+}
+
+const KeySpec* find_key(const std::vector<KeySpec>& schema, const std::string& path) {
+  for (const KeySpec& k : schema)
+    if (k.path == path) return &k;
+  return nullptr;
+}
+
+std::string expectation(const KeySpec& k) {
+  std::ostringstream s;
+  s << (k.type == KeyType::integer ? "an integer" : k.type == KeyType::number ? "a number" : type_name(k.type));
+  if (k.type == KeyType::integer || k.type == KeyType::number) {
+    const bool low = std::isfinite(k.min), high = std::isfinite(k.max);
+    if (low && high && k.min == k.max) s << " equal to " << k.min;
+    else {
+      if (low) s << (k.min_exclusive ? " > " : " >= ") << k.min;
+      if (low && high) s << " and";
+      if (high) s << " <= " << k.max;
+    }
+  }
+  if (!k.choices.empty()) {
+    s << ", one of";
+    for (std::size_t i = 0; i < k.choices.size(); ++i) s << (i ? ", " : " ") << k.choices[i];
+  }
+  if (!k.unit.empty()) s << " (" << k.unit << ")";
+  return s.str();
+}
+
+std::string schema_text() {
+  std::ostringstream s;
+  auto print = [&](const char* title, const std::vector<KeySpec>& schema) {
+    s << title << "\n";
+    for (const KeySpec& k : schema) {
+      s << "  " << k.path << "\n      " << expectation(k);
+      if (k.required) s << "; required";
+      else if (!k.default_value.empty()) s << "; default " << k.default_value;
+      s << "\n      " << k.doc << "\n";
+    }
+  };
+  print("Case file (YAML, format 1):", case_schema());
+  print("\nMaterial card (YAML, format 1):", material_schema());
+  return s.str();
+}
+
+} // namespace anvil::scene
