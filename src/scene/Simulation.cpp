@@ -72,13 +72,14 @@ void run(const Case& c, const RunOptions& options) {
   std::string effect_list;
   for (const auto& e : effects) effect_list += " " + e;
   log::info("effects:%s", effect_list.c_str());
-  log::info("solver: %s, tolerance %.1e, %d threads", solver::to_string(c.linear_solver).c_str(), c.newton.tolerance,
-            tbb::info::default_concurrency());
 
   // The increment.
   solver::IncrementSolver solver(mesh, imposed.prescribed, c.linear_solver, timers);
   log::info("unknowns: %d (velocity and pressure, after %d prescribed)", solver.free_count(),
             static_cast<int>(imposed.prescribed.size()) - solver.free_count());
+  log::info("solver: %s (asked: %s), Newton tolerance %.1e, %d threads",
+            solver::to_string(solver.linear_solver()).c_str(), solver::to_string(c.linear_solver).c_str(),
+            c.newton.tolerance, tbb::info::default_concurrency());
   fem::BodyUnknowns unknowns{imposed.values, Eigen::VectorXd::Zero(3 * mesh.tet_count())};
   log::info("increment 1");
   const solver::NewtonReport report = solver.solve(*law, {}, imposed.nodal_forces, {}, c.newton, unknowns);

@@ -64,9 +64,10 @@ const std::vector<KeySpec>& case_schema() {
                              "relative tolerance on force residual, div residual and |dv|/|v|"), 1e-14, 1e-2), "1e-8"),
       with_default(range(key("solver.max_iterations", T::integer, "Newton iterations per increment"), 1, 500), "30"),
       with_default(choices(key("solver.linear_solver", T::string,
-                               "sparse solver; umfpack pivots (robust), the LDLT ones need a quasi-definite matrix"),
-                           {"umfpack", "cholmod_ldlt", "eigen_ldlt"}),
-                   "umfpack"),
+                               "sparse solver; auto: umfpack up to 20000 unknowns, minres (block-preconditioned, "
+                               "low memory) above; the LDLT ones need a quasi-definite matrix"),
+                           {"auto", "umfpack", "cholmod_ldlt", "eigen_ldlt", "minres"}),
+                   "auto"),
       required(key("bodies", T::list, "deformable bodies (one for now: contact comes with a later release)")),
       required(key("bodies[].name", T::string, "name used by boundary conditions and in outputs")),
       required(key("bodies[].material", T::string, "material card (YAML), path relative to the case file")),

@@ -10,10 +10,19 @@ namespace anvil::solver {
 
 using fem::kDofsPerNode;
 
+namespace {
+std::vector<char> pressure_mask(const fem::DofMap& dofs) {
+  std::vector<char> mask(static_cast<std::size_t>(dofs.free_count()));
+  for (int d = 0; d < dofs.dof_count(); ++d)
+    if (int f = dofs.free_index(d); f >= 0) mask[f] = d % kDofsPerNode == 3;
+  return mask;
+}
+} // namespace
+
 IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, LinearSolverKind kind,
                                  Timers& timers)
     : mesh_(mesh), prescribed_(std::move(prescribed)), dofs_(prescribed_), assembler_(mesh, dofs_),
-      linear_solver_(kind), timers_(timers) {}
+      linear_solver_(kind, pressure_mask(dofs_)), timers_(timers) {}
 
 IncrementSolver::Merit IncrementSolver::evaluate(const material::Material& law,
                                                  const std::vector<double>& equivalent_strain,
@@ -139,8 +148,11 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
                                  std::sqrt(delta_sq / std::max(velocity_sq, 1e-300)), step};
     report.iterations.push_back(record);
     if (settings.verbose)
-      log::info("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g", it,
-                record.force_residual, record.flux_residual, record.increment, record.step);
+      log::info("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g%s", it,
+                record.force_residual, record.flux_residual, record.increment, record.step,
+                linear_solver_.iterations() > 0
+                    ? ("  (" + std::to_string(linear_solver_.iterations()) + " minres iterations)").c_str()
+                    : "");
     if (!std::isfinite(record.force_residual + record.flux_residual + record.increment)) {
       report.failure = "the residual is not finite";
       return report;

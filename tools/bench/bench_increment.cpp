@@ -3,7 +3,7 @@
 // assembly time, factorisation + solve time per Newton iteration, Newton
 // iterations and peak memory. One size per process, so the peak RSS is the
 // size's own; tools/bench_increment runs the sizes.
-//   anvil_bench NODES [umfpack|cholmod_ldlt|eigen_ldlt]
+//   anvil_bench NODES [auto|umfpack|cholmod_ldlt|eigen_ldlt]
 #include "anvil/core/Timers.h"
 #include "anvil/core/log.h"
 #include "anvil/mesh/generators.h"
@@ -21,13 +21,13 @@ using namespace anvil;
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: anvil_bench NODES [umfpack|cholmod_ldlt|eigen_ldlt]\n");
+    std::fprintf(stderr, "usage: anvil_bench NODES [auto|umfpack|cholmod_ldlt|eigen_ldlt|minres]\n");
     return 2;
   }
   const long target = std::atol(argv[1]);
-  const solver::LinearSolverKind kind = solver::linear_solver_kind(argc > 2 ? argv[2] : "umfpack");
+  const solver::LinearSolverKind kind = solver::linear_solver_kind(argc > 2 ? argv[2] : "auto");
   // Block 2L × 2L × L (mm) with cells (2n, 2n, n): (2n+1)²(n+1) ≈ target nodes.
-  const int n = std::max(2, static_cast<int>(std::lround(std::cbrt(target / 4.0))));
+  const int n = std::max(2, static_cast<int>(std::lround(std::cbrt(static_cast<double>(target) / 4.0))));
   const mesh::TetMesh mesh = mesh::make_box(mesh::Point::Zero(), mesh::Point(20, 20, 10), {2 * n, 2 * n, n});
 
   scene::BoundaryCondition bottom, top;
@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   fem::BodyUnknowns unknowns{imposed.values, Eigen::VectorXd::Zero(3 * mesh.tet_count())};
   const material::NortonHoff newtonian(1.0, 1.0, 0.0);
   solver::NewtonSettings settings;
+  settings.verbose = false;
   const auto report = solver.solve(newtonian, {}, imposed.nodal_forces, {}, settings, unknowns);
 
   rusage usage{};
@@ -51,9 +52,9 @@ int main(int argc, char** argv) {
   const double iterations = static_cast<double>(report.iterations.size());
   const double assembly = timers.seconds("assembly") / iterations, solve = timers.seconds("solve") / iterations;
   std::printf("nodes %d  elements %d  unknowns %d  solver %s  newton %d (%s)  per iteration: assembly %.2f s, "
-              "factorisation+solve %.2f s, total %.2f s  peak memory %.2f GB\n",
-              mesh.node_count(), mesh.tet_count(), solver.free_count(), solver::to_string(kind).c_str(),
+              "factorisation+solve %.2f s, total %.2f s  peak memory %.2f GB  (last solve: %d iterative steps)\n",
+              mesh.node_count(), mesh.tet_count(), solver.free_count(), solver::to_string(solver.linear_solver()).c_str(),
               static_cast<int>(iterations), report.converged ? "converged" : report.failure.c_str(), assembly, solve,
-              assembly + solve, static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0));
+              assembly + solve, static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0), solver.last_linear_iterations());
   return report.converged ? 0 : 1;
 }

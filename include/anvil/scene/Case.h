@@ -30,7 +30,7 @@ struct Case {
   std::string output_directory; ///< empty = out/<case name>
   bool write_vtk = true;
   solver::NewtonSettings newton;
-  solver::LinearSolverKind linear_solver = solver::LinearSolverKind::umfpack;
+  solver::LinearSolverKind linear_solver = solver::LinearSolverKind::automatic;
   std::vector<BodySpec> bodies;
   std::vector<BoundaryCondition> boundary;
   std::vector<int> boundary_body; ///< body index of each boundary condition

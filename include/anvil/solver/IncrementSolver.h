@@ -48,6 +48,8 @@ public:
   const Eigen::VectorXd& residual() const { return residual_; }
   const fem::DofMap& dofs() const { return dofs_; }
   int free_count() const { return dofs_.free_count(); }
+  LinearSolverKind linear_solver() const { return linear_solver_.kind(); }
+  int last_linear_iterations() const { return linear_solver_.iterations(); }
 
 private:
   /// Squared residual norms, absolute: velocity rows (N²), pressure rows
