@@ -56,7 +56,10 @@ void run(const Case& c, const RunOptions& options) {
   std::vector<BoundaryCondition> conditions;
   for (std::size_t i = 0; i < c.boundary.size(); ++i)
     if (c.boundary_body[i] == 0) conditions.push_back(c.boundary[i]);
-  const ImposedConditions imposed = impose(mesh, conditions);
+  const ImposedConditions imposed = [&] {
+    Timers::Scope scope(timers, "effect boundary_conditions");
+    return impose(mesh, conditions);
+  }();
   const std::vector<std::string> effects = resolve_effects(c, {law.get()});
 
   const std::string out = output_directory(c, options);

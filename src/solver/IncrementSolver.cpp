@@ -73,8 +73,9 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
     const double reference_rate = velocity_max() / std::cbrt(body_volume);
     const material::NortonHoff newtonian(law.secant_viscosity(reference_rate, {}), 1.0, 0.0);
     NewtonSettings predictor = settings;
-    predictor.max_iterations = 2; // linear: one step, the second confirms it
+    predictor.max_iterations = 1; // linear law: one Newton step is its solution
     predictor.verbose = false;
+    Timers::Scope scope(timers_, "effect nonlinear_law (predictor)");
     solve(newtonian, equivalent_strain, nodal_forces, body_force, predictor, unknowns);
     if (settings.verbose) log::info("    predictor: Newtonian solve at viscosity %.4g MPa.s (rate %.3g 1/s)",
                                     newtonian.consistency(), reference_rate);

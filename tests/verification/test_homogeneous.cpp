@@ -138,3 +138,30 @@ TEST_CASE("Newton converges quadratically near the solution (m = 0.15)", "[verif
   }
   CHECK(quadratic_steps >= 2);
 }
+
+TEST_CASE("the iterative solver (MINRES) gives the direct solver's answer", "[verification]") {
+  // Viscoplastic squeeze between sticking plates, solved twice. Both runs stop
+  // at Newton tolerance 1e-10, so plate loads agree to ~1e-9; asserted at 1e-7.
+  const material::NortonHoff law(50.0, 0.15, 1e-3);
+  const mesh::TetMesh mesh = mesh::make_box(mesh::Point::Zero(), mesh::Point(10, 10, 5), 1.25);
+  using K = scene::BoundaryKind;
+  scene::BoundaryCondition bottom = plane_condition(K::sticking_plate, 2, 0.0);
+  bottom.velocity = {0.0, 0.0, 0.0};
+  scene::BoundaryCondition top = plane_condition(K::sticking_plate, 2, 5.0);
+  top.velocity = {0.0, 0.0, -1.0};
+  const auto imposed = scene::impose(mesh, {bottom, top});
+  double load[2];
+  int k = 0;
+  for (auto kind : {solver::LinearSolverKind::umfpack, solver::LinearSolverKind::minres}) {
+    Timers timers;
+    solver::IncrementSolver solver(mesh, imposed.prescribed, kind, timers);
+    fem::BodyUnknowns u{imposed.values, Eigen::VectorXd::Zero(3 * mesh.tet_count())};
+    solver::NewtonSettings settings;
+    settings.tolerance = 1e-10;
+    settings.verbose = false;
+    REQUIRE(solver.solve(law, {}, imposed.nodal_forces, {}, settings, u).converged);
+    load[k++] = scene::reaction(imposed, 1, solver.residual()).z();
+  }
+  INFO("umfpack " << load[0] << " N, minres " << load[1] << " N");
+  CHECK(std::abs(load[0] - load[1]) <= 1e-7 * std::abs(load[0]));
+}
