@@ -80,11 +80,7 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
   Mat6 tangent;
   for (const TetQuadraturePoint& q : tet_quadrature()) {
     const auto& l = q.barycentric;
-    // ∇b = 256 Σ_i (Π_{j≠i} λ_j) ∇λ_i
-    const Vec3 grad_bubble = 256.0 * (l[1] * l[2] * l[3] * g.grad.row(0) + l[0] * l[2] * l[3] * g.grad.row(1) +
-                                      l[0] * l[1] * l[3] * g.grad.row(2) + l[0] * l[1] * l[2] * g.grad.row(3))
-                                         .transpose();
-    const Eigen::Matrix<double, 6, 3> b_bubble = strain_operator(grad_bubble);
+    const Eigen::Matrix<double, 6, 3> b_bubble = strain_operator(bubble_gradient(l, g.grad));
     law.deviatoric_stress(linear_strain + b_bubble * in.bubble_velocity, in.state, stress, tangent);
     const double w = q.weight * volume;
     const Eigen::Matrix<double, 6, 3> d_b = tangent * b_bubble;

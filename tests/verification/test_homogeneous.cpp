@@ -48,6 +48,16 @@ Solved solve(const mesh::TetMesh& mesh, const material::Material& law, const std
   return s;
 }
 
+/// Block 10 × 10 × 5 mm between sticking plates, top plate at −1 mm/s.
+std::vector<scene::BoundaryCondition> squeeze_between_sticking_plates() {
+  using K = scene::BoundaryKind;
+  scene::BoundaryCondition bottom = plane_condition(K::sticking_plate, 2, 0.0);
+  bottom.velocity = {0.0, 0.0, 0.0};
+  scene::BoundaryCondition top = plane_condition(K::sticking_plate, 2, 5.0);
+  top.velocity = {0.0, 0.0, -1.0};
+  return {bottom, top};
+}
+
 } // namespace
 
 TEST_CASE("homogeneous frictionless compression: exact reaction force", "[verification]") {
@@ -117,11 +127,10 @@ TEST_CASE("Newton converges quadratically near the solution (m = 0.15)", "[verif
   const material::NortonHoff law(50.0, 0.15, 1e-3);
   const mesh::TetMesh mesh = mesh::make_box(mesh::Point::Zero(), mesh::Point(10, 10, 5), 1.25);
   using K = scene::BoundaryKind;
-  scene::BoundaryCondition bottom = plane_condition(K::sticking_plate, 2, 0.0);
-  bottom.velocity = {0.0, 0.0, 0.0};
-  scene::BoundaryCondition top = plane_condition(K::sticking_plate, 2, 5.0);
-  top.velocity = {0.0, 0.0, -1.0};
-  const Solved s = solve(mesh, law, {plane_condition(K::symmetry, 0, 0.0), plane_condition(K::symmetry, 1, 0.0), bottom, top}, 1e-11);
+  auto bcs = squeeze_between_sticking_plates();
+  bcs.push_back(plane_condition(K::symmetry, 0, 0.0));
+  bcs.push_back(plane_condition(K::symmetry, 1, 0.0));
+  const Solved s = solve(mesh, law, bcs, 1e-11);
   REQUIRE(s.report.converged);
   const auto& it = s.report.iterations;
   std::string history;
@@ -144,12 +153,7 @@ TEST_CASE("the iterative solver (MINRES) gives the direct solver's answer", "[ve
   // at Newton tolerance 1e-10, so plate loads agree to ~1e-9; asserted at 1e-7.
   const material::NortonHoff law(50.0, 0.15, 1e-3);
   const mesh::TetMesh mesh = mesh::make_box(mesh::Point::Zero(), mesh::Point(10, 10, 5), 1.25);
-  using K = scene::BoundaryKind;
-  scene::BoundaryCondition bottom = plane_condition(K::sticking_plate, 2, 0.0);
-  bottom.velocity = {0.0, 0.0, 0.0};
-  scene::BoundaryCondition top = plane_condition(K::sticking_plate, 2, 5.0);
-  top.velocity = {0.0, 0.0, -1.0};
-  const auto imposed = scene::impose(mesh, {bottom, top});
+  const auto imposed = scene::impose(mesh, squeeze_between_sticking_plates());
   double load[2];
   int k = 0;
   for (auto kind : {solver::LinearSolverKind::umfpack, solver::LinearSolverKind::minres}) {

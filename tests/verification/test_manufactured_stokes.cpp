@@ -7,6 +7,7 @@
 // element's theory: velocity H1 O(h), pressure L2 O(h), velocity L2 O(h²).
 #include "test_common.h"
 
+#include "anvil/fem/mini_element.h"
 #include "anvil/fem/tet_quadrature.h"
 #include "anvil/mesh/generators.h"
 #include "anvil/mesh/tet_geometry.h"
@@ -112,8 +113,7 @@ Errors solve_on(int cells) {
         p += l[a] * u.nodal[4 * t[a] + 3];
       }
       const double b = 256.0 * l[0] * l[1] * l[2] * l[3];
-      const Eigen::RowVector3d grad_b = 256.0 * (l[1] * l[2] * l[3] * g.grad.row(0) + l[0] * l[2] * l[3] * g.grad.row(1) +
-                                                 l[0] * l[1] * l[3] * g.grad.row(2) + l[0] * l[1] * l[2] * g.grad.row(3));
+      const Eigen::RowVector3d grad_b = fem::bubble_gradient(l, g.grad).transpose();
       velocity += b * bubble;
       gradient += bubble * grad_b;
       const double w = q.weight * g.volume;

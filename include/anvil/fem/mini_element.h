@@ -17,6 +17,14 @@ using Vec3 = Eigen::Vector3d;
 using Vec16 = Eigen::Matrix<double, 16, 1>;
 using Mat16 = Eigen::Matrix<double, 16, 16>;
 
+/// Gradient of the bubble b = 256 λ0λ1λ2λ3 at barycentric point `l`, given
+/// the P1 gradients ∇λa as rows: ∇b = 256 Σ_a (Π_{c≠a} λc) ∇λa (1/mm).
+inline Vec3 bubble_gradient(const std::array<double, 4>& l, const Eigen::Matrix<double, 4, 3>& grad) {
+  return 256.0 * (l[1] * l[2] * l[3] * grad.row(0) + l[0] * l[2] * l[3] * grad.row(1) +
+                  l[0] * l[1] * l[3] * grad.row(2) + l[0] * l[1] * l[2] * grad.row(3))
+                     .transpose();
+}
+
 /// Body force density f(x) in N/mm³ (MPa/mm); empty when the scene has none.
 using BodyForce = std::function<Vec3(const mesh::Point&)>;
 
