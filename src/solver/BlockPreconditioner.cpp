@@ -4,50 +4,59 @@
 
 namespace anvil::solver {
 
-void BlockPreconditioner::set_pressure_mask(std::vector<char> is_pressure) {
-  is_pressure_ = std::move(is_pressure);
-  velocity_index_.clear();
-  pressure_index_.clear();
-  for (std::size_t i = 0; i < is_pressure_.size(); ++i)
-    (is_pressure_[i] ? pressure_index_ : velocity_index_).push_back(static_cast<long>(i));
+void BlockPreconditioner::set_components(std::vector<char> component) {
+  component_ = std::move(component);
+  for (auto& list : index_) list.clear();
+  for (std::size_t i = 0; i < component_.size(); ++i) index_[component_[i]].push_back(static_cast<long>(i));
+  for (auto& factor : velocity_factor_) factor.reset();
 }
 
 BlockPreconditioner& BlockPreconditioner::factorize(const fem::SparseMatrix& a) {
-  // Velocity block by index map, pressure block diagonal.
-  std::vector<long> block_of(is_pressure_.size());
-  for (std::size_t k = 0; k < velocity_index_.size(); ++k) block_of[velocity_index_[k]] = static_cast<long>(k);
-  for (std::size_t k = 0; k < pressure_index_.size(); ++k) block_of[pressure_index_[k]] = static_cast<long>(k);
-  std::vector<Eigen::Triplet<double, long>> entries;
-  entries.reserve(static_cast<std::size_t>(a.nonZeros()));
-  pressure_diagonal_inverse_.resize(static_cast<long>(pressure_index_.size()));
+  std::vector<long> position(component_.size()); // index within its component block
+  for (const auto& list : index_)
+    for (std::size_t k = 0; k < list.size(); ++k) position[list[k]] = static_cast<long>(k);
+  std::array<std::vector<Eigen::Triplet<double, long>>, 3> entries;
+  pressure_diagonal_inverse_.resize(static_cast<long>(index_[3].size()));
   double largest_pressure_diagonal = 0.0;
-  for (long col = 0; col < a.outerSize(); ++col)
+  for (long col = 0; col < a.outerSize(); ++col) {
+    const int c = component_[col];
     for (fem::SparseMatrix::InnerIterator it(a, col); it; ++it) {
-      const long row = it.row();
-      if (!is_pressure_[row] && !is_pressure_[col]) entries.emplace_back(block_of[row], block_of[col], it.value());
-      else if (row == col) {
-        pressure_diagonal_inverse_[block_of[row]] = std::abs(it.value());
+      if (component_[it.row()] != c) continue;
+      if (c < 3) entries[c].emplace_back(position[it.row()], position[col], it.value());
+      else if (it.row() == col) {
+        pressure_diagonal_inverse_[position[col]] = std::abs(it.value());
         largest_pressure_diagonal = std::max(largest_pressure_diagonal, std::abs(it.value()));
       }
     }
+  }
   for (long k = 0; k < pressure_diagonal_inverse_.size(); ++k) // a zero diagonal (none expected) is floored
     pressure_diagonal_inverse_[k] = 1.0 / std::max(pressure_diagonal_inverse_[k], 1e-12 * largest_pressure_diagonal);
-  const long nv = static_cast<long>(velocity_index_.size());
-  fem::SparseMatrix k(nv, nv);
-  k.setFromTriplets(entries.begin(), entries.end());
-  velocity_factor_.compute(k);
-  info_ = velocity_factor_.info();
+  info_ = Eigen::Success;
+  for (int c = 0; c < 3; ++c) {
+    const long n = static_cast<long>(index_[c].size());
+    fem::SparseMatrix block(n, n);
+    block.setFromTriplets(entries[c].begin(), entries[c].end());
+    if (!velocity_factor_[c]) {
+      velocity_factor_[c] = std::make_unique<Cholesky>();
+      velocity_factor_[c]->analyzePattern(block);
+    }
+    velocity_factor_[c]->factorize(block);
+    if (velocity_factor_[c]->info() != Eigen::Success) info_ = Eigen::NumericalIssue;
+  }
   return *this;
 }
 
 Eigen::VectorXd BlockPreconditioner::solve(const Eigen::VectorXd& r) const {
-  Eigen::VectorXd rv(static_cast<long>(velocity_index_.size()));
-  for (std::size_t k = 0; k < velocity_index_.size(); ++k) rv[static_cast<long>(k)] = r[velocity_index_[k]];
-  const Eigen::VectorXd zv = velocity_factor_.solve(rv);
   Eigen::VectorXd z(r.size());
-  for (std::size_t k = 0; k < velocity_index_.size(); ++k) z[velocity_index_[k]] = zv[static_cast<long>(k)];
-  for (std::size_t k = 0; k < pressure_index_.size(); ++k)
-    z[pressure_index_[k]] = r[pressure_index_[k]] * pressure_diagonal_inverse_[static_cast<long>(k)];
+  for (int c = 0; c < 3; ++c) {
+    const auto& list = index_[c];
+    Eigen::VectorXd block(static_cast<long>(list.size()));
+    for (std::size_t k = 0; k < list.size(); ++k) block[static_cast<long>(k)] = r[list[k]];
+    const Eigen::VectorXd solved = velocity_factor_[c]->solve(block);
+    for (std::size_t k = 0; k < list.size(); ++k) z[list[k]] = solved[static_cast<long>(k)];
+  }
+  for (std::size_t k = 0; k < index_[3].size(); ++k)
+    z[index_[3][k]] = r[index_[3][k]] * pressure_diagonal_inverse_[static_cast<long>(k)];
   return z;
 }
 

@@ -11,18 +11,18 @@ namespace anvil::solver {
 using fem::kDofsPerNode;
 
 namespace {
-std::vector<char> pressure_mask(const fem::DofMap& dofs) {
-  std::vector<char> mask(static_cast<std::size_t>(dofs.free_count()));
+std::vector<char> free_components(const fem::DofMap& dofs) {
+  std::vector<char> component(static_cast<std::size_t>(dofs.free_count()));
   for (int d = 0; d < dofs.dof_count(); ++d)
-    if (int f = dofs.free_index(d); f >= 0) mask[f] = d % kDofsPerNode == 3;
-  return mask;
+    if (int f = dofs.free_index(d); f >= 0) component[f] = static_cast<char>(d % kDofsPerNode);
+  return component;
 }
 } // namespace
 
 IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, LinearSolverKind kind,
                                  Timers& timers)
     : mesh_(mesh), prescribed_(std::move(prescribed)), dofs_(prescribed_), assembler_(mesh, dofs_),
-      linear_solver_(kind, pressure_mask(dofs_)), timers_(timers) {}
+      linear_solver_(kind, free_components(dofs_)), timers_(timers) {}
 
 IncrementSolver::Merit IncrementSolver::evaluate(const material::Material& law,
                                                  const std::vector<double>& equivalent_strain,

@@ -43,13 +43,13 @@ LinearSolverKind resolve(LinearSolverKind kind, int unknowns) {
   return unknowns > kDirectSolverLimit ? LinearSolverKind::minres : LinearSolverKind::umfpack;
 }
 
-LinearSolver::LinearSolver(LinearSolverKind kind, std::vector<char> is_pressure)
-    : kind_(resolve(kind, static_cast<int>(is_pressure.size()))), backend_(std::make_unique<Backend>()) {
+LinearSolver::LinearSolver(LinearSolverKind kind, std::vector<char> component)
+    : kind_(resolve(kind, static_cast<int>(component.size()))), backend_(std::make_unique<Backend>()) {
   // Relative residual 1e-10: two orders below Newton's default tolerance, so
   // the inexact solve does not spoil Newton's quadratic convergence.
   backend_->minres.setTolerance(1e-10);
   backend_->minres.setMaxIterations(20000);
-  backend_->minres.preconditioner().set_pressure_mask(std::move(is_pressure));
+  backend_->minres.preconditioner().set_components(std::move(component));
 }
 LinearSolver::~LinearSolver() = default;
 

@@ -33,8 +33,8 @@ std::string to_string(LinearSolverKind kind);
 
 class LinearSolver {
 public:
-  /// `is_pressure[i]` tells whether free unknown i is a pressure (used by minres).
-  LinearSolver(LinearSolverKind kind, std::vector<char> is_pressure);
+  /// `component[i]` of free unknown i: 0, 1, 2 velocity x, y, z; 3 pressure (used by minres).
+  LinearSolver(LinearSolverKind kind, std::vector<char> component);
   ~LinearSolver();
   LinearSolver(const LinearSolver&) = delete;
   LinearSolver& operator=(const LinearSolver&) = delete;
