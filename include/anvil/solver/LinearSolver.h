@@ -20,8 +20,8 @@ enum class LinearSolverKind {
 
 /// Unknowns above which `automatic` picks the iterative solver. Measured on
 /// 2 cores with tools/bench_increment (Newtonian block, time per Newton
-/// iteration): 12k unknowns UMFPACK 0.87 s, MINRES 0.92 s; 45k unknowns
-/// UMFPACK 7.0 s (1.3 GB), MINRES 5.8 s (0.26 GB). Below the limit the direct
+/// iteration): 12k unknowns UMFPACK 0.87 s, MINRES (IC(0) variant) 0.92 s;
+/// 45k unknowns UMFPACK 7.0 s (1.3 GB), MINRES 4.6 s (0.28 GB). Below the limit the direct
 /// solver is kept for its robustness (indefinite or unsymmetric tangents).
 inline constexpr int kDirectSolverLimit = 20000;
 
