@@ -17,6 +17,14 @@ std::vector<char> free_components(const fem::DofMap& dofs) {
     if (int f = dofs.free_index(d); f >= 0) component[f] = static_cast<char>(d % kDofsPerNode);
   return component;
 }
+
+/// Largest velocity component magnitude of a nodal vector (4 × nodes).
+double max_velocity(const Eigen::VectorXd& nodal) {
+  double v = 0.0;
+  for (long d = 0; d < nodal.size(); ++d)
+    if (d % kDofsPerNode != 3) v = std::max(v, std::abs(nodal[d]));
+  return v;
+}
 } // namespace
 
 IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, LinearSolverKind kind,
@@ -55,12 +63,6 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
   NewtonReport report;
   const int n = dofs_.dof_count();
   const double body_volume = std::abs(mesh::volume(mesh_));
-  auto velocity_max = [&] {
-    double v = 0.0;
-    for (int d = 0; d < n; ++d)
-      if (d % kDofsPerNode != 3) v = std::max(v, std::abs(unknowns.nodal[d]));
-    return v;
-  };
 
   // Predictor: a near-rigid-plastic law started from rest sees huge viscosities
   // wherever the guess is still, and Newton crawls. One Newtonian solve at the
@@ -69,8 +71,8 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
   bool at_rest = true;
   for (int d = 0; d < n && at_rest; ++d)
     if (dofs_.free_index(d) >= 0 && unknowns.nodal[d] != 0.0) at_rest = false;
-  if (at_rest && !law.is_linear() && velocity_max() > 0.0) {
-    const double reference_rate = velocity_max() / std::cbrt(body_volume);
+  if (at_rest && !law.is_linear() && max_velocity(unknowns.nodal) > 0.0) {
+    const double reference_rate = max_velocity(unknowns.nodal) / std::cbrt(body_volume);
     const material::NortonHoff newtonian(law.secant_viscosity(reference_rate, {}), 1.0, 0.0);
     NewtonSettings predictor = settings;
     predictor.max_iterations = 1; // linear law: one Newton step is its solution
@@ -118,16 +120,13 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
     // Start and trial are compared with one flux scale, the larger of the two
     // (a body starting at rest has none of its own).
     const Merit merit_start = merit;
-    const double velocity_start = velocity_max();
+    const double velocity_start = max_velocity(unknowns.nodal);
     double step = 1.0;
     for (int cut = 0;; ++cut) {
       trial.nodal = unknowns.nodal + step * delta;
       trial.bubble = unknowns.bubble + step * bubble_delta;
       merit = evaluate(law, equivalent_strain, nodal_forces, body_force, trial);
-      double velocity_trial = 0.0;
-      for (int d = 0; d < n; ++d)
-        if (d % kDofsPerNode != 3) velocity_trial = std::max(velocity_trial, std::abs(trial.nodal[d]));
-      const double flux = std::max(std::max(velocity_start, velocity_trial) * area, 1e-300);
+      const double flux = std::max(std::max(velocity_start, max_velocity(trial.nodal)) * area, 1e-300);
       if (bad_element_ < 0 && relative(merit, scale, flux) <= (1.0 - 2e-4 * step) * relative(merit_start, scale, flux))
         break;
       if (cut == settings.max_line_search_cuts) break; // take the smallest step and let Newton go on
@@ -136,7 +135,7 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
     unknowns.nodal.swap(trial.nodal);
     unknowns.bubble.swap(trial.bubble);
     scale = force_scale(nodal_forces); // reactions follow the velocity field
-    const double flux_scale = std::max(velocity_max() * area, 1e-300);
+    const double flux_scale = std::max(max_velocity(unknowns.nodal) * area, 1e-300);
 
     double velocity_sq = 0.0, delta_sq = 0.0;
     for (int d = 0; d < n; ++d)
