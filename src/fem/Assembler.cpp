@@ -46,7 +46,8 @@ long entry_position(const SparseMatrix& m, long row, long col) {
 } // namespace
 
 Assembler::Assembler(const mesh::TetMesh& mesh, const DofMap& dofs)
-    : dofs_(dofs), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()) {
+    : dofs_(dofs), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()),
+      bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0) {
   // Node adjacency through elements, then 4×4 blocks filtered to free dofs.
   std::vector<std::vector<int>> neighbours(mesh.nodes.size());
   for (const mesh::Tet& t : mesh.tets)
@@ -90,8 +91,7 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const material::Ma
     if (tangent->nonZeros() != pattern_.nonZeros()) *tangent = pattern_;
     std::fill(tangent->valuePtr(), tangent->valuePtr() + tangent->nonZeros(), 0.0);
   }
-  std::vector<char> bad(mesh.tets.size(), 0);
-  std::vector<double> bubble_sq(mesh.tets.size(), 0.0);
+  std::fill(bad_.begin(), bad_.end(), 0);
   for (const std::vector<int>& colour : colours_) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, colour.size(), 64), [&](const auto& range) {
       MiniElementInput in;
@@ -107,10 +107,11 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const material::Ma
         in.bubble_velocity = unknowns.bubble.segment<3>(3 * e);
         in.state.equivalent_strain = equivalent_strain.empty() ? 0.0 : equivalent_strain[e];
         if (!mini_element(in, law, tangent != nullptr, body_force, system)) {
-          bad[e] = 1;
+          bad_[e] = 1;
+          bubble_sq_[e] = 0.0;
           continue;
         }
-        bubble_sq[e] = system.bubble_residual_sq;
+        bubble_sq_[e] = system.bubble_residual_sq;
         bubble_condensation_[e].leftCols<16>() = system.bubble_gain;
         bubble_condensation_[e].col(16) = system.bubble_residual_solved;
         for (int a = 0; a < 4; ++a)
@@ -129,9 +130,9 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const material::Ma
       }
     });
   }
-  for (std::size_t e = 0; e < bad.size(); ++e) {
-    if (bad[e] && result.bad_element < 0) result.bad_element = static_cast<int>(e);
-    result.bubble_residual_sq += bubble_sq[e];
+  for (std::size_t e = 0; e < bad_.size(); ++e) {
+    if (bad_[e] && result.bad_element < 0) result.bad_element = static_cast<int>(e);
+    result.bubble_residual_sq += bubble_sq_[e];
   }
   return result;
 }

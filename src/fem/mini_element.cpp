@@ -37,9 +37,8 @@ struct Geometry {
 
 bool geometry(const MiniElementInput& in, Geometry& g) {
   const auto& x = in.vertices;
-  const double v = mesh::signed_volume(x[0], x[1], x[2], x[3]);
-  if (!(v > 0.0)) return false;
   const mesh::P1Gradients p1 = mesh::p1_gradients(x[0], x[1], x[2], x[3]);
+  if (!(p1.volume > 0.0)) return false; // inverted or flat: the gradients are meaningless
   g.grad = p1.grad;
   g.volume = p1.volume;
   for (int a = 0; a < 4; ++a) g.linear_strain.block<6, 3>(0, 3 * a) = strain_operator(g.grad.row(a).transpose());

@@ -28,8 +28,9 @@ void NortonHoff::deviatoric_stress(const Vec6& strain_rate, const PointState&, V
   const Vec6 e = deviator(strain_rate);
   const double rate_sq = 2.0 / 3.0 * e.squaredNorm() + regularisation_rate_ * regularisation_rate_;
   const double eta = consistency_ * std::pow(3.0 * rate_sq, 0.5 * (sensitivity_ - 1.0));
+  static const Mat6 projector = deviatoric_projector();
   stress = 2.0 * eta * e;
-  tangent = 2.0 * eta * deviatoric_projector();
+  tangent = 2.0 * eta * projector;
   if (sensitivity_ != 1.0 && rate_sq > 0.0)
     tangent.noalias() += (2.0 * eta * (sensitivity_ - 1.0) * 2.0 / 3.0 / rate_sq) * (e * e.transpose());
 }
@@ -52,8 +53,9 @@ LinearElastic::LinearElastic(double young_modulus, double poisson_ratio)
 
 void LinearElastic::deviatoric_stress(const Vec6& strain, const PointState&, Vec6& stress, Mat6& tangent) const {
   const double shear = young_modulus_ / (2.0 * (1.0 + poisson_ratio_));
+  static const Mat6 projector = deviatoric_projector();
   stress = 2.0 * shear * deviator(strain);
-  tangent = 2.0 * shear * deviatoric_projector();
+  tangent = 2.0 * shear * projector;
 }
 
 double LinearElastic::bulk_modulus() const {

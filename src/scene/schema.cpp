@@ -116,15 +116,16 @@ const std::vector<KeySpec>& material_schema() {
       range(key("young_modulus", T::number, "linear_elastic: E", "MPa"), 0, kInf, true),
       range(key("poisson_ratio", T::number, "linear_elastic: ν (0.5 allowed: u-p form)", "-"), -1, 0.5, true),
       required(key("sources", T::map, "where each number comes from: one entry per numeric key")),
-      key("sources.temperature", T::string, "source of temperature"),
-      key("sources.viscosity", T::string, "source of viscosity"),
-      key("sources.consistency", T::string, "source of consistency"),
-      key("sources.sensitivity", T::string, "source of sensitivity"),
-      key("sources.regularisation_rate", T::string, "source (or reason) of regularisation_rate"),
-      key("sources.young_modulus", T::string, "source of young_modulus"),
-      key("sources.poisson_ratio", T::string, "source of poisson_ratio"),
   };
-  return schema;
+  // One "sources.<key>" entry per numeric key, so the two lists cannot drift apart.
+  static const std::vector<KeySpec> with_sources = [] {
+    std::vector<KeySpec> all = schema;
+    for (const KeySpec& k : schema)
+      if (k.type == T::number)
+        all.push_back(key("sources." + k.path, T::string, "source (or reason) of " + k.path));
+    return all;
+  }();
+  return with_sources;
 }
 
 const KeySpec* find_key(const std::vector<KeySpec>& schema, const std::string& path) {

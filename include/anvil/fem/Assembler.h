@@ -56,6 +56,10 @@ private:
   std::vector<std::vector<int>> colours_; ///< element indices per colour
   /// Per element: K_bb⁻¹ [K_bl G_b] (3×16) and K_bb⁻¹ r_b (3).
   std::vector<Eigen::Matrix<double, 3, 17>> bubble_condensation_;
+  /// Per element, from the last assemble(): inverted/flat flag and |r_b|²
+  /// (kept per element so the sums are in a fixed order, whatever the threads).
+  std::vector<char> bad_;
+  std::vector<double> bubble_sq_;
 };
 
 } // namespace anvil::fem
