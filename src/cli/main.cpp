@@ -18,6 +18,9 @@ constexpr const char* kUsage = R"(anvil — 3D metal-forming simulator (P1+/P1 v
 usage:
   anvil run CASE.yaml [-o DIR]   run a case; results go to DIR (default: the
                                  case's output.directory, else out/<case name>)
+  anvil run CASE.yaml --resume DIR
+                                 continue a stopped or killed run from the last
+                                 checkpoint in DIR (DIR/checkpoint.h5)
   anvil --schema                 every case-file and material-card key: type,
                                  default, range, unit, meaning
   anvil --list                   the effects a scene can call for
@@ -25,7 +28,7 @@ usage:
   anvil --help
 
 Units: mm, s, MPa, N, °C. Outputs: anvil.pvd + .vtu (ParaView), loads.csv,
-summary.json, anvil.log.
+summary.json, anvil.log, checkpoint.h5 (time-stepping cases).
 )";
 
 int usage_error(const std::string& message) {
@@ -64,6 +67,10 @@ int main(int argc, char** argv) {
     if (arg == "-o" || arg == "--output") {
       if (i + 1 >= argc) return usage_error(arg + " needs a directory");
       options.output_directory = argv[++i];
+    } else if (arg == "--resume") {
+      if (i + 1 >= argc) return usage_error("--resume needs the directory of the run to continue");
+      options.output_directory = argv[++i];
+      options.resume = true;
     } else if (!arg.empty() && arg[0] == '-') {
       return usage_error("unknown option '" + arg + "'");
     } else if (case_file.empty()) {

@@ -8,9 +8,9 @@ std::FILE* mirror = nullptr;
 bool quiet_terminal = false;
 } // namespace
 
-void open_file(const std::string& path) {
+void open_file(const std::string& path, bool append) {
   close_file();
-  mirror = std::fopen(path.c_str(), "w");
+  mirror = std::fopen(path.c_str(), append ? "a" : "w");
 }
 
 void close_file() {

@@ -82,7 +82,7 @@ Assembler::Assembler(const mesh::TetMesh& mesh, const DofMap& dofs)
 }
 
 AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const material::Material& law,
-                                   const std::vector<double>& equivalent_strain, const BodyUnknowns& unknowns,
+                                   const std::vector<material::PointState>& states, const BodyUnknowns& unknowns,
                                    const Eigen::VectorXd& nodal_forces, const BodyForce& body_force,
                                    SparseMatrix* tangent) {
   AssemblyResult result;
@@ -105,7 +105,7 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const material::Ma
           in.nodal_pressure[a] = unknowns.nodal[kDofsPerNode * t[a] + 3];
         }
         in.bubble_velocity = unknowns.bubble.segment<3>(3 * e);
-        in.state.equivalent_strain = equivalent_strain.empty() ? 0.0 : equivalent_strain[e];
+        in.state = states.empty() ? material::PointState{} : states[e];
         if (!mini_element(in, law, tangent != nullptr, body_force, system)) {
           bad_[e] = 1;
           bubble_sq_[e] = 0.0;

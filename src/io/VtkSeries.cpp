@@ -39,24 +39,43 @@ VtkSeries::VtkSeries(std::string directory, std::string name) : directory_(std::
 
 void VtkSeries::write(int increment, double time, int body, const std::string& body_name, const mesh::TetMesh& mesh,
                       const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields) {
+  std::vector<long> connectivity;
+  connectivity.reserve(4 * mesh.tets.size());
+  for (const mesh::Tet& t : mesh.tets) connectivity.insert(connectivity.end(), t.begin(), t.end());
+  write_grid(increment, time, body, body_name, mesh.nodes, VTK_TETRA, 4, connectivity, point_fields, cell_fields);
+}
+
+void VtkSeries::write_surface(int increment, double time, int part, const std::string& part_name,
+                              const std::vector<mesh::Point>& vertices, const std::vector<std::array<int, 3>>& faces) {
+  std::vector<long> connectivity;
+  connectivity.reserve(3 * faces.size());
+  for (const auto& f : faces) connectivity.insert(connectivity.end(), f.begin(), f.end());
+  write_grid(increment, time, part, part_name, vertices, VTK_TRIANGLE, 3, connectivity, {}, {});
+}
+
+void VtkSeries::write_grid(int increment, double time, int part, const std::string& part_name,
+                           const std::vector<mesh::Point>& nodes, int cell_type, int nodes_per_cell,
+                           const std::vector<long>& connectivity_in, const std::vector<Field>& point_fields,
+                           const std::vector<Field>& cell_fields) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(mesh.node_count());
-  for (int i = 0; i < mesh.node_count(); ++i) points->SetPoint(i, mesh.nodes[i].data());
+  points->SetNumberOfPoints(static_cast<vtkIdType>(nodes.size()));
+  for (std::size_t i = 0; i < nodes.size(); ++i) points->SetPoint(static_cast<vtkIdType>(i), nodes[i].data());
   vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(4 * static_cast<vtkIdType>(mesh.tet_count()));
-  for (int e = 0; e < mesh.tet_count(); ++e)
-    for (int a = 0; a < 4; ++a) connectivity->SetValue(4 * e + a, mesh.tets[e][a]);
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(connectivity_in.size()));
+  for (std::size_t i = 0; i < connectivity_in.size(); ++i)
+    connectivity->SetValue(static_cast<vtkIdType>(i), connectivity_in[i]);
   vtkNew<vtkCellArray> cells;
-  cells->SetData(4, connectivity);
+  cells->SetData(nodes_per_cell, connectivity);
   vtkNew<vtkUnstructuredGrid> grid;
   grid->SetPoints(points);
-  grid->SetCells(VTK_TETRA, cells);
-  for (const Field& f : point_fields) grid->GetPointData()->AddArray(to_vtk(f, mesh.nodes.size()));
-  for (const Field& f : cell_fields) grid->GetCellData()->AddArray(to_vtk(f, mesh.tets.size()));
+  grid->SetCells(cell_type, cells);
+  const std::size_t cell_count = connectivity_in.size() / static_cast<std::size_t>(nodes_per_cell);
+  for (const Field& f : point_fields) grid->GetPointData()->AddArray(to_vtk(f, nodes.size()));
+  for (const Field& f : cell_fields) grid->GetCellData()->AddArray(to_vtk(f, cell_count));
 
   char file[256];
-  std::snprintf(file, sizeof file, "%s_%s_%06d.vtu", name_.c_str(), body_name.c_str(), increment);
+  std::snprintf(file, sizeof file, "%s_%s_%06d.vtu", name_.c_str(), part_name.c_str(), increment);
   const std::string path = directory_ + "/" + file;
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetFileName((path + ".tmp").c_str());
@@ -69,11 +88,22 @@ void VtkSeries::write(int increment, double time, int body, const std::string& b
   if (writer->Write() == 0) throw RunError(path + ": VTK could not write the file");
   commit_temporary(path);
 
-  entries_.push_back({time, body, file});
+  entries_.push_back({time, part, file});
+  write_collection();
+}
+
+void VtkSeries::resume(std::vector<Entry> entries, double time) {
+  entries_.clear();
+  for (Entry& e : entries)
+    if (e.time <= time) entries_.push_back(std::move(e));
+  write_collection();
+}
+
+void VtkSeries::write_collection() const {
   std::ostringstream pvd;
   pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
          "  <Collection>\n";
-  pvd.precision(12);
+  pvd.precision(17);
   for (const Entry& e : entries_)
     pvd << "    <DataSet timestep=\"" << e.time << "\" group=\"\" part=\"" << e.part << "\" file=\"" << e.file << "\"/>\n";
   pvd << "  </Collection>\n</VTKFile>\n";

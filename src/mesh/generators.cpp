@@ -132,4 +132,38 @@ TetMesh make_cylinder(double radius, double height, double element_size) {
   return mesh;
 }
 
+TetMesh make_quarter_cylinder(double radius, double height, double element_size) {
+  if (!(radius > 0.0 && height > 0.0 && element_size > 0.0))
+    throw InputError("quarter cylinder mesh: radius, height and element_size must be > 0");
+  const int n = cells_for(radius, element_size);
+  TetMesh mesh = make_box(Point::Zero(), Point(1.0, 1.0, height), {n, n, cells_for(height, element_size)});
+  // (u, v) ∈ [0,1]² → (R u sqrt(1 − v²/2), R v sqrt(1 − u²/2)): u = 1 and v = 1
+  // land on the arc x² + y² = R², u = 0 on x = 0, v = 0 on y = 0.
+  for (Point& p : mesh.nodes) {
+    const double u = p.x(), v = p.y();
+    p.x() = radius * u * std::sqrt(1.0 - 0.5 * v * v);
+    p.y() = radius * v * std::sqrt(1.0 - 0.5 * u * u);
+  }
+  for (int& tag : mesh.boundary_tags)
+    if (tag == 4) tag = 2; // both mapped sides are the lateral surface
+  orient_positive(mesh);
+  return mesh;
+}
+
+TetMesh make_quarter_ring(double outer_radius, double inner_radius, double height, double element_size) {
+  if (!(outer_radius > inner_radius && inner_radius > 0.0 && height > 0.0 && element_size > 0.0))
+    throw InputError("quarter ring mesh: need outer radius > inner radius > 0, height and element_size > 0");
+  const double mid = 0.5 * (outer_radius + inner_radius);
+  TetMesh mesh = make_box(Point::Zero(), Point(1.0, 1.0, height),
+                          {cells_for(outer_radius - inner_radius, element_size),
+                           cells_for(0.5 * std::numbers::pi * mid, element_size), cells_for(height, element_size)});
+  for (Point& p : mesh.nodes) {
+    const double r = inner_radius + (outer_radius - inner_radius) * p.x(), angle = 0.5 * std::numbers::pi * p.y();
+    p.x() = r * std::cos(angle);
+    p.y() = r * std::sin(angle);
+  }
+  orient_positive(mesh);
+  return mesh;
+}
+
 } // namespace anvil::mesh

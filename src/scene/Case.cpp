@@ -2,6 +2,7 @@
 
 #include "checked_yaml.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace anvil::scene {
@@ -22,6 +23,148 @@ BoundaryKind boundary_kind(const std::string& type) {
   return BoundaryKind::pressure;
 }
 
+contact::FrictionLaw read_friction(const CheckedYaml& doc, const YAML::Node& die, const std::string& shown) {
+  using contact::FrictionKind;
+  contact::FrictionLaw law;
+  const YAML::Node f = die["friction"];
+  if (!f) return law;
+  const std::string name = doc.text(f, "law", "dies[].friction.law");
+  auto need = [&](const char* key) {
+    if (!f[key]) doc.fail(f, shown + ".friction." + key, "missing: friction law '" + name + "' needs it");
+    return doc.number(f, key, std::string("dies[].friction.") + key);
+  };
+  auto forbid = [&](const char* key) {
+    if (f[key]) doc.fail(f[key], shown + ".friction." + key, "does not apply to friction law '" + name + "'");
+  };
+  if (name == "frictionless" || name == "sticking") {
+    law.kind = name == "sticking" ? FrictionKind::sticking : FrictionKind::frictionless;
+    forbid("factor"), forbid("coefficient"), forbid("exponent");
+  } else if (name == "tresca") {
+    law.kind = FrictionKind::tresca;
+    law.tresca_factor = need("factor");
+    forbid("coefficient"), forbid("exponent");
+  } else if (name == "coulomb") {
+    law.kind = FrictionKind::coulomb;
+    law.coefficient = need("coefficient");
+    law.tresca_factor = f["factor"] ? need("factor") : 0.0;
+    forbid("exponent");
+  } else {
+    law.kind = FrictionKind::norton;
+    law.coefficient = need("coefficient");
+    law.exponent = need("exponent");
+    forbid("factor");
+  }
+  return law;
+}
+
+void read_dies(const CheckedYaml& doc, Case& c) {
+  const YAML::Node dies = doc.root()["dies"];
+  for (std::size_t i = 0; dies && i < dies.size(); ++i) {
+    const YAML::Node n = dies[i];
+    const std::string shown = "dies[" + std::to_string(i) + "]";
+    DieSpec d;
+    d.name = doc.text(n, "name", "dies[].name");
+    d.source = doc.at(n);
+    for (const DieSpec& other : c.dies)
+      if (other.name == d.name) doc.fail(n["name"], shown + ".name", "die '" + d.name + "' is defined twice");
+    if (static_cast<bool>(n["stl"]) == static_cast<bool>(n["plane"]))
+      doc.fail(n, shown, "give exactly one surface: 'stl' (a file) or 'plane'");
+    if (n["stl"]) d.stl_file = relative_to(doc.path(), n["stl"].Scalar());
+    else {
+      const YAML::Node plane = n["plane"];
+      d.plane_point = doc.vector(plane, "point", "dies[].plane.point");
+      d.plane_normal = doc.vector(plane, "normal", "dies[].plane.normal");
+      if (d.plane_normal.norm() == 0.0) doc.fail(plane["normal"], shown + ".plane.normal", "the normal must not be zero");
+      d.plane_normal.normalize();
+      d.plane_half_size = doc.number(plane, "half_size", "dies[].plane.half_size");
+    }
+    d.motion = doc.text(n, "motion", "dies[].motion");
+    auto need = [&](const char* key) {
+      if (!n[key]) doc.fail(n, shown + "." + key, "missing: motion '" + d.motion + "' needs it");
+    };
+    auto allow_only = [&](std::vector<std::string> keys) {
+      for (const char* key : {"velocity", "direction", "time", "speed", "displacement", "crank_radius", "rod_length",
+                              "rpm", "start_angle", "load_limit"})
+        if (n[key] && std::find(keys.begin(), keys.end(), key) == keys.end())
+          doc.fail(n[key], shown + "." + key, "does not apply to motion '" + d.motion + "'");
+    };
+    if (d.motion == "fixed") allow_only({});
+    else if (d.motion == "constant" || d.motion == "hydraulic") {
+      need("velocity");
+      d.velocity = doc.vector(n, "velocity", "dies[].velocity");
+      if (d.motion == "hydraulic") {
+        need("load_limit");
+        d.load_limit = doc.number(n, "load_limit", "dies[].load_limit");
+        allow_only({"velocity", "load_limit"});
+      } else allow_only({"velocity"});
+    } else if (d.motion == "table") {
+      need("time");
+      d.table_time = doc.numbers(n, "time");
+      if (static_cast<bool>(n["speed"]) == static_cast<bool>(n["displacement"]))
+        doc.fail(n, shown, "a table motion needs exactly one of 'speed' (mm/s) or 'displacement' (mm)");
+      d.table_is_speed = static_cast<bool>(n["speed"]);
+      d.table_values = doc.numbers(n, d.table_is_speed ? "speed" : "displacement");
+      if (d.table_values.size() != d.table_time.size())
+        doc.fail(n[d.table_is_speed ? "speed" : "displacement"], shown + (d.table_is_speed ? ".speed" : ".displacement"),
+                 "has " + std::to_string(d.table_values.size()) + " values but 'time' has " +
+                     std::to_string(d.table_time.size()));
+      for (std::size_t k = 1; k < d.table_time.size(); ++k)
+        if (!(d.table_time[k] > d.table_time[k - 1]))
+          doc.fail(n["time"], shown + ".time", "times must increase strictly (entry " + std::to_string(k + 1) + ")");
+      d.direction = doc.vector(n, "direction", "dies[].direction");
+      allow_only({"time", "speed", "displacement", "direction"});
+    } else {
+      need("crank_radius"), need("rod_length"), need("rpm");
+      d.crank_radius = doc.number(n, "crank_radius", "dies[].crank_radius");
+      d.rod_length = doc.number(n, "rod_length", "dies[].rod_length");
+      if (!(d.rod_length > d.crank_radius))
+        doc.fail(n["rod_length"], shown + ".rod_length", "the connecting rod must be longer than the crank radius");
+      d.rpm = doc.number(n, "rpm", "dies[].rpm");
+      d.start_angle = doc.number(n, "start_angle", "dies[].start_angle");
+      d.direction = doc.vector(n, "direction", "dies[].direction");
+      allow_only({"crank_radius", "rod_length", "rpm", "start_angle", "direction"});
+    }
+    if (d.direction.norm() == 0.0) doc.fail(n["direction"], shown + ".direction", "the direction must not be zero");
+    d.friction = read_friction(doc, n, shown);
+    c.dies.push_back(d);
+  }
+}
+
+void read_time(const CheckedYaml& doc, Case& c) {
+  const YAML::Node t = doc.root()["time"];
+  if (!t) return;
+  TimeSpec& time = c.time;
+  time.enabled = true;
+  time.stroke_increment = doc.number(t, "stroke_increment", "time.stroke_increment");
+  time.max_displacement = doc.number(t, "max_displacement", "time.max_displacement");
+  time.min_step_fraction = doc.number(t, "min_step_fraction", "time.min_step_fraction");
+  time.max_cuts = doc.integer(t, "max_cuts", "time.max_cuts");
+  time.max_increments = doc.integer(t, "max_increments", "time.max_increments");
+  const YAML::Node stop = t["stop"];
+  if (!stop || stop.size() == 0)
+    doc.fail(t, "time.stop", "missing: give at least one stop criterion (stroke, gap, load or time)");
+  if (stop["stroke"]) {
+    time.final_stroke = doc.number(stop, "stroke", "time.stop.stroke");
+    time.stroke_die = -1;
+    for (std::size_t d = 0; d < c.dies.size(); ++d)
+      if (stop["die"] ? c.dies[d].name == stop["die"].Scalar() : c.dies[d].motion != "fixed") {
+        time.stroke_die = static_cast<int>(d);
+        break;
+      }
+    if (time.stroke_die < 0)
+      doc.fail(stop["die"] ? stop["die"] : stop, "time.stop.die",
+               stop["die"] ? "no die is named '" + stop["die"].Scalar() + "'" : "a stroke needs a moving die");
+  } else if (stop["die"]) doc.fail(stop["die"], "time.stop.die", "only used with 'stroke'");
+  if (stop["gap"]) {
+    time.final_gap = doc.number(stop, "gap", "time.stop.gap");
+    if (c.dies.size() != 2) doc.fail(stop["gap"], "time.stop.gap", "a die gap needs exactly two dies");
+  }
+  if (stop["load"]) time.max_load = doc.number(stop, "load", "time.stop.load");
+  if (stop["time"]) time.end_time = doc.number(stop, "time", "time.stop.time");
+}
+
+std::unique_ptr<material::Material> read_law(const CheckedYaml& doc);
+
 } // namespace
 
 Case read_case(const std::string& path) {
@@ -33,6 +176,8 @@ Case read_case(const std::string& path) {
   const YAML::Node output = root["output"] ? root["output"] : YAML::Node(YAML::NodeType::Map);
   c.output_directory = doc.text(output, "directory", "output.directory");
   c.write_vtk = doc.boolean(output, "vtk", "output.vtk");
+  c.vtk_every = doc.integer(output, "vtk_every", "output.vtk_every");
+  c.checkpoint_every = doc.integer(output, "checkpoint_every", "output.checkpoint_every");
   const YAML::Node solver = root["solver"] ? root["solver"] : YAML::Node(YAML::NodeType::Map);
   c.newton.tolerance = doc.number(solver, "tolerance", "solver.tolerance");
   c.newton.max_iterations = doc.integer(solver, "max_iterations", "solver.max_iterations");
@@ -40,13 +185,14 @@ Case read_case(const std::string& path) {
 
   const YAML::Node bodies = root["bodies"];
   if (bodies.size() > 1)
-    doc.fail(bodies, "bodies", "this release solves one body; several bodies need contact, which comes with a later release");
+    doc.fail(bodies, "bodies", "this release solves one body; contact between bodies comes with a later release");
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const YAML::Node b = bodies[i];
     const std::string shown = "bodies[" + std::to_string(i) + "]";
     BodySpec body;
     body.name = doc.text(b, "name", "bodies[].name");
     body.material_file = relative_to(path, doc.text(b, "material", "bodies[].material"));
+    if (b["temperature"]) body.temperature = doc.number(b, "temperature", "bodies[].temperature");
     const YAML::Node m = b["mesh"];
     MeshSpec& mesh = body.mesh;
     mesh.source = doc.at(m);
@@ -63,6 +209,11 @@ Case read_case(const std::string& path) {
         if ((mesh.size.array() <= 0.0).any()) doc.fail(m["size"], shown + ".mesh.size", "every edge length must be > 0 mm");
       } else {
         mesh.radius = doc.number(m, "radius", "bodies[].mesh.radius");
+        if (mesh.generate == "quarter_ring") {
+          mesh.inner_radius = doc.number(m, "inner_radius", "bodies[].mesh.inner_radius");
+          if (!(mesh.inner_radius < mesh.radius))
+            doc.fail(m["inner_radius"], shown + ".mesh.inner_radius", "must be smaller than the radius");
+        }
         mesh.height = doc.number(m, "height", "bodies[].mesh.height");
       }
     }
@@ -132,11 +283,25 @@ Case read_case(const std::string& path) {
     c.boundary.push_back(bc);
     c.boundary_body.push_back(body);
   }
+  read_dies(doc, c);
+  const YAML::Node contact = root["contact"] ? root["contact"] : YAML::Node(YAML::NodeType::Map);
+  c.contact.penalty = doc.number(contact, "penalty", "contact.penalty");
+  c.contact.regularisation = doc.number(contact, "regularisation", "contact.regularisation");
+  read_time(doc, c);
+  if (!c.dies.empty() && !c.time.enabled)
+    doc.fail(root["dies"], "dies", "dies need a 'time' section (stroke increment and stop criteria)");
   return c;
 }
 
-std::unique_ptr<material::Material> read_material(const std::string& path) {
+MaterialCard read_material(const std::string& path) {
   const CheckedYaml doc(path, material_schema());
+  MaterialCard card{read_law(doc), std::nullopt};
+  if (doc.root()["temperature"]) card.temperature = doc.number(doc.root(), "temperature", "temperature");
+  return card;
+}
+
+namespace {
+std::unique_ptr<material::Material> read_law(const CheckedYaml& doc) {
   const YAML::Node& root = doc.root();
   const std::string law = root["law"].Scalar();
   // Every number given must say where it comes from.
@@ -150,11 +315,22 @@ std::unique_ptr<material::Material> read_material(const std::string& path) {
     if (!root[key]) doc.fail(root, key, "missing: law '" + law + "' needs it");
     return doc.number(root, key, key);
   };
+  if (law == "hansel_spittel") {
+    material::HanselSpittel::Coefficients k;
+    k.A = needed("A");
+    auto optional = [&](const char* key) { return root[key] ? doc.number(root, key, key) : 0.0; };
+    k.m1 = optional("m1"), k.m2 = optional("m2"), k.m3 = optional("m3"), k.m4 = optional("m4");
+    k.m5 = optional("m5"), k.m7 = optional("m7"), k.m8 = optional("m8"), k.m9 = optional("m9");
+    return std::make_unique<material::HanselSpittel>(k, doc.number(root, "minimum_strain", "minimum_strain"),
+                                                     doc.number(root, "regularisation_rate", "regularisation_rate"));
+  }
   if (law == "newtonian") return std::make_unique<material::NortonHoff>(needed("viscosity"), 1.0, 0.0);
   if (law == "norton_hoff")
     return std::make_unique<material::NortonHoff>(needed("consistency"), needed("sensitivity"),
                                                   doc.number(root, "regularisation_rate", "regularisation_rate"));
   return std::make_unique<material::LinearElastic>(needed("young_modulus"), needed("poisson_ratio"));
 }
+
+} // namespace
 
 } // namespace anvil::scene

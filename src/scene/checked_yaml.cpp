@@ -104,6 +104,11 @@ void CheckedYaml::check_value(const YAML::Node& value, const KeySpec& k, const s
     for (const auto& c : value)
       if (!c.IsNull() && !parse_number(c)) wrong();
     return;
+  case KeyType::numbers:
+    if (!value.IsSequence() || value.size() == 0) wrong();
+    for (const auto& c : value)
+      if (!parse_number(c)) wrong();
+    return;
   case KeyType::integer:
   case KeyType::number: {
     const auto v = parse_number(value);
@@ -142,6 +147,12 @@ std::array<std::optional<double>, 3> CheckedYaml::partial_vector(const YAML::Nod
   if (!v) return out;
   for (int c = 0; c < 3; ++c)
     if (!v[c].IsNull()) out[c] = parse_number(v[c]);
+  return out;
+}
+
+std::vector<double> CheckedYaml::numbers(const YAML::Node& map, const std::string& key) const {
+  std::vector<double> out;
+  for (const auto& c : map[key]) out.push_back(*parse_number(c));
   return out;
 }
 

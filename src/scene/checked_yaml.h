@@ -34,6 +34,8 @@ public:
   /// A vector whose components may be null (~).
   std::array<std::optional<double>, 3> partial_vector(const YAML::Node& map, const std::string& key) const;
   mesh::Point vector(const YAML::Node& map, const std::string& key, const std::string& spec_path) const;
+  /// A list of numbers (checked at load); empty when absent.
+  std::vector<double> numbers(const YAML::Node& map, const std::string& key) const;
 
   /// Throws InputError "file:line: key 'shown': message".
   [[noreturn]] void fail(const YAML::Node& node, const std::string& shown_key, const std::string& message) const;

@@ -32,17 +32,31 @@ IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> pr
     : mesh_(mesh), prescribed_(std::move(prescribed)), dofs_(prescribed_), assembler_(mesh, dofs_),
       linear_solver_(kind, free_components(dofs_)), timers_(timers) {}
 
-IncrementSolver::Merit IncrementSolver::evaluate(const material::Material& law,
-                                                 const std::vector<double>& equivalent_strain,
-                                                 const Eigen::VectorXd& nodal_forces,
-                                                 const fem::BodyForce& body_force,
-                                                 const fem::BodyUnknowns& unknowns) {
-  Timers::Scope scope(timers_, "assembly");
-  fem::AssemblyResult r =
-      assembler_.assemble(mesh_, law, equivalent_strain, unknowns, nodal_forces, body_force, &tangent_);
-  residual_ = std::move(r.residual);
-  bad_element_ = r.bad_element;
-  Merit m{0.0, 0.0, r.bubble_residual_sq};
+IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns) {
+  Merit m{0.0, 0.0, 0.0};
+  {
+    Timers::Scope scope(timers_, "assembly");
+    fem::AssemblyResult r = assembler_.assemble(mesh_, problem.law, problem.states, unknowns, problem.nodal_forces,
+                                                problem.body_force, &tangent_);
+    residual_ = std::move(r.residual);
+    bad_element_ = r.bad_element;
+    m.bubble_sq = r.bubble_residual_sq;
+  }
+  if (problem.nodal_term) {
+    Timers::Scope scope(timers_, "contact");
+    nodal_term_residual_.setZero(residual_.size());
+    blocks_.clear();
+    problem.nodal_term->add(unknowns.nodal, nodal_term_residual_, &blocks_);
+    residual_ += nodal_term_residual_;
+    for (const NodeBlock& b : blocks_)
+      for (int i = 0; i < 3; ++i) {
+        const int row = dofs_.free_index(kDofsPerNode * b.node + i);
+        if (row < 0) continue;
+        for (int j = 0; j < 3; ++j)
+          if (const int col = dofs_.free_index(kDofsPerNode * b.node + j); col >= 0)
+            tangent_.coeffRef(row, col) += b.tangent(i, j);
+      }
+  } else nodal_term_residual_.resize(0);
   for (int d = 0; d < dofs_.dof_count(); ++d) {
     if (dofs_.free_index(d) < 0) continue;
     (d % kDofsPerNode == 3 ? m.flux_sq : m.force_sq) += residual_[d] * residual_[d];
@@ -54,12 +68,12 @@ double IncrementSolver::force_scale(const Eigen::VectorXd& nodal_forces) const {
   double reaction_sq = 0.0;
   for (int d = 0; d < dofs_.dof_count(); ++d)
     if (dofs_.free_index(d) < 0 && d % kDofsPerNode != 3) reaction_sq += residual_[d] * residual_[d];
-  return std::max({std::sqrt(reaction_sq), nodal_forces.norm(), 1e-300});
+  return std::max({std::sqrt(reaction_sq), nodal_forces.norm(), nodal_term_residual_.norm(), 1e-300});
 }
 
-NewtonReport IncrementSolver::solve(const material::Material& law, const std::vector<double>& equivalent_strain,
-                                    const Eigen::VectorXd& nodal_forces, const fem::BodyForce& body_force,
-                                    const NewtonSettings& settings, fem::BodyUnknowns& unknowns) {
+NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const NewtonSettings& settings,
+                                    fem::BodyUnknowns& unknowns) {
+  const material::Material& law = problem.law;
   NewtonReport report;
   const int n = dofs_.dof_count();
   const double body_volume = std::abs(mesh::volume(mesh_));
@@ -71,14 +85,19 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
   bool at_rest = true;
   for (int d = 0; d < n && at_rest; ++d)
     if (dofs_.free_index(d) >= 0 && unknowns.nodal[d] != 0.0) at_rest = false;
-  if (at_rest && !law.is_linear() && max_velocity(unknowns.nodal) > 0.0) {
-    const double reference_rate = max_velocity(unknowns.nodal) / std::cbrt(body_volume);
-    const material::NortonHoff newtonian(law.secant_viscosity(reference_rate, {}), 1.0, 0.0);
+  const double reference_velocity =
+      problem.reference_velocity > 0.0 ? problem.reference_velocity : max_velocity(unknowns.nodal);
+  if (at_rest && !law.is_linear() && reference_velocity > 0.0) {
+    const double reference_rate = reference_velocity / std::cbrt(body_volume);
+    const material::PointState state = problem.states.empty() ? material::PointState{} : problem.states.front();
+    const material::NortonHoff newtonian(law.secant_viscosity(reference_rate, state), 1.0, 0.0);
     NewtonSettings predictor = settings;
-    predictor.max_iterations = 1; // linear law: one Newton step is its solution
-    predictor.verbose = false;
+    predictor.max_iterations = 1; // linear law: one Newton step is its solution (with an active
+    predictor.verbose = false;    // contact set, one step of it is enough for a start)
     Timers::Scope scope(timers_, "effect nonlinear_law (predictor)");
-    solve(newtonian, equivalent_strain, nodal_forces, body_force, predictor, unknowns);
+    const IncrementProblem newtonian_problem{newtonian,          problem.states,     problem.nodal_forces,
+                                             problem.body_force, problem.nodal_term, reference_velocity};
+    solve(newtonian_problem, predictor, unknowns);
     if (settings.verbose) log::info("    predictor: Newtonian solve at viscosity %.4g MPa.s (rate %.3g 1/s)",
                                     newtonian.consistency(), reference_rate);
   }
@@ -91,8 +110,9 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
     return (m.force_sq + m.bubble_sq) / (force * force) + m.flux_sq / (flux * flux);
   };
 
-  Merit merit = evaluate(law, equivalent_strain, nodal_forces, body_force, unknowns);
-  double scale = force_scale(nodal_forces);
+  if (problem.nodal_term) problem.nodal_term->start(unknowns.nodal);
+  Merit merit = evaluate(problem, unknowns);
+  double scale = force_scale(problem.nodal_forces);
   Eigen::VectorXd rhs(dofs_.free_count()), solution(dofs_.free_count()), delta(n), bubble_delta;
   fem::BodyUnknowns trial;
   for (int it = 1; it <= settings.max_iterations; ++it) {
@@ -125,7 +145,7 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
     for (int cut = 0;; ++cut) {
       trial.nodal = unknowns.nodal + step * delta;
       trial.bubble = unknowns.bubble + step * bubble_delta;
-      merit = evaluate(law, equivalent_strain, nodal_forces, body_force, trial);
+      merit = evaluate(problem, trial);
       const double flux = std::max(std::max(velocity_start, max_velocity(trial.nodal)) * area, 1e-300);
       if (bad_element_ < 0 && relative(merit, scale, flux) <= (1.0 - 2e-4 * step) * relative(merit_start, scale, flux))
         break;
@@ -134,7 +154,7 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
     }
     unknowns.nodal.swap(trial.nodal);
     unknowns.bubble.swap(trial.bubble);
-    scale = force_scale(nodal_forces); // reactions follow the velocity field
+    scale = force_scale(problem.nodal_forces); // reactions follow the velocity field
     const double flux_scale = std::max(max_velocity(unknowns.nodal) * area, 1e-300);
 
     double velocity_sq = 0.0, delta_sq = 0.0;
@@ -147,18 +167,25 @@ NewtonReport IncrementSolver::solve(const material::Material& law, const std::ve
                                  std::sqrt(merit.flux_sq) / flux_scale,
                                  std::sqrt(delta_sq / std::max(velocity_sq, 1e-300)), step};
     report.iterations.push_back(record);
+    std::string note = problem.nodal_term ? problem.nodal_term->accept(unknowns.nodal) : std::string();
+    if (linear_solver_.iterations() > 0) note += "  (" + std::to_string(linear_solver_.iterations()) + " minres iterations)";
     if (settings.verbose)
       log::info("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g%s", it,
-                record.force_residual, record.flux_residual, record.increment, record.step,
-                linear_solver_.iterations() > 0
-                    ? ("  (" + std::to_string(linear_solver_.iterations()) + " minres iterations)").c_str()
-                    : "");
+                record.force_residual, record.flux_residual, record.increment, record.step, note.c_str());
     if (!std::isfinite(record.force_residual + record.flux_residual + record.increment)) {
       report.failure = "the residual is not finite";
       return report;
     }
     if (record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance &&
         record.increment <= settings.tolerance) {
+      if (problem.nodal_term && !problem.nodal_term->consistent(unknowns.nodal)) {
+        // The active set changed: the converged field belongs to another
+        // problem; go on from it with the new set.
+        merit = evaluate(problem, unknowns);
+        scale = force_scale(problem.nodal_forces);
+        if (settings.verbose) log::info("    active set changed at convergence: Newton goes on");
+        continue;
+      }
       report.converged = true;
       return report;
     }

@@ -7,7 +7,7 @@
 namespace anvil::log {
 
 /// Mirror every line into `path` (the run's log file) from now on.
-void open_file(const std::string& path);
+void open_file(const std::string& path, bool append = false);
 void close_file();
 /// Silence the terminal (tests); the file mirror, if open, still receives lines.
 void set_quiet(bool quiet);

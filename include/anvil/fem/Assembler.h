@@ -37,7 +37,7 @@ public:
   /// free dofs (pattern fixed at construction). Stores what the bubble
   /// update needs; call bubble_increment() after the linear solve.
   AssemblyResult assemble(const mesh::TetMesh& mesh, const material::Material& law,
-                          const std::vector<double>& equivalent_strain, const BodyUnknowns& unknowns,
+                          const std::vector<material::PointState>& states, const BodyUnknowns& unknowns,
                           const Eigen::VectorXd& nodal_forces, const BodyForce& body_force, SparseMatrix* tangent);
 
   /// Bubble increments (3 × elements) that go with the nodal increments

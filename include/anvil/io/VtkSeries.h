@@ -5,6 +5,7 @@
 #include "anvil/mesh/TetMesh.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -28,12 +29,28 @@ public:
   void write(int increment, double time, int body, const std::string& body_name, const mesh::TetMesh& mesh,
              const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields);
 
-private:
+  /// Writes a triangulated surface (a die) as `<name>_<part_name>_<increment>.vtu`.
+  void write_surface(int increment, double time, int part, const std::string& part_name,
+                     const std::vector<mesh::Point>& vertices, const std::vector<std::array<int, 3>>& faces);
+
+  /// One dataset of the collection.
   struct Entry {
     double time;
     int part;
     std::string file;
   };
+  const std::vector<Entry>& entries() const { return entries_; }
+  /// Continues an earlier series (resumed run): keeps the entries up to and
+  /// including `time` and rewrites the .pvd.
+  void resume(std::vector<Entry> entries, double time);
+
+private:
+  /// Writes one grid file and records it in the collection.
+  void write_grid(int increment, double time, int part, const std::string& part_name, const std::vector<mesh::Point>& points,
+                  int cell_type, int nodes_per_cell, const std::vector<long>& connectivity,
+                  const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields);
+  void write_collection() const;
+
   std::string directory_, name_;
   std::vector<Entry> entries_;
 };

@@ -42,6 +42,19 @@ public:
   /// ε̄̇ (1/s): the Newtonian law that best stands in for this one at that rate.
   virtual double secant_viscosity(double equivalent_rate, const PointState& state) const = 0;
 
+  /// Equivalent flow stress σ₀ = √(3/2)|s| (MPa) at equivalent rate ε̄̇ (1/s),
+  /// the σ₀ of Tresca friction: 3 η ε̄̇ for any law of secant viscosity η.
+  double flow_stress(double equivalent_rate, const PointState& state) const {
+    return 3.0 * secant_viscosity(equivalent_rate, state) * equivalent_rate;
+  }
+
+  /// Consistency K (MPa·s^m) of the viscoplastic form s = 2K(√3ε̄̇)^(m−1)ε̇,
+  /// the K of viscoplastic (Norton) friction; the shear modulus for elastic laws.
+  virtual double consistency(const PointState& state) const = 0;
+
+  /// Strain-rate sensitivity m (-): load ∝ velocity^m (0 for elastic laws).
+  virtual double rate_sensitivity(const PointState& state) const = 0;
+
   /// One line for the log: law and parameters with units.
   virtual std::string describe() const = 0;
 };
@@ -63,6 +76,8 @@ public:
     return viscosity(equivalent_rate);
   }
 
+  double consistency(const PointState&) const override { return consistency_; }
+  double rate_sensitivity(const PointState&) const override { return sensitivity_; }
   double consistency() const { return consistency_; }
   double sensitivity() const { return sensitivity_; }
   double regularisation_rate() const { return regularisation_rate_; }
@@ -90,11 +105,43 @@ public:
   double secant_viscosity(double, const PointState&) const override {
     return young_modulus_ / (2.0 * (1.0 + poisson_ratio_));
   }
+  double consistency(const PointState& state) const override { return secant_viscosity(0.0, state); }
+  double rate_sensitivity(const PointState&) const override { return 0.0; }
   std::string describe() const override;
 
 private:
   double young_modulus_;
   double poisson_ratio_;
+};
+
+/// Hansel-Spittel flow stress (isothermal use: T is a constant of the scene):
+///   σ̄ = A e^(m1 T) T^m9 ε̄^m2 e^(m4/ε̄) (1+ε̄)^(m5 T) e^(m7 ε̄) ε̄̇^(m3 + m8 T),
+/// T in °C, written as Norton-Hoff with m = m3 + m8 T and the strain- and
+/// temperature-dependent consistency K = σ̄(ε̄̇ = 1/√3) / √3, so that
+/// σ̄ = √3 K (√3 ε̄̇)^m. ε̄ is floored at `minimum_strain` (ε̄^m2 and e^(m4/ε̄)
+/// are singular at 0).
+class HanselSpittel final : public Material {
+public:
+  struct Coefficients {
+    double A = 0.0;                   ///< MPa
+    double m1 = 0, m2 = 0, m3 = 0, m4 = 0, m5 = 0, m7 = 0, m8 = 0, m9 = 0;
+  };
+  HanselSpittel(const Coefficients& c, double minimum_strain, double regularisation_rate);
+
+  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
+                         Mat6& tangent) const override;
+  std::string describe() const override;
+  bool is_linear() const override { return false; }
+  double secant_viscosity(double equivalent_rate, const PointState& state) const override;
+  double consistency(const PointState& state) const override;
+  double rate_sensitivity(const PointState& state) const override { return c_.m3 + c_.m8 * state.temperature; }
+  /// σ̄ (MPa) at ε̄, ε̄̇ (1/s, unregularised), T: the formula above.
+  double equivalent_stress(double strain, double rate, double temperature) const;
+
+private:
+  Coefficients c_;
+  double minimum_strain_;
+  double regularisation_rate_;
 };
 
 } // namespace anvil::material

@@ -19,4 +19,15 @@ TetMesh make_box(const Point& origin, const Point& size, const std::array<int, 3
 /// Boundary tags: 1 bottom (z = 0), 2 top (z = height), 3 lateral.
 TetMesh make_cylinder(double radius, double height, double element_size);
 
+/// Quarter cylinder x, y ≥ 0 of axis z, z in [0, height]: a structured box
+/// mapped onto the quarter disc (elliptical grid mapping), for models with
+/// two symmetry planes. Tags: 1 plane x = 0, 2 lateral, 3 plane y = 0,
+/// 5 bottom (z = 0), 6 top (z = height).
+TetMesh make_quarter_cylinder(double radius, double height, double element_size);
+
+/// Quarter ring x, y ≥ 0 between inner and outer radius, z in [0, height].
+/// Tags: 1 inner surface, 2 outer surface, 3 plane y = 0, 4 plane x = 0,
+/// 5 bottom, 6 top.
+TetMesh make_quarter_ring(double outer_radius, double inner_radius, double height, double element_size);
+
 } // namespace anvil::mesh

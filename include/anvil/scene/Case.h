@@ -1,10 +1,13 @@
 // A case file (scene) as read and checked, before anything is built.
 #pragma once
+#include "anvil/contact/Friction.h"
 #include "anvil/material/Material.h"
 #include "anvil/scene/BoundaryCondition.h"
 #include "anvil/solver/IncrementSolver.h"
 
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,9 +15,9 @@ namespace anvil::scene {
 
 struct MeshSpec {
   std::string file;     ///< absolute or relative to the working directory, resolved from the case's folder
-  std::string generate; ///< "box", "cylinder" or empty
+  std::string generate; ///< "box", "cylinder", "quarter_cylinder", "quarter_ring" or empty
   mesh::Point origin = mesh::Point::Zero(), size = mesh::Point::Zero();
-  double radius = 0.0, height = 0.0, element_size = 0.0; ///< mm
+  double radius = 0.0, inner_radius = 0.0, height = 0.0, element_size = 0.0; ///< mm
   std::string source;   ///< "file:line" of the mesh key
 };
 
@@ -22,6 +25,46 @@ struct BodySpec {
   std::string name;
   std::string material_file;
   MeshSpec mesh;
+  std::optional<double> temperature; ///< °C, isothermal; default: the material card's
+};
+
+/// A rigid die: surface, press motion and friction with the body.
+struct DieSpec {
+  std::string name;
+  std::string stl_file;            ///< STL surface (die frame = file coordinates), or empty for a plane
+  mesh::Point plane_point = mesh::Point::Zero();
+  Eigen::Vector3d plane_normal = Eigen::Vector3d::UnitZ(); ///< out of the die, towards the body
+  double plane_half_size = 0.0;    ///< mm, display only; 0 = twice the body size
+  std::string motion = "fixed";    ///< fixed, constant, table, crank, hydraulic
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero(); ///< constant, hydraulic (mm/s)
+  Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ(); ///< table, crank
+  std::vector<double> table_time, table_values;  ///< table: s and mm/s (speed) or mm (displacement)
+  bool table_is_speed = true;
+  double crank_radius = 0.0, rod_length = 0.0, rpm = 0.0, start_angle = 0.0; ///< mm, mm, 1/min, deg
+  double load_limit = std::numeric_limits<double>::infinity(); ///< N, hydraulic
+  contact::FrictionLaw friction;
+  std::string source;
+};
+
+/// The time loop (DESIGN §4). Absent from a case: one increment, no update.
+struct TimeSpec {
+  bool enabled = false;
+  double stroke_increment = 0.0;   ///< mm of travel of the fastest die per increment
+  double max_displacement = 0.2;   ///< largest nodal displacement per increment / local element size
+  double min_step_fraction = 0.1;  ///< contact events shorten Δt down to this fraction of the nominal one
+  int max_cuts = 5;                ///< Δt halvings after a Newton failure
+  int max_increments = 100000;
+  // Stop criteria; the first one reached ends the run.
+  double final_stroke = std::numeric_limits<double>::infinity(); ///< mm, of `stroke_die`
+  int stroke_die = 0;
+  double final_gap = 0.0;          ///< mm between the two dies along the press axis (z); 0 = none
+  double max_load = std::numeric_limits<double>::infinity(); ///< N, on any die
+  double end_time = std::numeric_limits<double>::infinity(); ///< s
+};
+
+struct ContactSpec {
+  double penalty = 1e3;        ///< ρ relative to σ₀ / v_ref (mean flow stress / press speed)
+  double regularisation = 1e-2; ///< friction w₀ relative to the fastest die speed
 };
 
 struct Case {
@@ -34,12 +77,23 @@ struct Case {
   std::vector<BodySpec> bodies;
   std::vector<BoundaryCondition> boundary;
   std::vector<int> boundary_body; ///< body index of each boundary condition
+  std::vector<DieSpec> dies;
+  ContactSpec contact;
+  TimeSpec time;
+  int vtk_every = 1;         ///< write the VTK series every N increments (and the last)
+  int checkpoint_every = 10; ///< HDF5 checkpoint every N increments (and the last); 0 = never
 };
 
 /// Reads and checks a case file. Throws InputError naming file, line, key.
 Case read_case(const std::string& path);
 
+/// A material card as read.
+struct MaterialCard {
+  std::unique_ptr<material::Material> law;
+  std::optional<double> temperature; ///< °C, the temperature the numbers hold at
+};
+
 /// Reads a material card, requiring a source for every number.
-std::unique_ptr<material::Material> read_material(const std::string& path);
+MaterialCard read_material(const std::string& path);
 
 } // namespace anvil::scene

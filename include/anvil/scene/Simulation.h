@@ -9,6 +9,7 @@ namespace anvil::scene {
 
 struct RunOptions {
   std::string output_directory; ///< overrides the case's when not empty
+  bool resume = false;          ///< continue from <output directory>/checkpoint.h5
 };
 
 /// Returns normally on success; throws InputError for bad input (before any

@@ -9,7 +9,7 @@
 
 namespace anvil::scene {
 
-enum class KeyType { integer, number, string, boolean, vector3, list, map };
+enum class KeyType { integer, number, string, boolean, vector3, numbers, list, map };
 
 struct KeySpec {
   std::string path;          ///< dotted; list items as "[]", e.g. "bodies[].mesh.file"

@@ -6,6 +6,7 @@
 #include "anvil/core/Timers.h"
 #include "anvil/fem/Assembler.h"
 #include "anvil/solver/LinearSolver.h"
+#include "anvil/solver/NodalTerm.h"
 
 #include <string>
 #include <vector>
@@ -32,16 +33,30 @@ struct NewtonReport {
   std::string failure; ///< why it stopped, when not converged
 };
 
+/// What one increment solves for, besides the unknowns.
+struct IncrementProblem {
+  const material::Material& law;
+  const std::vector<material::PointState>& states; ///< per element; empty = default state
+  const Eigen::VectorXd& nodal_forces;             ///< external nodal forces (N), 4 × nodes
+  fem::BodyForce body_force;
+  NodalTerm* nodal_term = nullptr;                 ///< contact with rigid dies, if any
+  double reference_velocity = 0.0;                 ///< mm/s; 0 = largest prescribed velocity
+};
+
 class IncrementSolver {
 public:
   /// `prescribed` marks dofs (4 × nodes, see DofMap) whose values are imposed.
   IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, LinearSolverKind kind, Timers& timers);
 
   /// Solves for the free unknowns of `unknowns` (prescribed entries are kept
-  /// as given). `nodal_forces`: external nodal forces (N), 4 × nodes.
-  NewtonReport solve(const material::Material& law, const std::vector<double>& equivalent_strain,
+  /// as given), starting from their current values.
+  NewtonReport solve(const IncrementProblem& problem, const NewtonSettings& settings, fem::BodyUnknowns& unknowns);
+  /// The same without contact: `nodal_forces` are external nodal forces (N), 4 × nodes.
+  NewtonReport solve(const material::Material& law, const std::vector<material::PointState>& states,
                      const Eigen::VectorXd& nodal_forces, const fem::BodyForce& body_force,
-                     const NewtonSettings& settings, fem::BodyUnknowns& unknowns);
+                     const NewtonSettings& settings, fem::BodyUnknowns& unknowns) {
+    return solve(IncrementProblem{law, states, nodal_forces, body_force}, settings, unknowns);
+  }
 
   /// Residual of the last evaluation, 4 × nodes: at prescribed dofs it is the
   /// reaction (N) that the constraint exerts, with the sign of an internal force.
@@ -58,10 +73,9 @@ private:
     double force_sq, flux_sq, bubble_sq;
   };
   /// Assembles residual and tangent at `unknowns`.
-  Merit evaluate(const material::Material& law, const std::vector<double>& equivalent_strain,
-                 const Eigen::VectorXd& nodal_forces, const fem::BodyForce& body_force,
-                 const fem::BodyUnknowns& unknowns);
-  /// Force scale (N): the larger of the reaction norm and the applied load norm.
+  Merit evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns);
+  /// Force scale (N): the largest of the reaction norm, the contact force
+  /// norm and the applied load norm.
   double force_scale(const Eigen::VectorXd& nodal_forces) const;
 
   const mesh::TetMesh& mesh_;
@@ -72,7 +86,10 @@ private:
   Timers& timers_;
   fem::SparseMatrix tangent_;
   Eigen::VectorXd residual_;
+  Eigen::VectorXd nodal_term_residual_; ///< the nodal term's part of residual_
+  std::vector<NodeBlock> blocks_;
   int bad_element_ = -1;
+  double merit_bubble_sq_ = 0.0;
 };
 
 } // namespace anvil::solver

@@ -1,0 +1,88 @@
+// Node-to-surface contact of one deformable body with rigid dies (DESIGN §3):
+// the die is the master, each boundary node a slave. Per candidate node the
+// velocity gap of the increment is
+//   h = −(v − v_die)·n − δ₀/Δt   (≤ 0 allowed, paper eq. 19 with a rigid master),
+// enforced by a penalty on the active nodes: contact pressure σn = ρ h.
+// Active set: for the first Newton iterations a node is active where h > 0
+// (semi-smooth Newton); then the set is frozen so Newton sees a smooth problem,
+// and once Newton has converged it is checked: a node with tensile contact
+// stress (h < 0) is released, a free node that penetrates (h > 0) is added, and
+// Newton goes on until the set no longer changes. Friction acts on active nodes.
+// The term is nodal (one 3×3 block per node), so the sparsity pattern of the
+// global system does not change with the active set.
+#pragma once
+#include "anvil/contact/Friction.h"
+#include "anvil/die/DieSurface.h"
+#include "anvil/solver/NodalTerm.h"
+
+#include <vector>
+
+namespace anvil::contact {
+
+/// A die as contact sees it during one increment.
+struct DieView {
+  const die::DieSurface* surface;
+  Eigen::Vector3d displacement; ///< of the die frame at the start of the increment (mm)
+  Eigen::Vector3d velocity;     ///< over the increment (mm/s)
+  FrictionLaw friction;
+};
+
+/// A boundary node near a die at the start of the increment.
+struct ContactCandidate {
+  int node;
+  int die;
+  Eigen::Vector3d normal; ///< die outward normal at the projection
+  double gap;             ///< δ₀, signed distance (mm)
+  double area;            ///< tributary boundary area (mm²)
+};
+
+/// Per-increment constants of the contact term.
+struct ContactIncrement {
+  double time_step;       ///< Δt (s)
+  double penalty;         ///< ρ (MPa·s/mm)
+  double regularisation;  ///< friction w₀ (mm/s)
+  double gap_tolerance;   ///< mm/s: the active set changes at convergence only beyond ±this
+  const std::vector<double>* flow_stress = nullptr; ///< σ₀ per node (MPa), for Tresca
+  const std::vector<double>* consistency = nullptr; ///< K per node, for Norton friction
+};
+
+class RigidContact final : public solver::NodalTerm {
+public:
+  /// Boundary nodes of `mesh` within `search_distance` (mm) of a die, each
+  /// paired with its nearest die; `node_area` is the tributary boundary area.
+  void search(const mesh::TetMesh& mesh, const std::vector<DieView>& dies, double search_distance);
+  void set_increment(const ContactIncrement& increment) { increment_ = increment; }
+
+  void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
+           std::vector<solver::NodeBlock>* blocks) const override;
+  void start(const Eigen::VectorXd& nodal) override;
+  std::string accept(const Eigen::VectorXd& nodal) override;
+  bool consistent(const Eigen::VectorXd& nodal) override;
+
+  /// Force each die receives from the body (N), at `nodal`.
+  std::vector<Eigen::Vector3d> die_forces(const Eigen::VectorXd& nodal) const;
+  /// Contact pressure σn (MPa) of candidate `i` at `nodal` (0 when released).
+  double pressure(int i, const Eigen::VectorXd& nodal) const;
+  /// Earliest time (s) at which a candidate that is not touching (gap above
+  /// `touching`, mm) reaches its die when moving with `nodal`; infinity if none.
+  double first_contact_time(const Eigen::VectorXd& nodal, double touching) const;
+
+  const std::vector<ContactCandidate>& candidates() const { return candidates_; }
+  int active_count() const;
+
+private:
+  double gap_velocity(const ContactCandidate& c, const Eigen::VectorXd& nodal) const;
+
+  std::vector<DieView> dies_;
+  std::vector<ContactCandidate> candidates_;
+  ContactIncrement increment_{};
+  std::vector<char> active_; ///< per candidate: the active set
+  bool frozen_ = false;      ///< active_ is used as is (else h > 0 decides)
+  int iterations_ = 0;       ///< Newton iterations since start()
+  static constexpr int kFreezeAfter = 3;
+};
+
+/// Tributary boundary area of each node (mm²): a third of each adjacent boundary face.
+std::vector<double> boundary_node_areas(const mesh::TetMesh& mesh);
+
+} // namespace anvil::contact

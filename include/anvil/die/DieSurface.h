@@ -1,0 +1,54 @@
+// The working surface of a rigid die (DESIGN §3): what contact asks of it is
+// the closest point to a body node, with the die's outward normal and the
+// signed distance. Geometry is held in the die's own frame; the time loop
+// translates queries by the die's displacement.
+#pragma once
+#include "anvil/mesh/TetMesh.h"
+
+#include <Eigen/Core>
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace anvil::die {
+
+/// Closest point of the die surface to a query point.
+struct SurfaceProjection {
+  mesh::Point point;       ///< closest point on the surface (mm)
+  Eigen::Vector3d normal;  ///< unit, out of the die material (towards the body side)
+  double distance = 0.0;   ///< signed: > 0 outside the die, < 0 penetrated (mm)
+};
+
+/// Triangles of a surface, for output.
+struct SurfaceTriangles {
+  std::vector<mesh::Point> vertices;
+  std::vector<std::array<int, 3>> faces;
+};
+
+class DieSurface {
+public:
+  virtual ~DieSurface() = default;
+  virtual SurfaceProjection project(const mesh::Point& x) const = 0;
+  /// The surface as triangles in the die frame (what the VTK series shows).
+  virtual const SurfaceTriangles& triangles() const = 0;
+  /// One line for the log.
+  virtual std::string describe() const = 0;
+};
+
+/// An analytic flat die: the plane through `point` with outward normal
+/// `normal`; shown in the output as a square of side 2 × `half_size`.
+class PlaneSurface final : public DieSurface {
+public:
+  PlaneSurface(const mesh::Point& point, const Eigen::Vector3d& normal, double half_size);
+  SurfaceProjection project(const mesh::Point& x) const override;
+  const SurfaceTriangles& triangles() const override { return triangles_; }
+  std::string describe() const override;
+
+private:
+  mesh::Point point_;
+  Eigen::Vector3d normal_;
+  SurfaceTriangles triangles_;
+};
+
+} // namespace anvil::die

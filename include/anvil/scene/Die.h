@@ -1,0 +1,34 @@
+// A rigid die of a scene, built from its DieSpec: surface, press motion,
+// friction, and how it advances in time (DESIGN §4).
+#pragma once
+#include "anvil/die/DieSurface.h"
+#include "anvil/die/PressKinematics.h"
+#include "anvil/scene/Case.h"
+#include "anvil/scene/RunState.h"
+
+#include <memory>
+
+namespace anvil::scene {
+
+struct Die {
+  std::string name;
+  std::unique_ptr<die::DieSurface> surface;
+  std::unique_ptr<die::PressKinematics> kinematics; ///< null for a fixed die
+  double load_limit = std::numeric_limits<double>::infinity(); ///< N (hydraulic)
+  contact::FrictionLaw friction;
+
+  /// Mean velocity over [t, t + Δt] from state `s` (mm/s).
+  Eigen::Vector3d velocity(const DieState& s, double time_step) const;
+  /// Moves the die by one increment of length Δt.
+  void advance(DieState& s, double time_step) const;
+  /// Load-limited press: after an increment with load `resisting` (N, the
+  /// load component against the motion), scales press speed so the load
+  /// would be at the limit, for a body of rate sensitivity m (load ∝ v^m).
+  void limit_speed(DieState& s, double resisting, double rate_sensitivity) const;
+};
+
+/// Builds a die; `body_size` (mm) sizes the display square of plane dies.
+/// Throws InputError naming the case line for a bad STL surface.
+Die build_die(const DieSpec& spec, double body_size);
+
+} // namespace anvil::scene

@@ -1,0 +1,60 @@
+// Everything the time loop carries from one increment to the next, and
+// nothing else: what an HDF5 checkpoint stores, so that a resumed run
+// continues exactly (bit for bit) as the uninterrupted one would.
+#pragma once
+#include "anvil/fem/Assembler.h"
+#include "anvil/io/VtkSeries.h"
+#include "anvil/mesh/TetMesh.h"
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace anvil::scene {
+
+/// Where a die is: press time runs at `speed_factor` × real time (< 1 when a
+/// hydraulic press is held back by its load limit).
+struct DieState {
+  double press_time = 0.0;  ///< s
+  double speed_factor = 1.0;
+  double stroke = 0.0;      ///< mm travelled
+  Eigen::Vector3d displacement = Eigen::Vector3d::Zero(); ///< mm, of the die frame
+};
+
+/// One line of loads.csv: the load on a die (or velocity plate) at the end of an increment.
+struct LoadRecord {
+  int increment;
+  double time;    ///< s
+  int surface;    ///< index into the run's load surfaces (dies, then velocity plates)
+  double stroke;  ///< mm
+  Eigen::Vector3d force; ///< N, exerted by the body on the surface
+};
+
+/// Volume budget (mm³): where volume went, by cause.
+struct VolumeBudget {
+  double initial = 0.0;
+  double solver = 0.0;      ///< change from x += Δt v (incompressibility error)
+  double projection = 0.0;  ///< change from putting contact nodes back on the dies
+  double largest_increment = 0.0; ///< largest |relative change| in one increment
+};
+
+struct RunState {
+  int increment = 0;
+  double time = 0.0; ///< s
+  mesh::TetMesh mesh;
+  fem::BodyUnknowns unknowns;
+  std::vector<double> equivalent_strain; ///< ε̄ per element
+  std::vector<DieState> dies;
+  std::vector<LoadRecord> loads;
+  VolumeBudget volume;
+  int newton_iterations = 0; ///< total over the run
+  std::vector<io::VtkSeries::Entry> outputs;
+};
+
+/// Writes `state` to `path` through a temporary file and a rename, so a
+/// reader never sees a torn checkpoint. Throws RunError.
+void write_checkpoint(const std::string& path, const RunState& state);
+/// Reads a checkpoint written by write_checkpoint. Throws InputError.
+RunState read_checkpoint(const std::string& path);
+
+} // namespace anvil::scene

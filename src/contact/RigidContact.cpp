@@ -1,0 +1,138 @@
+#include "anvil/contact/RigidContact.h"
+
+#include "anvil/fem/DofMap.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <limits>
+
+namespace anvil::contact {
+
+using fem::kDofsPerNode;
+
+std::vector<double> boundary_node_areas(const mesh::TetMesh& mesh) {
+  std::vector<double> area(mesh.node_count(), 0.0);
+  for (const mesh::Triangle& f : mesh.boundary_faces) {
+    const mesh::Point &a = mesh.nodes[f[0]], &b = mesh.nodes[f[1]], &c = mesh.nodes[f[2]];
+    const double third = (b - a).cross(c - a).norm() / 6.0;
+    for (int k = 0; k < 3; ++k) area[f[k]] += third;
+  }
+  return area;
+}
+
+void RigidContact::search(const mesh::TetMesh& mesh, const std::vector<DieView>& dies, double search_distance) {
+  dies_ = dies;
+  candidates_.clear();
+  const std::vector<double> area = boundary_node_areas(mesh);
+  for (int node = 0; node < mesh.node_count(); ++node) {
+    if (area[node] == 0.0) continue; // interior node
+    ContactCandidate best{node, -1, Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity(), area[node]};
+    for (std::size_t d = 0; d < dies.size(); ++d) {
+      const die::SurfaceProjection p = dies[d].surface->project(mesh.nodes[node] - dies[d].displacement);
+      if (p.distance < search_distance && p.distance < best.gap) {
+        best.die = static_cast<int>(d);
+        best.gap = p.distance;
+        best.normal = p.normal;
+      }
+    }
+    if (best.die >= 0) candidates_.push_back(best);
+  }
+  active_.assign(candidates_.size(), 0);
+}
+
+double RigidContact::gap_velocity(const ContactCandidate& c, const Eigen::VectorXd& nodal) const {
+  const Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * c.node) - dies_[c.die].velocity;
+  return -relative.dot(c.normal) - c.gap / increment_.time_step;
+}
+
+double RigidContact::pressure(int i, const Eigen::VectorXd& nodal) const {
+  return increment_.penalty * std::max(gap_velocity(candidates_[i], nodal), 0.0);
+}
+
+void RigidContact::start(const Eigen::VectorXd& nodal) {
+  frozen_ = false;
+  iterations_ = 0;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) active_[i] = gap_velocity(candidates_[i], nodal) > 0.0;
+}
+
+bool RigidContact::consistent(const Eigen::VectorXd& nodal) {
+  // A node changes side only beyond the tolerance: at the edge of the contact
+  // zone the exact solution has h = 0 and σn = 0 together, and a strict test
+  // would cycle between the two sets.
+  bool same = true;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const double h = gap_velocity(candidates_[i], nodal);
+    const char now = active_[i] ? h > -increment_.gap_tolerance : h > increment_.gap_tolerance;
+    same = same && now == active_[i];
+    active_[i] = now;
+  }
+  return same;
+}
+
+void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
+                       std::vector<solver::NodeBlock>* blocks) const {
+  const double rho = increment_.penalty;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const ContactCandidate& c = candidates_[i];
+    const double h = gap_velocity(c, nodal);
+    if (frozen_ ? !active_[i] : h <= 0.0) continue;
+    const Eigen::Vector3d& n = c.normal;
+    const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - n * n.transpose();
+    const Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * c.node) - dies_[c.die].velocity;
+    // Normal: potential ½ ρ A h⁺², so r = −A ρ h n and ∂r/∂v = A ρ n nᵀ (∂h/∂v = −n).
+    const double sigma_n = rho * h; // may be tensile while the set is frozen; checked at convergence
+    Eigen::Vector3d r = -c.area * sigma_n * n;
+    Eigen::Matrix3d k = c.area * rho * n * n.transpose();
+    const FrictionLaw& law = dies_[c.die].friction;
+    if (law.kind != FrictionKind::frictionless) {
+      const FrictionStress f = friction_stress(
+          law, {tangent_projector * relative, sigma_n, (*increment_.flow_stress)[c.node],
+                (*increment_.consistency)[c.node], increment_.regularisation, rho});
+      r += c.area * f.stress;
+      k += c.area * (f.d_sliding * tangent_projector - rho * f.d_normal_pressure * n.transpose());
+    }
+    residual.segment<3>(kDofsPerNode * c.node) += r;
+    if (blocks) blocks->push_back({c.node, k});
+  }
+}
+
+std::string RigidContact::accept(const Eigen::VectorXd& nodal) {
+  int activated = 0, released = 0, active = 0;
+  for (std::size_t i = 0; i < candidates_.size(); ++i) {
+    const char now = frozen_ ? active_[i] : gap_velocity(candidates_[i], nodal) > 0.0;
+    activated += now && !active_[i];
+    released += !now && active_[i];
+    active += now;
+    active_[i] = now;
+  }
+  frozen_ = ++iterations_ >= kFreezeAfter;
+  return "  contact " + std::to_string(active) + " nodes (+" + std::to_string(activated) + " -" +
+         std::to_string(released) + ")" + (frozen_ ? " frozen" : "");
+}
+
+int RigidContact::active_count() const {
+  int n = 0;
+  for (char a : active_) n += a;
+  return n;
+}
+
+std::vector<Eigen::Vector3d> RigidContact::die_forces(const Eigen::VectorXd& nodal) const {
+  // The die receives minus the force on the body, i.e. the term's residual.
+  Eigen::VectorXd residual = Eigen::VectorXd::Zero(nodal.size());
+  std::vector<Eigen::Vector3d> force(dies_.size(), Eigen::Vector3d::Zero());
+  add(nodal, residual, nullptr);
+  for (const ContactCandidate& c : candidates_) force[c.die] += residual.segment<3>(kDofsPerNode * c.node);
+  return force;
+}
+
+double RigidContact::first_contact_time(const Eigen::VectorXd& nodal, double touching) const {
+  double first = std::numeric_limits<double>::infinity();
+  for (const ContactCandidate& c : candidates_) {
+    if (c.gap <= touching) continue;
+    const double closing = -(nodal.segment<3>(kDofsPerNode * c.node) - dies_[c.die].velocity).dot(c.normal);
+    if (closing > 0.0) first = std::min(first, c.gap / closing);
+  }
+  return first;
+}
+
+} // namespace anvil::contact

@@ -1,0 +1,32 @@
+#include "anvil/die/DieSurface.h"
+
+#include <Eigen/Geometry>
+#include <cstdio>
+
+namespace anvil::die {
+
+PlaneSurface::PlaneSurface(const mesh::Point& point, const Eigen::Vector3d& normal, double half_size)
+    : point_(point), normal_(normal.normalized()) {
+  // Two in-plane unit vectors for the display square.
+  const Eigen::Vector3d helper = std::abs(normal_.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d u = normal_.cross(helper).normalized(), w = normal_.cross(u);
+  for (int corner = 0; corner < 4; ++corner) {
+    const double a = (corner == 0 || corner == 3) ? -1.0 : 1.0, b = corner < 2 ? -1.0 : 1.0;
+    triangles_.vertices.push_back(point_ + half_size * (a * u + b * w));
+  }
+  triangles_.faces = {{0, 1, 2}, {0, 2, 3}};
+}
+
+SurfaceProjection PlaneSurface::project(const mesh::Point& x) const {
+  const double distance = (x - point_).dot(normal_);
+  return {x - distance * normal_, normal_, distance};
+}
+
+std::string PlaneSurface::describe() const {
+  char text[200];
+  std::snprintf(text, sizeof text, "plane through (%g, %g, %g) mm, normal (%g, %g, %g)", point_.x(), point_.y(),
+                point_.z(), normal_.x(), normal_.y(), normal_.z());
+  return text;
+}
+
+} // namespace anvil::die

@@ -1,0 +1,130 @@
+// STL die surfaces with CGAL: soup reading, repair, orientation, AABB tree
+// closest-point search (TECH-NOTES §2). The only translation unit that sees
+// CGAL; built in its own library so that -frounding-math stays here.
+#include "anvil/die/StlSurface.h"
+
+#include "anvil/core/error.h"
+#include "anvil/core/log.h"
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace anvil::die {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point3 = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point3>;
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+class TriangulatedSurface final : public DieSurface {
+public:
+  TriangulatedSurface(Mesh mesh, std::string description)
+      : mesh_(std::move(mesh)), description_(std::move(description)) {
+    for (auto v : mesh_.vertices()) {
+      const Point3& p = mesh_.point(v);
+      triangles_.vertices.emplace_back(p.x(), p.y(), p.z());
+    }
+    normals_.resize(mesh_.number_of_faces());
+    for (auto f : mesh_.faces()) {
+      std::array<int, 3> ids{};
+      int k = 0;
+      for (auto v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_)) ids[k++] = static_cast<int>(v.idx());
+      triangles_.faces.push_back(ids);
+      const mesh::Point &a = triangles_.vertices[ids[0]], &b = triangles_.vertices[ids[1]],
+                        &c = triangles_.vertices[ids[2]];
+      normals_[f.idx()] = (b - a).cross(c - a).normalized();
+    }
+    tree_.insert(faces(mesh_).first, faces(mesh_).second, mesh_);
+    tree_.build();
+    tree_.accelerate_distance_queries();
+  }
+
+  SurfaceProjection project(const mesh::Point& x) const override {
+    const auto [closest, face] = tree_.closest_point_and_primitive(Point3(x.x(), x.y(), x.z()));
+    const mesh::Point point(closest.x(), closest.y(), closest.z());
+    const Eigen::Vector3d& facet_normal = normals_[face.idx()];
+    const Eigen::Vector3d offset = x - point;
+    const double distance = offset.norm();
+    // Inside a facet the offset is along its normal; on an edge or a vertex it
+    // is not, and the offset direction is the normal of the surface there.
+    // The side (sign) comes from the facet the closest point belongs to.
+    const double side = offset.dot(facet_normal) >= 0.0 ? 1.0 : -1.0;
+    if (distance < 1e-12 * (1.0 + x.norm())) return {point, facet_normal, 0.0};
+    return {point, side * offset / distance, side * distance};
+  }
+
+  const SurfaceTriangles& triangles() const override { return triangles_; }
+  std::string describe() const override { return description_; }
+
+private:
+  Mesh mesh_;
+  Tree tree_;
+  std::vector<Eigen::Vector3d> normals_;
+  SurfaceTriangles triangles_;
+  std::string description_;
+};
+
+} // namespace
+
+std::unique_ptr<DieSurface> read_stl_surface(const std::string& path, const std::string& source) {
+  const std::string at = source + ": STL die '" + path + "'";
+  if (!std::filesystem::exists(path)) throw InputError(at + ": file not found");
+  std::vector<Point3> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  if (!CGAL::IO::read_polygon_soup(path, points, triangles) || triangles.empty())
+    throw InputError(at + ": not a readable STL surface (ASCII or binary) with at least one facet");
+  const std::size_t read = triangles.size();
+  // Degenerate (zero-area, repeated-vertex) and duplicate facets are dropped and reported.
+  std::vector<std::array<std::size_t, 3>> kept;
+  for (const auto& t : triangles)
+    if (!CGAL::collinear(points[t[0]], points[t[1]], points[t[2]])) kept.push_back(t);
+  const std::size_t degenerate = read - kept.size();
+  triangles.swap(kept);
+  PMP::repair_polygon_soup(points, triangles);
+  if (triangles.empty()) throw InputError(at + ": every facet is degenerate");
+  if (degenerate > 0 || triangles.size() + degenerate != read)
+    log::info("  %s: %zu degenerate and %zu duplicate facets dropped", at.c_str(), degenerate,
+              read - degenerate - triangles.size());
+  // Consistent orientation; remember how many facets it had to flip, to keep
+  // the file's sense for open surfaces.
+  const auto before = triangles;
+  if (!PMP::orient_polygon_soup(points, triangles))
+    log::info("  %s: non-manifold vertices were duplicated to orient the surface", at.c_str());
+  std::size_t flipped = 0;
+  for (std::size_t i = 0; i < std::min(before.size(), triangles.size()); ++i) flipped += before[i] != triangles[i];
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);
+  if (!CGAL::is_triangle_mesh(mesh) || mesh.number_of_faces() == 0)
+    throw InputError(at + ": the facets do not form a triangle surface");
+  const bool closed = CGAL::is_closed(mesh);
+  std::string orientation;
+  if (closed) {
+    if (!PMP::is_outward_oriented(mesh)) PMP::reverse_face_orientations(mesh);
+    orientation = "closed, oriented outwards";
+  } else {
+    if (2 * flipped > triangles.size()) PMP::reverse_face_orientations(mesh);
+    orientation = "open, normals as in the file (" + std::to_string(std::min(flipped, triangles.size() - flipped)) +
+                  " facets re-oriented to agree)";
+  }
+  char text[400];
+  std::snprintf(text, sizeof text, "STL %s: %zu facets, %zu vertices, %s",
+                std::filesystem::path(path).filename().c_str(), static_cast<std::size_t>(mesh.number_of_faces()),
+                static_cast<std::size_t>(mesh.number_of_vertices()), orientation.c_str());
+  return std::make_unique<TriangulatedSurface>(std::move(mesh), text);
+}
+
+} // namespace anvil::die

@@ -1,0 +1,179 @@
+// HDF5 checkpoint of a RunState (C API, numbered calls, TECH-NOTES §5).
+// Layout: datasets /nodes (n×3), /tets (m×4), /boundary_faces (f×3),
+// /boundary_tags, /nodal (4n), /bubble (3m), /equivalent_strain (m),
+// /dies (d×7), /loads (r×8), /outputs (k×2) with /output_files (strings),
+// scalar attributes on the root group.
+#include "anvil/core/error.h"
+#include "anvil/io/atomic_file.h"
+#include "anvil/scene/RunState.h"
+
+#include <hdf5.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+namespace anvil::scene {
+namespace {
+
+/// Closes an HDF5 handle with the right call when it goes out of scope.
+class Handle {
+public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  operator hid_t() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+void write_array(hid_t file, const char* name, hid_t type, const void* data, hsize_t rows, hsize_t cols) {
+  const hsize_t dims[2] = {rows, cols};
+  Handle space(H5Screate_simple(cols ? 2 : 1, dims, nullptr), H5Sclose);
+  Handle set(H5Dcreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  if (!set.valid() || (rows > 0 && H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0))
+    throw RunError(std::string("checkpoint: cannot write dataset ") + name);
+}
+
+/// Reads a dataset into `out` (resized), checking its element count.
+template <class T>
+void read_array(hid_t file, const std::string& path, const char* name, hid_t type, std::vector<T>& out,
+                hsize_t per_row) {
+  Handle set(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose);
+  if (!set.valid()) throw InputError(path + ": checkpoint has no dataset '" + name + "'");
+  Handle space(H5Dget_space(set), H5Sclose);
+  const hssize_t count = H5Sget_simple_extent_npoints(space);
+  if (count < 0 || (per_row && count % static_cast<hssize_t>(per_row)))
+    throw InputError(path + ": checkpoint dataset '" + name + "' has a wrong size");
+  out.resize(static_cast<std::size_t>(count));
+  if (count > 0 && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+    throw InputError(path + ": cannot read checkpoint dataset '" + name + "'");
+}
+
+void write_attribute(hid_t file, const char* name, hid_t type, const void* value) {
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  Handle attribute(H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!attribute.valid() || H5Awrite(attribute, type, value) < 0)
+    throw RunError(std::string("checkpoint: cannot write attribute ") + name);
+}
+
+void read_attribute(hid_t file, const std::string& path, const char* name, hid_t type, void* value) {
+  Handle attribute(H5Aopen(file, name, H5P_DEFAULT), H5Aclose);
+  if (!attribute.valid() || H5Aread(attribute, type, value) < 0)
+    throw InputError(path + ": checkpoint has no attribute '" + name + "'");
+}
+
+} // namespace
+
+void write_checkpoint(const std::string& path, const RunState& s) {
+  const std::string temporary = path + ".tmp";
+  {
+    Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+    if (!file.valid()) throw RunError(temporary + ": cannot create the checkpoint file");
+    const int format = 1;
+    write_attribute(file, "format", H5T_NATIVE_INT, &format);
+    write_attribute(file, "increment", H5T_NATIVE_INT, &s.increment);
+    write_attribute(file, "time", H5T_NATIVE_DOUBLE, &s.time);
+    write_attribute(file, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
+    const double volume[4] = {s.volume.initial, s.volume.solver, s.volume.projection, s.volume.largest_increment};
+    write_array(file, "volume", H5T_NATIVE_DOUBLE, volume, 4, 0);
+
+    std::vector<double> nodes;
+    for (const mesh::Point& p : s.mesh.nodes) nodes.insert(nodes.end(), p.data(), p.data() + 3);
+    write_array(file, "nodes", H5T_NATIVE_DOUBLE, nodes.data(), s.mesh.nodes.size(), 3);
+    std::vector<long long> tets, faces;
+    for (const mesh::Tet& t : s.mesh.tets) tets.insert(tets.end(), t.begin(), t.end());
+    for (const mesh::Triangle& f : s.mesh.boundary_faces) faces.insert(faces.end(), f.begin(), f.end());
+    write_array(file, "tets", H5T_NATIVE_LLONG, tets.data(), s.mesh.tets.size(), 4);
+    write_array(file, "boundary_faces", H5T_NATIVE_LLONG, faces.data(), s.mesh.boundary_faces.size(), 3);
+    write_array(file, "boundary_tags", H5T_NATIVE_INT, s.mesh.boundary_tags.data(), s.mesh.boundary_tags.size(), 0);
+    write_array(file, "nodal", H5T_NATIVE_DOUBLE, s.unknowns.nodal.data(), s.unknowns.nodal.size(), 0);
+    write_array(file, "bubble", H5T_NATIVE_DOUBLE, s.unknowns.bubble.data(), s.unknowns.bubble.size(), 0);
+    write_array(file, "equivalent_strain", H5T_NATIVE_DOUBLE, s.equivalent_strain.data(), s.equivalent_strain.size(), 0);
+
+    std::vector<double> dies;
+    for (const DieState& d : s.dies)
+      dies.insert(dies.end(), {d.press_time, d.speed_factor, d.stroke, d.displacement.x(), d.displacement.y(),
+                               d.displacement.z()});
+    write_array(file, "dies", H5T_NATIVE_DOUBLE, dies.data(), s.dies.size(), 6);
+    std::vector<double> loads;
+    for (const LoadRecord& r : s.loads)
+      loads.insert(loads.end(), {double(r.increment), r.time, double(r.surface), r.stroke, r.force.x(), r.force.y(),
+                                 r.force.z()});
+    write_array(file, "loads", H5T_NATIVE_DOUBLE, loads.data(), s.loads.size(), 7);
+    std::vector<double> outputs;
+    std::string files;
+    for (const io::VtkSeries::Entry& e : s.outputs) {
+      outputs.insert(outputs.end(), {e.time, double(e.part)});
+      files += e.file + '\n';
+    }
+    write_array(file, "outputs", H5T_NATIVE_DOUBLE, outputs.data(), s.outputs.size(), 2);
+    write_array(file, "output_files", H5T_NATIVE_CHAR, files.data(), files.size(), 0);
+    if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) throw RunError(temporary + ": cannot flush the checkpoint");
+  }
+  io::commit_temporary(path);
+}
+
+RunState read_checkpoint(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path + ": no checkpoint to resume from");
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) throw InputError(path + ": not a readable HDF5 checkpoint");
+  RunState s;
+  int format = 0;
+  read_attribute(file, path, "format", H5T_NATIVE_INT, &format);
+  if (format != 1) throw InputError(path + ": checkpoint format " + std::to_string(format) + ", expected 1");
+  read_attribute(file, path, "increment", H5T_NATIVE_INT, &s.increment);
+  read_attribute(file, path, "time", H5T_NATIVE_DOUBLE, &s.time);
+  read_attribute(file, path, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
+  std::vector<double> volume, nodes, nodal, bubble, dies, loads, outputs;
+  std::vector<long long> tets, faces;
+  std::vector<char> files;
+  read_array(file, path, "volume", H5T_NATIVE_DOUBLE, volume, 4);
+  s.volume = {volume[0], volume[1], volume[2], volume[3]};
+  read_array(file, path, "nodes", H5T_NATIVE_DOUBLE, nodes, 3);
+  for (std::size_t i = 0; i < nodes.size(); i += 3) s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);
+  read_array(file, path, "tets", H5T_NATIVE_LLONG, tets, 4);
+  for (std::size_t i = 0; i < tets.size(); i += 4)
+    s.mesh.tets.push_back({int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])});
+  read_array(file, path, "boundary_faces", H5T_NATIVE_LLONG, faces, 3);
+  for (std::size_t i = 0; i < faces.size(); i += 3)
+    s.mesh.boundary_faces.push_back({int(faces[i]), int(faces[i + 1]), int(faces[i + 2])});
+  read_array(file, path, "boundary_tags", H5T_NATIVE_INT, s.mesh.boundary_tags, 1);
+  read_array(file, path, "nodal", H5T_NATIVE_DOUBLE, nodal, 4);
+  read_array(file, path, "bubble", H5T_NATIVE_DOUBLE, bubble, 3);
+  s.unknowns.nodal = Eigen::Map<Eigen::VectorXd>(nodal.data(), static_cast<long>(nodal.size()));
+  s.unknowns.bubble = Eigen::Map<Eigen::VectorXd>(bubble.data(), static_cast<long>(bubble.size()));
+  read_array(file, path, "equivalent_strain", H5T_NATIVE_DOUBLE, s.equivalent_strain, 1);
+  read_array(file, path, "dies", H5T_NATIVE_DOUBLE, dies, 6);
+  for (std::size_t i = 0; i < dies.size(); i += 6)
+    s.dies.push_back({dies[i], dies[i + 1], dies[i + 2], {dies[i + 3], dies[i + 4], dies[i + 5]}});
+  read_array(file, path, "loads", H5T_NATIVE_DOUBLE, loads, 7);
+  for (std::size_t i = 0; i < loads.size(); i += 7)
+    s.loads.push_back({int(loads[i]), loads[i + 1], int(loads[i + 2]), loads[i + 3], {loads[i + 4], loads[i + 5], loads[i + 6]}});
+  read_array(file, path, "outputs", H5T_NATIVE_DOUBLE, outputs, 2);
+  read_array(file, path, "output_files", H5T_NATIVE_CHAR, files, 1);
+  std::string name;
+  std::size_t k = 0;
+  for (char ch : files) {
+    if (ch != '\n') {
+      name += ch;
+      continue;
+    }
+    if (2 * k + 1 >= outputs.size()) throw InputError(path + ": checkpoint output list is inconsistent");
+    s.outputs.push_back({outputs[2 * k], int(outputs[2 * k + 1]), name});
+    name.clear();
+    ++k;
+  }
+  if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
+      s.equivalent_strain.size() != s.mesh.tets.size() || s.mesh.boundary_tags.size() != s.mesh.boundary_faces.size())
+    throw InputError(path + ": checkpoint arrays do not match the mesh");
+  return s;
+}
+
+} // namespace anvil::scene

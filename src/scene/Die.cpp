@@ -1,0 +1,54 @@
+#include "anvil/scene/Die.h"
+
+#include "anvil/core/error.h"
+#include "anvil/die/StlSurface.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace anvil::scene {
+
+Eigen::Vector3d Die::velocity(const DieState& s, double time_step) const {
+  if (!kinematics) return Eigen::Vector3d::Zero();
+  const double next = s.press_time + s.speed_factor * time_step;
+  return (kinematics->displacement(next) - kinematics->displacement(s.press_time)) / time_step;
+}
+
+void Die::advance(DieState& s, double time_step) const {
+  if (!kinematics) return;
+  s.press_time += s.speed_factor * time_step;
+  const Eigen::Vector3d next = kinematics->displacement(s.press_time);
+  s.stroke += (next - s.displacement).norm();
+  s.displacement = next;
+}
+
+void Die::limit_speed(DieState& s, double resisting, double rate_sensitivity) const {
+  if (!std::isfinite(load_limit) || resisting <= 0.0) return;
+  // Load ∝ v^m, so the speed that gives the limit is v (limit/load)^(1/m);
+  // m is floored so that a near-rigid-plastic body does not stop the press dead.
+  const double m = std::max(rate_sensitivity, 0.05);
+  s.speed_factor = std::min(1.0, s.speed_factor * std::pow(load_limit / resisting, 1.0 / m));
+}
+
+Die build_die(const DieSpec& spec, double body_size) {
+  Die d;
+  d.name = spec.name;
+  d.friction = spec.friction;
+  if (!spec.stl_file.empty()) d.surface = die::read_stl_surface(spec.stl_file, spec.source);
+  else
+    d.surface = std::make_unique<die::PlaneSurface>(
+        spec.plane_point, spec.plane_normal, spec.plane_half_size > 0.0 ? spec.plane_half_size : body_size);
+  if (spec.motion == "constant" || spec.motion == "hydraulic")
+    d.kinematics = std::make_unique<die::ConstantVelocity>(spec.velocity);
+  else if (spec.motion == "table")
+    d.kinematics = std::make_unique<die::TableMotion>(
+        spec.direction, spec.table_time, spec.table_values,
+        spec.table_is_speed ? die::TableMotion::Quantity::speed : die::TableMotion::Quantity::displacement);
+  else if (spec.motion == "crank")
+    d.kinematics = std::make_unique<die::CrankPress>(spec.direction, spec.crank_radius, spec.rod_length, spec.rpm,
+                                                     spec.start_angle);
+  d.load_limit = spec.load_limit;
+  return d;
+}
+
+} // namespace anvil::scene
