@@ -140,6 +140,7 @@ void read_time(const CheckedYaml& doc, Case& c) {
   time.min_step_fraction = doc.number(t, "min_step_fraction", "time.min_step_fraction");
   time.max_cuts = doc.integer(t, "max_cuts", "time.max_cuts");
   time.max_increments = doc.integer(t, "max_increments", "time.max_increments");
+  time.volume_compensation = doc.boolean(t, "volume_compensation", "time.volume_compensation");
   const YAML::Node stop = t["stop"];
   if (!stop || stop.size() == 0)
     doc.fail(t, "time.stop", "missing: give at least one stop criterion (stroke, gap, load or time)");

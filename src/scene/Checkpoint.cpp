@@ -81,8 +81,9 @@ void write_checkpoint(const std::string& path, const RunState& s) {
     write_attribute(file, "increment", H5T_NATIVE_INT, &s.increment);
     write_attribute(file, "time", H5T_NATIVE_DOUBLE, &s.time);
     write_attribute(file, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
-    const double volume[4] = {s.volume.initial, s.volume.solver, s.volume.projection, s.volume.largest_increment};
-    write_array(file, "volume", H5T_NATIVE_DOUBLE, volume, 4, 0);
+    const double volume[5] = {s.volume.initial, s.volume.solver, s.volume.projection, s.volume.largest_increment,
+                              s.volume.compensation};
+    write_array(file, "volume", H5T_NATIVE_DOUBLE, volume, 5, 0);
 
     std::vector<double> nodes;
     for (const mesh::Point& p : s.mesh.nodes) nodes.insert(nodes.end(), p.data(), p.data() + 3);
@@ -134,8 +135,9 @@ RunState read_checkpoint(const std::string& path) {
   std::vector<double> volume, nodes, nodal, bubble, dies, loads, outputs;
   std::vector<long long> tets, faces;
   std::vector<char> files;
-  read_array(file, path, "volume", H5T_NATIVE_DOUBLE, volume, 4);
-  s.volume = {volume[0], volume[1], volume[2], volume[3]};
+  read_array(file, path, "volume", H5T_NATIVE_DOUBLE, volume, 5);
+  s.volume.initial = volume[0], s.volume.solver = volume[1], s.volume.projection = volume[2];
+  s.volume.largest_increment = volume[3], s.volume.compensation = volume[4];
   read_array(file, path, "nodes", H5T_NATIVE_DOUBLE, nodes, 3);
   for (std::size_t i = 0; i < nodes.size(); i += 3) s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);
   read_array(file, path, "tets", H5T_NATIVE_LLONG, tets, 4);

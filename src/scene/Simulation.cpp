@@ -162,6 +162,8 @@ private:
   double reference_length_ = 0.0;   ///< mm, mean boundary edge of the initial mesh
   double body_size_ = 0.0;          ///< mm
   double penalty_ = 0.0;            ///< MPa·s/mm
+  bool compensate_volume_ = false;
+  Eigen::VectorXd external_;        ///< external vector of the increment (forces, compensation)
 
   RunState state_;
   std::vector<material::PointState> states_;
@@ -188,6 +190,7 @@ void Run::setup() {
     imposed_ = impose(initial, conditions_);
   }
   effects_ = resolve_effects(case_, {law_.get()});
+  compensate_volume_ = std::find(effects_.begin(), effects_.end(), "volume_compensation") != effects_.end();
 
   // Reference scales from the initial mesh (also on resume, so a resumed run
   // uses the very same numbers).
@@ -318,7 +321,20 @@ bool Run::try_increment(double dt, solver::NewtonReport& report) {
     contact_.set_increment({dt, penalty_, case_.contact.regularisation * reference_velocity_,
                             1e-4 * reference_velocity_, &node_flow_stress_, &node_consistency_});
   }
-  const solver::IncrementProblem problem{*law_, states_, imposed_.nodal_forces, {},
+  // Volume compensation: the flow of this increment is asked to restore the
+  // volume lost so far (explicit update error, O(Δt) over a run, and contact
+  // projection): ∫ q div v = ∫ q g with g = (V₀ − V)/(V Δt), entered as the
+  // pressure rows of the external vector (r_p = −∫N (div v − g)).
+  external_ = imposed_.nodal_forces;
+  if (compensate_volume_) {
+    const double volume = mesh::volume(state_.mesh);
+    const double g = (state_.volume.initial - volume) / (volume * dt);
+    for (int e = 0; e < state_.mesh.tet_count(); ++e) {
+      const double quarter = 0.25 * mesh::signed_volume(state_.mesh, e);
+      for (int node : state_.mesh.tets[e]) external_[4 * node + 3] -= g * quarter;
+    }
+  }
+  const solver::IncrementProblem problem{*law_, states_, external_, {},
                                          dies_.empty() ? nullptr : &contact_, reference_velocity_};
   Timers::Scope scope(timers_, "newton");
   report = solver_->solve(problem, case_.newton, state_.unknowns);
@@ -560,6 +576,7 @@ void Run::execute() {
           if (mesh::signed_volume(state_.mesh, e) <= 0.0) inverted = e;
         if (inverted < 0) {
           state_.volume.solver += volume_flow - volume_before;
+          if (compensate_volume_) state_.volume.compensation += state_.volume.initial - volume_before;
           state_.volume.projection += volume_after - volume_flow;
           state_.volume.largest_increment =
               std::max(state_.volume.largest_increment, std::abs(volume_after - volume_before) / volume_before);
@@ -636,7 +653,8 @@ void Run::write_summary(double total) const {
     summary << "  \"final_residual\": {\"force\": " << last_report_.iterations.back().force_residual
             << ", \"div\": " << last_report_.iterations.back().flux_residual << "},\n";
   summary << "  \"volume_mm3\": {\"start\": " << state_.volume.initial << ", \"end\": " << volume_end
-          << ", \"change_solver\": " << state_.volume.solver << ", \"change_contact_projection\": "
+          << ", \"change_solver\": " << state_.volume.solver << ", \"of_which_compensation\": "
+          << state_.volume.compensation << ", \"change_contact_projection\": "
           << state_.volume.projection << ", \"largest_relative_change_per_increment\": "
           << state_.volume.largest_increment << ", \"relative_change\": "
           << (state_.volume.initial > 0 ? volume_end / state_.volume.initial - 1.0 : 0.0) << "},\n";

@@ -16,6 +16,11 @@ const std::vector<Effect>& effect_registry() {
       {"sticking_plates", "flat plates moving the faces they touch with them"},
       {"frictionless_plates", "flat plates imposing the normal velocity only"},
       {"surface_loads", "tractions and pressures on selected faces (nodal forces)"},
+      {"time_stepping", "updated-Lagrangian time loop: x += Δt v, ε̄ += Δt ε̄̇, Δt control, checkpoints"},
+      {"volume_compensation", "incompressible bodies in the time loop: each increment's flow restores the volume lost so far"},
+      {"rigid_dies", "contact with rigid dies (plane or STL): search, penalty, active set, projection"},
+      {"friction", "friction on die contact (sticking, Tresca, Coulomb, Norton), regularised near zero slip"},
+      {"hardening", "flow stress depending on ε̄ (Hansel-Spittel)"},
   };
   return registry;
 }
@@ -38,6 +43,17 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
     case BoundaryKind::traction:
     case BoundaryKind::pressure: add("surface_loads"); break;
     }
+  if (c.time.enabled) {
+    add("time_stepping");
+    if (c.time.volume_compensation)
+      for (const material::Material* law : laws)
+        if (!std::isfinite(law->bulk_modulus())) add("volume_compensation");
+  }
+  if (!c.dies.empty()) add("rigid_dies");
+  for (const DieSpec& d : c.dies)
+    if (d.friction.kind != contact::FrictionKind::frictionless) add("friction");
+  for (const material::Material* law : laws)
+    if (dynamic_cast<const material::HanselSpittel*>(law)) add("hardening");
   // Registry order, so logs of different scenes compare line by line.
   std::vector<std::string> ordered;
   for (const Effect& e : effect_registry())

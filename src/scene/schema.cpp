@@ -154,6 +154,9 @@ const std::vector<KeySpec>& case_schema() {
                              "a node reaching a die shortens the increment, down to this fraction"), 0, 1), "0.1"),
       with_default(range(key("time.max_cuts", T::integer, "time-step halvings after a Newton failure"), 0, 30), "5"),
       with_default(range(key("time.max_increments", T::integer, "safety stop"), 1, kInf), "100000"),
+      with_default(key("time.volume_compensation", T::boolean,
+                       "incompressible bodies: each increment's flow restores the volume lost so far (explicit "
+                       "update error, contact projection); false shows the raw loss"), "true"),
       key("time.stop", T::map, "stop criteria: the first one reached ends the run (at least one)"),
       range(key("time.stop.stroke", T::number, "travel of the die `die`", "mm"), 0, kInf, true),
       key("time.stop.die", T::string, "die whose stroke is checked; default the first moving die"),

@@ -68,7 +68,10 @@ double IncrementSolver::force_scale(const Eigen::VectorXd& nodal_forces) const {
   double reaction_sq = 0.0;
   for (int d = 0; d < dofs_.dof_count(); ++d)
     if (dofs_.free_index(d) < 0 && d % kDofsPerNode != 3) reaction_sq += residual_[d] * residual_[d];
-  return std::max({std::sqrt(reaction_sq), nodal_forces.norm(), nodal_term_residual_.norm(), 1e-300});
+  double applied_sq = 0.0;
+  for (int d = 0; d < dofs_.dof_count(); ++d)
+    if (d % kDofsPerNode != 3) applied_sq += nodal_forces[d] * nodal_forces[d];
+  return std::max({std::sqrt(reaction_sq), std::sqrt(applied_sq), nodal_term_residual_.norm(), 1e-300});
 }
 
 NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const NewtonSettings& settings,
@@ -115,7 +118,11 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   double scale = force_scale(problem.nodal_forces);
   Eigen::VectorXd rhs(dofs_.free_count()), solution(dofs_.free_count()), delta(n), bubble_delta;
   fem::BodyUnknowns trial;
-  for (int it = 1; it <= settings.max_iterations; ++it) {
+  // The iteration budget applies per active set: a change of set at
+  // convergence starts a new (short) Newton run, at most kMaxSetChanges times.
+  constexpr int kMaxSetChanges = 10;
+  int phase_start = 0, set_changes = 0;
+  for (int it = 1; it - phase_start <= settings.max_iterations; ++it) {
     if (bad_element_ >= 0) {
       report.failure = "element " + std::to_string(bad_element_ + 1) + " is inverted or flat";
       return report;
@@ -178,7 +185,9 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     }
     if (record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance &&
         record.increment <= settings.tolerance) {
-      if (problem.nodal_term && !problem.nodal_term->consistent(unknowns.nodal)) {
+      if (problem.nodal_term && set_changes < kMaxSetChanges && !problem.nodal_term->consistent(unknowns.nodal)) {
+        phase_start = it;
+        ++set_changes;
         // The active set changed: the converged field belongs to another
         // problem; go on from it with the new set.
         merit = evaluate(problem, unknowns);

@@ -5,6 +5,7 @@
 #include "anvil/core/log.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Simulation.h"
+#include "run_outputs.h"
 
 #include <cmath>
 #include <filesystem>
@@ -46,27 +47,6 @@ std::vector<Reference> references() {
   return out;
 }
 
-double load_on(const std::string& loads_csv, const std::string& surface) {
-  std::ifstream in(loads_csv);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cols;
-    std::istringstream s(line);
-    for (std::string c; std::getline(s, c, ',');) cols.push_back(c);
-    if (cols.size() == 6 && cols[2] == surface) return std::stod(cols[5]);
-  }
-  FAIL("no surface " << surface << " in " << loads_csv);
-  return 0.0;
-}
-
-int newton_iterations(const std::string& summary_json) {
-  std::ifstream in(summary_json);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto at = text.find("\"newton_iterations\": ");
-  REQUIRE(at != std::string::npos);
-  return std::stoi(text.substr(at + 21));
-}
-
 } // namespace
 
 TEST_CASE("every case reproduces its reference signature", "[regression]") {
@@ -75,14 +55,15 @@ TEST_CASE("every case reproduces its reference signature", "[regression]") {
   log::set_quiet(true);
   for (const Reference& r : refs) {
     INFO("case " << r.case_name);
-    const auto out = std::filesystem::temp_directory_path() / ("anvil_regression_" + r.case_name);
-    std::filesystem::remove_all(out);
-    scene::run(scene::read_case(source_path("cases/" + r.case_name + ".yaml")), {out.string()});
-    const double fz = load_on((out / "loads.csv").string(), r.surface);
+    const RunOutputs out =
+        run_case(scene::read_case(source_path("cases/" + r.case_name + ".yaml")), "anvil_regression_" + r.case_name);
+    const auto rows = out.loads(r.surface);
+    REQUIRE(!rows.empty());
+    const double fz = rows.back().force.z();
     INFO("Fz " << fz << " N, reference " << r.fz << " N");
     CHECK(std::abs(fz - r.fz) <= 1e-6 * std::abs(r.fz));
-    const int iterations = newton_iterations((out / "summary.json").string());
+    const int iterations = static_cast<int>(out.summary_number("newton_iterations"));
     CHECK(std::abs(iterations - r.newton_iterations) <= 3);
-    CHECK(std::filesystem::exists(out / "anvil.pvd"));
+    CHECK(std::filesystem::exists(out.directory + "/anvil.pvd"));
   }
 }

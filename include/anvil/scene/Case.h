@@ -54,6 +54,7 @@ struct TimeSpec {
   double min_step_fraction = 0.1;  ///< contact events shorten Δt down to this fraction of the nominal one
   int max_cuts = 5;                ///< Δt halvings after a Newton failure
   int max_increments = 100000;
+  bool volume_compensation = true; ///< incompressible bodies: restore lost volume each increment
   // Stop criteria; the first one reached ends the run.
   double final_stroke = std::numeric_limits<double>::infinity(); ///< mm, of `stroke_die`
   int stroke_die = 0;

@@ -33,7 +33,8 @@ struct LoadRecord {
 /// Volume budget (mm³): where volume went, by cause.
 struct VolumeBudget {
   double initial = 0.0;
-  double solver = 0.0;      ///< change from x += Δt v (incompressibility error)
+  double solver = 0.0;      ///< change from x += Δt v (time-integration error plus compensation)
+  double compensation = 0.0; ///< volume the compensation dilatation asked the flow to restore
   double projection = 0.0;  ///< change from putting contact nodes back on the dies
   double largest_increment = 0.0; ///< largest |relative change| in one increment
 };

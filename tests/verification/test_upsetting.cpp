@@ -1,0 +1,100 @@
+// Upsetting between flat dies through the whole time loop (issue 3 §8):
+// frictionless Norton-Hoff against the exact homogeneous solution, then the
+// effect of friction (ordering, slab-method band, barrelling).
+#include "test_common.h"
+
+#include "anvil/core/log.h"
+#include "anvil/scene/Case.h"
+#include "anvil/scene/RunState.h"
+#include "anvil/scene/Simulation.h"
+#include "run_outputs.h"
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+using namespace anvil;
+
+namespace {
+
+constexpr double kRadius = 10.0, kHeight = 15.0, kSpeed = 10.0; // cases/upsetting_frictionless.yaml
+constexpr double kConsistency = 36.67, kSensitivity = 0.1685;   // materials/steel_c45_1100C.yaml
+
+/// Runs the frictionless upsetting case with `friction` on both dies.
+RunOutputs upset(const contact::FrictionLaw& friction, const std::string& tag) {
+  scene::Case c = scene::read_case(source_path("cases/upsetting_frictionless.yaml"));
+  for (scene::DieSpec& d : c.dies) d.friction = friction;
+  c.write_vtk = false;
+  return run_case(c, "anvil_upsetting_" + tag);
+}
+
+/// Exact load on the quarter model at height H (homogeneous flow).
+double exact_load(double height, double volume) {
+  const double rate = kSpeed / height;
+  return volume / height * std::sqrt(3.0) * kConsistency * std::pow(std::sqrt(3.0) * rate, kSensitivity);
+}
+
+} // namespace
+
+TEST_CASE("frictionless Norton-Hoff upsetting follows the exact homogeneous solution to 50 %", "[verification]") {
+  log::set_quiet(true);
+  const RunOutputs out = upset({}, "frictionless");
+  const auto rows = out.loads("top");
+  REQUIRE(rows.size() >= 20);
+  const double volume = std::numbers::pi * kRadius * kRadius * kHeight / 4.0;
+  // Each increment's load is solved on the geometry at its start: H = H0 − previous stroke.
+  double previous_stroke = 0.0, worst = 0.0;
+  for (const LoadRow& r : rows) {
+    const double exact = exact_load(kHeight - previous_stroke, volume);
+    worst = std::max(worst, std::abs(r.force.z() - exact) / exact);
+    previous_stroke = r.stroke;
+  }
+  INFO("worst load error " << worst);
+  // 1 %: the issue's bound. The flow is homogeneous, so the P1 field is exact
+  // and what remains is the volume compensation and the Newton tolerance.
+  CHECK(worst < 0.01);
+  CHECK(rows.back().stroke == Approx(7.5).epsilon(1e-9));
+
+  const scene::RunState end = out.final_state();
+  double radius = 0.0;
+  for (const mesh::Point& p : end.mesh.nodes) radius = std::max(radius, std::hypot(p.x(), p.y()));
+  const double exact_radius = kRadius * std::sqrt(kHeight / (kHeight - 7.5));
+  INFO("final radius " << radius << " mm, exact " << exact_radius << " mm");
+  CHECK(std::abs(radius - exact_radius) / exact_radius < 0.005);
+  const double volume_change = out.summary_number("relative_change");
+  INFO("volume change " << volume_change);
+  CHECK(std::abs(volume_change) < 0.005);
+}
+
+TEST_CASE("friction raises the upsetting load within the slab band and barrels the billet", "[verification]") {
+  log::set_quiet(true);
+  using contact::FrictionKind;
+  const RunOutputs frictionless = upset({}, "reference");
+  const RunOutputs tresca = upset({FrictionKind::tresca, 0.3, 0.0, 0.0}, "tresca");
+  const RunOutputs sticking = upset({FrictionKind::sticking, 0.0, 0.0, 0.0}, "sticking");
+  const auto f0 = frictionless.loads("top"), ft = tresca.loads("top"), fs = sticking.loads("top");
+  REQUIRE(f0.size() == ft.size());
+  REQUIRE(f0.size() == fs.size());
+  for (std::size_t i = 0; i < f0.size(); ++i) {
+    INFO("increment " << i + 1 << " stroke " << f0[i].stroke);
+    CHECK(ft[i].force.z() > f0[i].force.z());
+    CHECK(fs[i].force.z() > ft[i].force.z());
+    // Slab method (constant shear m̄ σ₀/√3 on both faces): mean pressure
+    // σ₀ (1 + 2 m̄ R / (3√3 H)). Sticking is m̄ = 1, the top of the band.
+    const double height = kHeight - (i ? f0[i - 1].stroke : 0.0);
+    const double radius = kRadius * std::sqrt(kHeight / height);
+    const double slab_sticking = 1.0 + 2.0 * radius / (3.0 * std::sqrt(3.0) * height);
+    if (radius / height >= 1.0) CHECK(ft[i].force.z() / f0[i].force.z() < slab_sticking);
+  }
+  // Barrelling: with friction the lateral surface bulges at mid-height.
+  const scene::RunState end = tresca.final_state();
+  double top = 0.0, middle = 0.0, height = 0.0;
+  for (const mesh::Point& p : end.mesh.nodes) height = std::max(height, p.z());
+  for (const mesh::Point& p : end.mesh.nodes) {
+    const double r = std::hypot(p.x(), p.y());
+    if (p.z() > height - 1e-6) top = std::max(top, r);
+    if (std::abs(p.z() - 0.5 * height) < 0.4) middle = std::max(middle, r);
+  }
+  INFO("radius at the die " << top << " mm, at mid-height " << middle << " mm");
+  CHECK(middle > top + 0.1);
+}
