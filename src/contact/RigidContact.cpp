@@ -49,20 +49,27 @@ double RigidContact::pressure(int i, const Eigen::VectorXd& nodal) const {
   return increment_.penalty * std::max(gap_velocity(candidates_[i], nodal), 0.0);
 }
 
-void RigidContact::start(const Eigen::VectorXd& nodal) {
-  frozen_ = false;
-  iterations_ = 0;
-  for (std::size_t i = 0; i < candidates_.size(); ++i) active_[i] = gap_velocity(candidates_[i], nodal) > 0.0;
-}
-
-bool RigidContact::consistent(const Eigen::VectorXd& nodal) {
+bool RigidContact::active_at(int i, const Eigen::VectorXd& nodal) const {
   // A node changes side only beyond the tolerance: at the edge of the contact
   // zone the exact solution has h = 0 and σn = 0 together, and a strict test
   // would cycle between the two sets.
+  const double h = gap_velocity(candidates_[i], nodal);
+  return active_[i] ? h > -increment_.gap_tolerance : h > increment_.gap_tolerance;
+}
+
+void RigidContact::start(const Eigen::VectorXd& nodal) {
+  frozen_ = false;
+  iterations_ = 0;
+  // A node touching its die with no relative normal velocity (h = 0) starts
+  // active: a billet resting on a die is then supported, not floating.
+  for (std::size_t i = 0; i < candidates_.size(); ++i)
+    active_[i] = gap_velocity(candidates_[i], nodal) > -increment_.gap_tolerance;
+}
+
+bool RigidContact::consistent(const Eigen::VectorXd& nodal) {
   bool same = true;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const double h = gap_velocity(candidates_[i], nodal);
-    const char now = active_[i] ? h > -increment_.gap_tolerance : h > increment_.gap_tolerance;
+    const char now = active_at(int(i), nodal);
     same = same && now == active_[i];
     active_[i] = now;
   }
@@ -74,8 +81,8 @@ void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
   const double rho = increment_.penalty;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const ContactCandidate& c = candidates_[i];
+    if (!active_[i]) continue;
     const double h = gap_velocity(c, nodal);
-    if (frozen_ ? !active_[i] : h <= 0.0) continue;
     const Eigen::Vector3d& n = c.normal;
     const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - n * n.transpose();
     const Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * c.node) - dies_[c.die].velocity;
@@ -99,7 +106,7 @@ void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
 std::string RigidContact::accept(const Eigen::VectorXd& nodal) {
   int activated = 0, released = 0, active = 0;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const char now = frozen_ ? active_[i] : gap_velocity(candidates_[i], nodal) > 0.0;
+    const char now = frozen_ ? active_[i] : active_at(int(i), nodal);
     activated += now && !active_[i];
     released += !now && active_[i];
     active += now;

@@ -162,7 +162,9 @@ private:
   double reference_length_ = 0.0;   ///< mm, mean boundary edge of the initial mesh
   double body_size_ = 0.0;          ///< mm
   double penalty_ = 0.0;            ///< MPa·s/mm
+  double reference_force_ = 0.0;    ///< N, mean flow stress × body area
   bool compensate_volume_ = false;
+  double nominal_step_ = 0.0;       ///< s, Δt from the stroke increment alone
   Eigen::VectorXd external_;        ///< external vector of the increment (forces, compensation)
 
   RunState state_;
@@ -209,7 +211,8 @@ void Run::setup() {
   }
   for (std::size_t d = 0; d < dies_.size(); ++d) surfaces_.push_back({dies_[d].name, int(d), -1});
   for (std::size_t i = 0; i < conditions_.size(); ++i)
-    if (conditions_[i].prescribes_velocity()) surfaces_.push_back({conditions_[i].name, -1, int(i)});
+    if (conditions_[i].prescribes_velocity() && conditions_[i].kind != BoundaryKind::symmetry)
+      surfaces_.push_back({conditions_[i].name, -1, int(i)});
   if (case_.time.final_gap > 0.0) die_gap0_ = initial_die_gap(dies_, upper_die_);
 
   DieState at_rest;
@@ -328,14 +331,16 @@ bool Run::try_increment(double dt, solver::NewtonReport& report) {
   external_ = imposed_.nodal_forces;
   if (compensate_volume_) {
     const double volume = mesh::volume(state_.mesh);
-    const double g = (state_.volume.initial - volume) / (volume * dt);
+    // Restored over at least the nominal increment, so a short increment
+    // (a stop criterion, a cut) does not get a large dilatation.
+    const double g = (state_.volume.initial - volume) / (volume * std::max(dt, nominal_step_));
     for (int e = 0; e < state_.mesh.tet_count(); ++e) {
       const double quarter = 0.25 * mesh::signed_volume(state_.mesh, e);
       for (int node : state_.mesh.tets[e]) external_[4 * node + 3] -= g * quarter;
     }
   }
-  const solver::IncrementProblem problem{*law_, states_, external_, {},
-                                         dies_.empty() ? nullptr : &contact_, reference_velocity_};
+  const solver::IncrementProblem problem{*law_, states_, external_, {}, dies_.empty() ? nullptr : &contact_,
+                                         reference_velocity_, reference_force_};
   Timers::Scope scope(timers_, "newton");
   report = solver_->solve(problem, case_.newton, state_.unknowns);
   return report.converged;
@@ -529,6 +534,7 @@ void Run::execute() {
       // about 1/factor of the press speed, whatever the flow stress does
       // (hardening, temperature) along the stroke.
       penalty_ = case_.contact.penalty * mean_flow_stress / reference_velocity_;
+      reference_force_ = mean_flow_stress * std::pow(mesh::volume(state_.mesh), 2.0 / 3.0);
     }
 
     // Δt: stroke increment of the fastest die, displacement limit, stop criteria.
@@ -537,7 +543,8 @@ void Run::execute() {
       const double probe = 1e-3 * t.stroke_increment / reference_velocity_;
       speed = std::max(speed, dies_[d].velocity(state_.dies[d], probe).norm());
     }
-    double dt = choose_time_step(t.stroke_increment / speed);
+    nominal_step_ = t.stroke_increment / speed;
+    double dt = choose_time_step(nominal_step_);
     const double nominal = dt;
     const RunState saved = state_;
     solver::NewtonReport report;

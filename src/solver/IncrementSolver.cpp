@@ -64,14 +64,18 @@ IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem
   return m;
 }
 
-double IncrementSolver::force_scale(const Eigen::VectorXd& nodal_forces) const {
+double IncrementSolver::force_scale(const IncrementProblem& problem) const {
+  const Eigen::VectorXd& nodal_forces = problem.nodal_forces;
   double reaction_sq = 0.0;
   for (int d = 0; d < dofs_.dof_count(); ++d)
     if (dofs_.free_index(d) < 0 && d % kDofsPerNode != 3) reaction_sq += residual_[d] * residual_[d];
   double applied_sq = 0.0;
   for (int d = 0; d < dofs_.dof_count(); ++d)
     if (d % kDofsPerNode != 3) applied_sq += nodal_forces[d] * nodal_forces[d];
-  return std::max({std::sqrt(reaction_sq), std::sqrt(applied_sq), nodal_term_residual_.norm(), 1e-300});
+  // A body at rest (a billet between dies that let go) has no load of its
+  // own: the reference force keeps the measure finite.
+  return std::max({std::sqrt(reaction_sq), std::sqrt(applied_sq), nodal_term_residual_.norm(),
+                   problem.reference_force, 1e-300});
 }
 
 NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const NewtonSettings& settings,
@@ -99,7 +103,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     predictor.verbose = false;    // contact set, one step of it is enough for a start)
     Timers::Scope scope(timers_, "effect nonlinear_law (predictor)");
     const IncrementProblem newtonian_problem{newtonian,          problem.states,     problem.nodal_forces,
-                                             problem.body_force, problem.nodal_term, reference_velocity};
+                                             problem.body_force, problem.nodal_term, reference_velocity,
+                                             problem.reference_force};
     solve(newtonian_problem, predictor, unknowns);
     if (settings.verbose) log::info("    predictor: Newtonian solve at viscosity %.4g MPa.s (rate %.3g 1/s)",
                                     newtonian.consistency(), reference_rate);
@@ -109,13 +114,16 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   // loads and the reactions; fluxes (mm³/s) against |v|max × body area, both
   // refreshed as the field develops.
   const double area = std::pow(body_volume, 2.0 / 3.0);
+  // |Δv| is measured against |v|, or against 1e-3 of the reference speed at
+  // every node when the body is (nearly) at rest.
+  const double velocity_floor_sq = std::max(1e-6 * reference_velocity * reference_velocity * mesh_.node_count(), 1e-300);
   auto relative = [](const Merit& m, double force, double flux) {
     return (m.force_sq + m.bubble_sq) / (force * force) + m.flux_sq / (flux * flux);
   };
 
   if (problem.nodal_term) problem.nodal_term->start(unknowns.nodal);
   Merit merit = evaluate(problem, unknowns);
-  double scale = force_scale(problem.nodal_forces);
+  double scale = force_scale(problem);
   Eigen::VectorXd rhs(dofs_.free_count()), solution(dofs_.free_count()), delta(n), bubble_delta;
   fem::BodyUnknowns trial;
   // The iteration budget applies per active set: a change of set at
@@ -161,7 +169,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     }
     unknowns.nodal.swap(trial.nodal);
     unknowns.bubble.swap(trial.bubble);
-    scale = force_scale(problem.nodal_forces); // reactions follow the velocity field
+    scale = force_scale(problem); // reactions follow the velocity field
     const double flux_scale = std::max(max_velocity(unknowns.nodal) * area, 1e-300);
 
     double velocity_sq = 0.0, delta_sq = 0.0;
@@ -172,7 +180,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       }
     const NewtonIteration record{std::sqrt(merit.force_sq + merit.bubble_sq) / scale,
                                  std::sqrt(merit.flux_sq) / flux_scale,
-                                 std::sqrt(delta_sq / std::max(velocity_sq, 1e-300)), step};
+                                 std::sqrt(delta_sq / std::max(velocity_sq, velocity_floor_sq)), step};
     report.iterations.push_back(record);
     std::string note = problem.nodal_term ? problem.nodal_term->accept(unknowns.nodal) : std::string();
     if (linear_solver_.iterations() > 0) note += "  (" + std::to_string(linear_solver_.iterations()) + " minres iterations)";
@@ -191,7 +199,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
         // The active set changed: the converged field belongs to another
         // problem; go on from it with the new set.
         merit = evaluate(problem, unknowns);
-        scale = force_scale(problem.nodal_forces);
+        scale = force_scale(problem);
         if (settings.verbose) log::info("    active set changed at convergence: Newton goes on");
         continue;
       }

@@ -3,8 +3,8 @@
 // velocity gap of the increment is
 //   h = −(v − v_die)·n − δ₀/Δt   (≤ 0 allowed, paper eq. 19 with a rigid master),
 // enforced by a penalty on the active nodes: contact pressure σn = ρ h.
-// Active set: for the first Newton iterations a node is active where h > 0
-// (semi-smooth Newton); then the set is frozen so Newton sees a smooth problem,
+// Active set: for the first Newton iterations it follows the sign of h at the
+// last iterate (semi-smooth Newton); then it is frozen so Newton sees a smooth problem,
 // and once Newton has converged it is checked: a node with tensile contact
 // stress (h < 0) is released, a free node that penetrates (h > 0) is added, and
 // Newton goes on until the set no longer changes. Friction acts on active nodes.
@@ -72,6 +72,8 @@ public:
 
 private:
   double gap_velocity(const ContactCandidate& c, const Eigen::VectorXd& nodal) const;
+  /// Whether candidate i belongs to the active set at `nodal` (with hysteresis).
+  bool active_at(int i, const Eigen::VectorXd& nodal) const;
 
   std::vector<DieView> dies_;
   std::vector<ContactCandidate> candidates_;

@@ -41,6 +41,7 @@ struct IncrementProblem {
   fem::BodyForce body_force;
   NodalTerm* nodal_term = nullptr;                 ///< contact with rigid dies, if any
   double reference_velocity = 0.0;                 ///< mm/s; 0 = largest prescribed velocity
+  double reference_force = 0.0;                    ///< N; residuals are measured against at least this load
 };
 
 class IncrementSolver {
@@ -76,7 +77,7 @@ private:
   Merit evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns);
   /// Force scale (N): the largest of the reaction norm, the contact force
   /// norm and the applied load norm.
-  double force_scale(const Eigen::VectorXd& nodal_forces) const;
+  double force_scale(const IncrementProblem& problem) const;
 
   const mesh::TetMesh& mesh_;
   std::vector<char> prescribed_;
