@@ -583,7 +583,8 @@ void Run::execute() {
           if (mesh::signed_volume(state_.mesh, e) <= 0.0) inverted = e;
         if (inverted < 0) {
           state_.volume.solver += volume_flow - volume_before;
-          if (compensate_volume_) state_.volume.compensation += state_.volume.initial - volume_before;
+          if (compensate_volume_) // g V Δt, with g as set in try_increment()
+            state_.volume.compensation += (state_.volume.initial - volume_before) * std::min(1.0, dt / nominal_step_);
           state_.volume.projection += volume_after - volume_flow;
           state_.volume.largest_increment =
               std::max(state_.volume.largest_increment, std::abs(volume_after - volume_before) / volume_before);
