@@ -21,6 +21,8 @@ usage:
   anvil run CASE.yaml --resume DIR
                                  continue a stopped or killed run from the last
                                  checkpoint in DIR (DIR/checkpoint.h5)
+  anvil output-dir CASE.yaml [-o DIR]
+                                 print the folder a run would write to
   anvil --schema                 every case-file and material-card key: type,
                                  default, range, unit, meaning
   anvil --list                   the effects a scene can call for
@@ -58,7 +60,7 @@ int main(int argc, char** argv) {
     for (const auto& e : anvil::scene::effect_registry()) std::printf("  %-20s %s\n", e.name.c_str(), e.doc.c_str());
     return 0;
   }
-  if (command != "run") return usage_error("unknown command '" + command + "'");
+  if (command != "run" && command != "output-dir") return usage_error("unknown command '" + command + "'");
 
   std::string case_file;
   anvil::scene::RunOptions options;
@@ -79,10 +81,14 @@ int main(int argc, char** argv) {
       return usage_error("more than one case file given");
     }
   }
-  if (case_file.empty()) return usage_error("'run' needs a case file");
+  if (case_file.empty()) return usage_error("'" + command + "' needs a case file");
 
   try {
     const anvil::scene::Case c = anvil::scene::read_case(case_file);
+    if (command == "output-dir") {
+      std::puts(anvil::scene::output_directory(c, options).c_str());
+      return 0;
+    }
     anvil::scene::run(c, options);
     return 0;
   } catch (const anvil::InputError& e) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <tuple>
 
 namespace anvil::scene {
 namespace {
@@ -21,6 +22,24 @@ BoundaryKind boundary_kind(const std::string& type) {
   if (type == "frictionless_plate") return BoundaryKind::frictionless_plate;
   if (type == "traction") return BoundaryKind::traction;
   return BoundaryKind::pressure;
+}
+
+/// `plane: {point, normal}` under `spec` (e.g. "dies[].plane"); the normal must not be zero.
+std::pair<mesh::Point, Eigen::Vector3d> read_plane(const CheckedYaml& doc, const YAML::Node& plane, const std::string& spec,
+                                                   const std::string& shown) {
+  const mesh::Point point = doc.vector(plane, "point", spec + ".point");
+  const Eigen::Vector3d normal = doc.vector(plane, "normal", spec + ".normal");
+  if (normal.norm() == 0.0) doc.fail(plane["normal"], shown + ".normal", "the normal must not be zero");
+  return {point, normal};
+}
+
+/// Fails when `item`'s name is already used in `defined` (bodies, dies).
+template <class Spec>
+void check_unique_name(const CheckedYaml& doc, const std::vector<Spec>& defined, const YAML::Node& item,
+                       const std::string& shown, const std::string& what) {
+  for (const Spec& other : defined)
+    if (other.name == item["name"].Scalar())
+      doc.fail(item["name"], shown + ".name", what + " '" + other.name + "' is defined twice");
 }
 
 contact::FrictionLaw read_friction(const CheckedYaml& doc, const YAML::Node& die, const std::string& shown) {
@@ -65,16 +84,13 @@ void read_dies(const CheckedYaml& doc, Case& c) {
     DieSpec d;
     d.name = doc.text(n, "name", "dies[].name");
     d.source = doc.at(n);
-    for (const DieSpec& other : c.dies)
-      if (other.name == d.name) doc.fail(n["name"], shown + ".name", "die '" + d.name + "' is defined twice");
+    check_unique_name(doc, c.dies, n, shown, "die");
     if (static_cast<bool>(n["stl"]) == static_cast<bool>(n["plane"]))
       doc.fail(n, shown, "give exactly one surface: 'stl' (a file) or 'plane'");
     if (n["stl"]) d.stl_file = relative_to(doc.path(), n["stl"].Scalar());
     else {
       const YAML::Node plane = n["plane"];
-      d.plane_point = doc.vector(plane, "point", "dies[].plane.point");
-      d.plane_normal = doc.vector(plane, "normal", "dies[].plane.normal");
-      if (d.plane_normal.norm() == 0.0) doc.fail(plane["normal"], shown + ".plane.normal", "the normal must not be zero");
+      std::tie(d.plane_point, d.plane_normal) = read_plane(doc, plane, "dies[].plane", shown + ".plane");
       d.plane_normal.normalize();
       d.plane_half_size = doc.number(plane, "half_size", "dies[].plane.half_size");
     }
@@ -218,8 +234,7 @@ Case read_case(const std::string& path) {
         mesh.height = doc.number(m, "height", "bodies[].mesh.height");
       }
     }
-    for (const BodySpec& other : c.bodies)
-      if (other.name == body.name) doc.fail(b["name"], shown + ".name", "body '" + body.name + "' is defined twice");
+    check_unique_name(doc, c.bodies, b, shown, "body");
     c.bodies.push_back(body);
   }
 
@@ -243,9 +258,8 @@ Case read_case(const std::string& path) {
     if (n["tag"]) bc.faces.tag = doc.integer(n, "tag", "boundary[].tag");
     else {
       const YAML::Node plane = n["plane"];
-      bc.faces.plane_point = doc.vector(plane, "point", "boundary[].plane.point");
-      bc.faces.plane_normal = doc.vector(plane, "normal", "boundary[].plane.normal");
-      if (bc.faces.plane_normal.norm() == 0.0) doc.fail(plane["normal"], shown + ".plane.normal", "the normal must not be zero");
+      std::tie(bc.faces.plane_point, bc.faces.plane_normal) =
+          read_plane(doc, plane, "boundary[].plane", shown + ".plane");
       bc.faces.tolerance = doc.number(plane, "tolerance", "boundary[].plane.tolerance");
     }
     auto require = [&](const char* key, const char* why) {

@@ -17,7 +17,8 @@ Eigen::Vector3d Die::velocity(const DieState& s, double time_step) const {
 void Die::advance(DieState& s, double time_step) const {
   if (!kinematics) return;
   s.press_time += s.speed_factor * time_step;
-  const Eigen::Vector3d next = kinematics->displacement(s.press_time);
+  // Relative to the start: a displacement table need not begin at zero.
+  const Eigen::Vector3d next = kinematics->displacement(s.press_time) - kinematics->displacement(0.0);
   s.stroke += (next - s.displacement).norm();
   s.displacement = next;
 }

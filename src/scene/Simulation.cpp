@@ -144,6 +144,25 @@ private:
   void write_summary(double total) const;
   std::string stop_reason() const;
   double progress() const;
+  /// Distance between the two dies along z (mm), for the gap stop criterion.
+  double die_gap() const;
+  /// Speed of the fastest moving part at the current press time (mm/s).
+  double press_speed() const;
+  /// Per-node σ₀ and K for friction, the penalty and the force scale, from
+  /// the last increment's solution.
+  void set_contact_scales();
+  /// x ← x + Δt v, dies moved, contact nodes projected, loads recorded.
+  /// False (with `failure`) when an element would invert.
+  bool update_geometry(double dt, std::string& failure);
+
+  /// What an increment changes before it is accepted, to go back to when it
+  /// fails (topology, ε̄ and time change only after).
+  struct IncrementStart {
+    std::vector<mesh::Point> nodes;
+    fem::BodyUnknowns unknowns;
+    std::vector<DieState> dies;
+    std::size_t load_count;
+  };
 
   const Case& case_;
   const RunOptions& options_;
@@ -172,6 +191,7 @@ private:
   std::unique_ptr<solver::IncrementSolver> solver_;
   contact::RigidContact contact_;
   std::vector<double> node_flow_stress_, node_consistency_;
+  std::vector<double> solved_rates_; ///< ε̄̇ per element of the last converged increment
   std::unique_ptr<io::VtkSeries> series_;
   solver::NewtonReport last_report_;
   Clock::time_point start_ = Clock::now();
@@ -196,13 +216,8 @@ void Run::setup() {
 
   // Reference scales from the initial mesh (also on resume, so a resumed run
   // uses the very same numbers).
-  const mesh::Point low = [&] {
-    mesh::Point p = initial.nodes.front();
-    for (const auto& x : initial.nodes) p = p.cwiseMin(x);
-    return p;
-  }();
-  mesh::Point high = initial.nodes.front();
-  for (const auto& x : initial.nodes) high = high.cwiseMax(x);
+  mesh::Point low = initial.nodes.front(), high = low;
+  for (const auto& x : initial.nodes) low = low.cwiseMin(x), high = high.cwiseMax(x);
   body_size_ = (high - low).norm();
   reference_length_ = mean_boundary_edge(initial);
   {
@@ -215,13 +230,9 @@ void Run::setup() {
       surfaces_.push_back({conditions_[i].name, -1, int(i)});
   if (case_.time.final_gap > 0.0) die_gap0_ = initial_die_gap(dies_, upper_die_);
 
-  DieState at_rest;
-  for (const Die& d : dies_) {
-    if (!d.kinematics) continue;
-    const double probe = 1e-3 * std::max(case_.time.stroke_increment, 1e-6);
-    // speed at t = 0 from a tiny press-time step
-    reference_velocity_ = std::max(reference_velocity_, (d.kinematics->displacement(probe)).norm() / probe);
-  }
+  // Speed at t = 0 over a short probe step (an increment is far longer).
+  const double probe = 1e-3 * std::max(case_.time.stroke_increment, 1e-6);
+  for (const Die& d : dies_) reference_velocity_ = std::max(reference_velocity_, d.velocity(DieState{}, probe).norm());
   for (int k = 0; k < imposed_.values.size(); ++k)
     if (imposed_.prescribed[k] && k % 4 != 3) reference_velocity_ = std::max(reference_velocity_, std::abs(imposed_.values[k]));
   if (case_.time.enabled && !(reference_velocity_ > 0.0))
@@ -229,8 +240,7 @@ void Run::setup() {
                                   "needs a motion");
 
   if (options_.resume) {
-    state_ = read_checkpoint(options_.output_directory.empty() ? output_directory(case_, options_) + "/checkpoint.h5"
-                                                               : options_.output_directory + "/checkpoint.h5");
+    state_ = read_checkpoint(output_directory(case_, options_) + "/checkpoint.h5");
     if (state_.dies.size() != dies_.size())
       throw InputError("checkpoint: " + std::to_string(state_.dies.size()) + " dies, the case has " +
                        std::to_string(dies_.size()));
@@ -295,8 +305,7 @@ double Run::choose_time_step(double nominal) {
     const int lower = 1 - upper_die_;
     const double closing = dies_[lower].velocity(state_.dies[lower], dt).z() -
                            dies_[upper_die_].velocity(state_.dies[upper_die_], dt).z();
-    const double gap = die_gap0_ + state_.dies[upper_die_].displacement.z() - state_.dies[lower].displacement.z();
-    if (closing > 0.0) dt = std::min(dt, (gap - t.final_gap) / closing);
+    if (closing > 0.0) dt = std::min(dt, (die_gap() - t.final_gap) / closing);
   }
   return dt;
 }
@@ -441,13 +450,10 @@ std::string Run::stop_reason() const {
   if (state_.time >= t.end_time * (1.0 - tolerance)) return "end time reached";
   if (std::isfinite(t.final_stroke) && state_.dies[t.stroke_die].stroke >= t.final_stroke * (1.0 - tolerance))
     return "final stroke reached";
-  if (t.final_gap > 0.0) {
-    const double gap = die_gap0_ + state_.dies[upper_die_].displacement.z() - state_.dies[1 - upper_die_].displacement.z();
-    if (gap <= t.final_gap * (1.0 + tolerance)) return "final die gap reached";
-  }
+  if (t.final_gap > 0.0 && die_gap() <= t.final_gap * (1.0 + tolerance)) return "final die gap reached";
   if (std::isfinite(t.max_load))
-    for (const LoadRecord& r : state_.loads)
-      if (r.increment == state_.increment && r.force.norm() >= t.max_load) return "maximum load reached";
+    for (auto r = state_.loads.rbegin(); r != state_.loads.rend() && r->increment == state_.increment; ++r)
+      if (r->force.norm() >= t.max_load) return "maximum load reached";
   for (std::size_t d = 0; d < dies_.size(); ++d)
     if (state_.dies[d].speed_factor < 1e-3) return "press stalled at its load limit (die '" + dies_[d].name + "')";
   if (state_.increment >= t.max_increments) return "maximum number of increments reached";
@@ -459,11 +465,77 @@ double Run::progress() const {
   double f = 0.0;
   if (std::isfinite(t.end_time)) f = std::max(f, state_.time / t.end_time);
   if (std::isfinite(t.final_stroke)) f = std::max(f, state_.dies[t.stroke_die].stroke / t.final_stroke);
-  if (t.final_gap > 0.0) {
-    const double gap = die_gap0_ + state_.dies[upper_die_].displacement.z() - state_.dies[1 - upper_die_].displacement.z();
-    f = std::max(f, (die_gap0_ - gap) / (die_gap0_ - t.final_gap));
-  }
+  if (t.final_gap > 0.0) f = std::max(f, (die_gap0_ - die_gap()) / (die_gap0_ - t.final_gap));
   return f;
+}
+
+double Run::die_gap() const {
+  return die_gap0_ + state_.dies[upper_die_].displacement.z() - state_.dies[1 - upper_die_].displacement.z();
+}
+
+double Run::press_speed() const {
+  // The fastest die over a short probe step (an increment is far longer).
+  const double probe = 1e-3 * case_.time.stroke_increment / reference_velocity_;
+  double speed = reference_velocity_;
+  for (std::size_t d = 0; d < dies_.size(); ++d) speed = std::max(speed, dies_[d].velocity(state_.dies[d], probe).norm());
+  return speed;
+}
+
+void Run::set_contact_scales() {
+  // Friction needs σ₀ and K at the contact nodes: taken from the last
+  // increment's solution (frozen within the increment, so the tangent stays exact).
+  const ElementFields fields = element_fields(state_.mesh, *law_, states_, state_.unknowns);
+  const double reference_rate = reference_velocity_ / body_size_;
+  std::vector<double> weight(state_.mesh.nodes.size(), 0.0);
+  std::fill(node_flow_stress_.begin(), node_flow_stress_.end(), 0.0);
+  std::fill(node_consistency_.begin(), node_consistency_.end(), 0.0);
+  for (int e = 0; e < state_.mesh.tet_count(); ++e) {
+    const double rate = fields.rate[e] > 0.0 ? fields.rate[e] : reference_rate;
+    const double flow = law_->flow_stress(rate, states_[e]), k = law_->consistency(states_[e]);
+    for (int node : state_.mesh.tets[e]) node_flow_stress_[node] += flow, node_consistency_[node] += k, weight[node] += 1.0;
+  }
+  double mean_flow_stress = 0.0;
+  for (std::size_t i = 0; i < weight.size(); ++i) {
+    node_flow_stress_[i] /= weight[i], node_consistency_[i] /= weight[i];
+    mean_flow_stress += node_flow_stress_[i] / static_cast<double>(weight.size());
+  }
+  // Penalty ρ = factor × σ₀/v_ref: the penetration velocity σn/ρ is then
+  // about 1/factor of the press speed, whatever the flow stress does
+  // (hardening, temperature) along the stroke.
+  penalty_ = case_.contact.penalty * mean_flow_stress / reference_velocity_;
+  reference_force_ = mean_flow_stress * std::pow(mesh::volume(state_.mesh), 2.0 / 3.0);
+}
+
+bool Run::update_geometry(double dt, std::string& failure) {
+  Timers::Scope scope(timers_, "update");
+  // Strain rates of the solution on the geometry it was solved on, for ε̄.
+  solved_rates_ = element_fields(state_.mesh, *law_, states_, state_.unknowns).rate;
+  // x ← x + Δt v; contact nodes back onto the die at its new position.
+  const double volume_before = mesh::volume(state_.mesh);
+  for (int i = 0; i < state_.mesh.node_count(); ++i) state_.mesh.nodes[i] += dt * state_.unknowns.nodal.segment<3>(4 * i);
+  for (std::size_t d = 0; d < dies_.size(); ++d) dies_[d].advance(state_.dies[d], dt);
+  record_loads(state_.increment + 1, state_.time + dt);
+  const double volume_flow = mesh::volume(state_.mesh);
+  for (std::size_t i = 0; i < contact_.candidates().size(); ++i) {
+    const contact::ContactCandidate& c = contact_.candidates()[i];
+    const Eigen::Vector3d& shift = state_.dies[c.die].displacement;
+    const die::SurfaceProjection p = dies_[c.die].surface->project(state_.mesh.nodes[c.node] - shift);
+    if (contact_.pressure(int(i), state_.unknowns.nodal) > 0.0 || p.distance < 0.0)
+      state_.mesh.nodes[c.node] = p.point + shift;
+  }
+  for (int e = 0; e < state_.mesh.tet_count(); ++e)
+    if (mesh::signed_volume(state_.mesh, e) <= 0.0) {
+      failure = "element " + std::to_string(e + 1) + " would invert";
+      return false;
+    }
+  const double volume_after = mesh::volume(state_.mesh);
+  state_.volume.solver += volume_flow - volume_before;
+  if (compensate_volume_) // g V Δt, with g as set in try_increment()
+    state_.volume.compensation += (state_.volume.initial - volume_before) * std::min(1.0, dt / nominal_step_);
+  state_.volume.projection += volume_after - volume_flow;
+  state_.volume.largest_increment =
+      std::max(state_.volume.largest_increment, std::abs(volume_after - volume_before) / volume_before);
+  return true;
 }
 
 void Run::execute() {
@@ -512,41 +584,11 @@ void Run::execute() {
   const double progress_at_start = progress();
   std::string reason;
   while ((reason = stop_reason()).empty()) {
-    // Friction needs σ₀ and K at the contact nodes: taken from the last
-    // increment's solution (frozen within the increment, so the tangent stays exact).
-    if (!dies_.empty()) {
-      const ElementFields fields = element_fields(state_.mesh, *law_, states_, state_.unknowns);
-      const double reference_rate = reference_velocity_ / body_size_;
-      std::vector<double> weight(state_.mesh.nodes.size(), 0.0);
-      std::fill(node_flow_stress_.begin(), node_flow_stress_.end(), 0.0);
-      std::fill(node_consistency_.begin(), node_consistency_.end(), 0.0);
-      for (int e = 0; e < state_.mesh.tet_count(); ++e) {
-        const double rate = fields.rate[e] > 0.0 ? fields.rate[e] : reference_rate;
-        const double flow = law_->flow_stress(rate, states_[e]), k = law_->consistency(states_[e]);
-        for (int node : state_.mesh.tets[e]) node_flow_stress_[node] += flow, node_consistency_[node] += k, weight[node] += 1.0;
-      }
-      double mean_flow_stress = 0.0;
-      for (std::size_t i = 0; i < weight.size(); ++i) {
-        node_flow_stress_[i] /= weight[i], node_consistency_[i] /= weight[i];
-        mean_flow_stress += node_flow_stress_[i] / static_cast<double>(weight.size());
-      }
-      // Penalty ρ = factor × σ₀/v_ref: the penetration velocity σn/ρ is then
-      // about 1/factor of the press speed, whatever the flow stress does
-      // (hardening, temperature) along the stroke.
-      penalty_ = case_.contact.penalty * mean_flow_stress / reference_velocity_;
-      reference_force_ = mean_flow_stress * std::pow(mesh::volume(state_.mesh), 2.0 / 3.0);
-    }
-
-    // Δt: stroke increment of the fastest die, displacement limit, stop criteria.
-    double speed = reference_velocity_;
-    for (std::size_t d = 0; d < dies_.size(); ++d) {
-      const double probe = 1e-3 * t.stroke_increment / reference_velocity_;
-      speed = std::max(speed, dies_[d].velocity(state_.dies[d], probe).norm());
-    }
-    nominal_step_ = t.stroke_increment / speed;
+    if (!dies_.empty()) set_contact_scales();
+    nominal_step_ = t.stroke_increment / press_speed();
     double dt = choose_time_step(nominal_step_);
     const double nominal = dt;
-    const RunState saved = state_;
+    const IncrementStart saved{state_.mesh.nodes, state_.unknowns, state_.dies, state_.loads.size()};
     solver::NewtonReport report;
     int cuts = 0;
     for (;;) {
@@ -561,40 +603,12 @@ void Run::execute() {
         }
       }
       std::string failure = report.failure;
-      if (ok) {
-        // Update: x ← x + Δt v; contact nodes back onto the die at its new position.
-        Timers::Scope scope(timers_, "update");
-        const double volume_before = mesh::volume(state_.mesh);
-        for (int i = 0; i < state_.mesh.node_count(); ++i)
-          state_.mesh.nodes[i] += dt * state_.unknowns.nodal.segment<3>(4 * i);
-        for (std::size_t d = 0; d < dies_.size(); ++d) dies_[d].advance(state_.dies[d], dt);
-        record_loads(state_.increment + 1, state_.time + dt);
-        const double volume_flow = mesh::volume(state_.mesh);
-        for (std::size_t i = 0; i < contact_.candidates().size(); ++i) {
-          const contact::ContactCandidate& c = contact_.candidates()[i];
-          const Eigen::Vector3d& shift = state_.dies[c.die].displacement;
-          const die::SurfaceProjection p = dies_[c.die].surface->project(state_.mesh.nodes[c.node] - shift);
-          if (contact_.pressure(int(i), state_.unknowns.nodal) > 0.0 || p.distance < 0.0)
-            state_.mesh.nodes[c.node] = p.point + shift;
-        }
-        const double volume_after = mesh::volume(state_.mesh);
-        int inverted = -1;
-        for (int e = 0; e < state_.mesh.tet_count() && inverted < 0; ++e)
-          if (mesh::signed_volume(state_.mesh, e) <= 0.0) inverted = e;
-        if (inverted < 0) {
-          state_.volume.solver += volume_flow - volume_before;
-          if (compensate_volume_) // g V Δt, with g as set in try_increment()
-            state_.volume.compensation += (state_.volume.initial - volume_before) * std::min(1.0, dt / nominal_step_);
-          state_.volume.projection += volume_after - volume_flow;
-          state_.volume.largest_increment =
-              std::max(state_.volume.largest_increment, std::abs(volume_after - volume_before) / volume_before);
-          break;
-        }
-        failure = "element " + std::to_string(inverted + 1) + " would invert";
-      }
+      if (ok && update_geometry(dt, failure)) break;
       // Failure: back to the last good state, halve Δt.
-      const std::vector<LoadRecord> loads = saved.loads;
-      state_ = saved;
+      state_.mesh.nodes = saved.nodes;
+      state_.unknowns = saved.unknowns;
+      state_.dies = saved.dies;
+      state_.loads.resize(saved.load_count);
       if (++cuts > t.max_cuts) {
         write_outputs(true);
         write_summary(seconds_since(start_));
@@ -612,14 +626,9 @@ void Run::execute() {
     state_.newton_iterations += static_cast<int>(report.iterations.size());
     last_report_ = report;
     // ε̄ += Δt ε̄̇ per element, with the rates of the converged increment on the geometry it was solved on.
-    {
-      Timers::Scope scope(timers_, "update");
-      mesh::TetMesh solved_on = saved.mesh;
-      const ElementFields fields = element_fields(solved_on, *law_, states_, state_.unknowns);
-      for (int e = 0; e < state_.mesh.tet_count(); ++e) {
-        state_.equivalent_strain[e] += dt * fields.rate[e];
-        states_[e].equivalent_strain = state_.equivalent_strain[e];
-      }
+    for (int e = 0; e < state_.mesh.tet_count(); ++e) {
+      state_.equivalent_strain[e] += dt * solved_rates_[e];
+      states_[e].equivalent_strain = state_.equivalent_strain[e];
     }
     // A load-limited press slows down for the next increment.
     for (std::size_t d = 0; d < dies_.size(); ++d) {

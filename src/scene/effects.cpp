@@ -53,7 +53,7 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
   for (const DieSpec& d : c.dies)
     if (d.friction.kind != contact::FrictionKind::frictionless) add("friction");
   for (const material::Material* law : laws)
-    if (dynamic_cast<const material::HanselSpittel*>(law)) add("hardening");
+    if (law->hardens()) add("hardening");
   // Registry order, so logs of different scenes compare line by line.
   std::vector<std::string> ordered;
   for (const Effect& e : effect_registry())

@@ -52,6 +52,9 @@ public:
   /// the K of viscoplastic (Norton) friction; the shear modulus for elastic laws.
   virtual double consistency(const PointState& state) const = 0;
 
+  /// True when the stress depends on ε̄ (the body needs ε̄ accumulated).
+  virtual bool hardens() const { return false; }
+
   /// Strain-rate sensitivity m (-): load ∝ velocity^m (0 for elastic laws).
   virtual double rate_sensitivity(const PointState& state) const = 0;
 
@@ -132,6 +135,7 @@ public:
                          Mat6& tangent) const override;
   std::string describe() const override;
   bool is_linear() const override { return false; }
+  bool hardens() const override { return true; }
   double secant_viscosity(double equivalent_rate, const PointState& state) const override;
   double consistency(const PointState& state) const override;
   double rate_sensitivity(const PointState& state) const override { return c_.m3 + c_.m8 * state.temperature; }
