@@ -10,6 +10,7 @@
 #include <cstring>
 #include <exception>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -21,6 +22,11 @@ usage:
   anvil run CASE.yaml --resume DIR
                                  continue a stopped or killed run from the last
                                  checkpoint in DIR (DIR/checkpoint.h5)
+  anvil run CASE.yaml --set KEY=VALUE ...
+                                 change a key of the case file for this run,
+                                 e.g. --set time.stroke_increment=0.1
+                                      --set dies[].friction.factor=0.1
+                                 (dies[] = every die, dies[1] = the second)
   anvil output-dir CASE.yaml [-o DIR]
                                  print the folder a run would write to
   anvil --schema                 every case-file and material-card key: type,
@@ -63,6 +69,7 @@ int main(int argc, char** argv) {
   if (command != "run" && command != "output-dir") return usage_error("unknown command '" + command + "'");
 
   std::string case_file;
+  std::vector<std::string> overrides;
   anvil::scene::RunOptions options;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -73,6 +80,9 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) return usage_error("--resume needs the directory of the run to continue");
       options.output_directory = argv[++i];
       options.resume = true;
+    } else if (arg == "--set") {
+      if (i + 1 >= argc) return usage_error("--set needs KEY=VALUE, e.g. --set time.stroke_increment=0.1");
+      overrides.emplace_back(argv[++i]);
     } else if (!arg.empty() && arg[0] == '-') {
       return usage_error("unknown option '" + arg + "'");
     } else if (case_file.empty()) {
@@ -84,7 +94,7 @@ int main(int argc, char** argv) {
   if (case_file.empty()) return usage_error("'" + command + "' needs a case file");
 
   try {
-    const anvil::scene::Case c = anvil::scene::read_case(case_file);
+    const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
     if (command == "output-dir") {
       std::puts(anvil::scene::output_directory(c, options).c_str());
       return 0;

@@ -184,11 +184,12 @@ std::unique_ptr<material::Material> read_law(const CheckedYaml& doc);
 
 } // namespace
 
-Case read_case(const std::string& path) {
-  const CheckedYaml doc(path, case_schema());
+Case read_case(const std::string& path, const std::vector<std::string>& overrides) {
+  const CheckedYaml doc(path, case_schema(), overrides);
   const YAML::Node& root = doc.root();
   Case c;
   c.path = path;
+  c.overrides = overrides;
   c.title = doc.text(root, "title", "title");
   const YAML::Node output = root["output"] ? root["output"] : YAML::Node(YAML::NodeType::Map);
   c.output_directory = doc.text(output, "directory", "output.directory");

@@ -263,6 +263,7 @@ void Run::log_header() const {
   const BodySpec& body = case_.bodies.front();
   log::info("anvil %s — %s%s", ANVIL_VERSION, case_.path.c_str(), options_.resume ? " (resumed)" : "");
   if (!case_.title.empty()) log::info("  %s", case_.title.c_str());
+  for (const std::string& change : case_.overrides) log::info("  --set %s", change.c_str());
   log::info("body '%s': %d nodes, %d tetrahedra, volume %.6g mm3", body.name.c_str(), state_.mesh.node_count(),
             state_.mesh.tet_count(), mesh::volume(state_.mesh));
   log::info("  material %s: %s, at %g C", body.material_file.c_str(), law_->describe().c_str(), body_state_.temperature);

@@ -34,7 +34,9 @@ std::string shown_value(const YAML::Node& node) {
 
 } // namespace
 
-CheckedYaml::CheckedYaml(const std::string& path, const std::vector<KeySpec>& schema) : path_(path), schema_(schema) {
+CheckedYaml::CheckedYaml(const std::string& path, const std::vector<KeySpec>& schema,
+                         const std::vector<std::string>& overrides)
+    : path_(path), schema_(schema) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file");
   try {
@@ -43,10 +45,89 @@ CheckedYaml::CheckedYaml(const std::string& path, const std::vector<KeySpec>& sc
     throw InputError(where(path, e.mark.line + 1) + ": YAML syntax error: " + e.msg);
   }
   if (!root_.IsMap()) throw InputError(path + ": expected a YAML map of keys at the top level");
+  for (const std::string& text : overrides) apply_override(text);
   check(root_, "", "");
 }
 
+namespace {
+
+/// One step of an override path: a key, optionally indexing a list.
+struct PathStep {
+  std::string key;
+  enum class Index { none, every, one } index = Index::none;
+  std::size_t element = 0;
+};
+
+} // namespace
+
+void CheckedYaml::apply_override(const std::string& text) {
+  const auto bad = [&](const std::string& why) -> InputError { return InputError("--set '" + text + "': " + why); };
+  const auto equals = text.find('=');
+  if (equals == std::string::npos || equals == 0) throw bad("expected key.path=value, e.g. time.stroke_increment=0.1");
+  const std::string key_path = text.substr(0, equals);
+  YAML::Node value;
+  try {
+    value = YAML::Load(text.substr(equals + 1));
+  } catch (const YAML::Exception& e) {
+    throw bad("the value is not valid YAML: " + e.msg);
+  }
+  std::vector<PathStep> steps;
+  std::string spec_path;
+  std::istringstream split(key_path);
+  for (std::string part; std::getline(split, part, '.');) {
+    PathStep step;
+    const auto open = part.find('[');
+    step.key = part.substr(0, open);
+    if (open != std::string::npos) {
+      const std::string inside = part.substr(open + 1, part.size() - open - 2);
+      if (part.back() != ']' || step.key.empty()) throw bad("'" + part + "' is not key, key[] or key[N]");
+      if (inside.empty()) step.index = PathStep::Index::every;
+      else {
+        std::size_t used = 0;
+        try {
+          step.element = std::stoul(inside, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != inside.size()) throw bad("'" + inside + "' is not a list index");
+        step.index = PathStep::Index::one;
+      }
+    }
+    if (step.key.empty()) throw bad("empty key in '" + key_path + "'");
+    spec_path = join(spec_path, step.key + (step.index == PathStep::Index::none ? "" : "[]"));
+    steps.push_back(step);
+  }
+  if (find_key(schema_, spec_path) == nullptr)
+    throw bad("no key '" + spec_path + "' in the schema (run 'anvil --schema' for the list)");
+
+  // Walks the document; `node` is a handle, so assignments change root_.
+  const auto walk = [&](auto&& self, YAML::Node node, std::size_t i) -> void {
+    const PathStep& step = steps[i];
+    const bool last = i + 1 == steps.size();
+    const auto assign_or_descend = [&](YAML::Node parent, const auto& index) {
+      if (last) {
+        parent[index] = YAML::Clone(value);
+        overridden_.emplace_back(parent[index], text);
+        return;
+      }
+      if (!parent[index]) parent[index] = YAML::Node(YAML::NodeType::Map);
+      if (!parent[index].IsMap()) throw bad("'" + steps[i + 1].key + "' sits under something that is not a map in " + path_);
+      self(self, parent[index], i + 1);
+    };
+    if (step.index == PathStep::Index::none) return assign_or_descend(node, step.key);
+    YAML::Node list = node[step.key];
+    if (!list || !list.IsSequence()) throw bad("'" + step.key + "' is not a list in " + path_);
+    if (step.index == PathStep::Index::one && step.element >= list.size())
+      throw bad("'" + step.key + "' has " + std::to_string(list.size()) + " elements (indices from 0)");
+    for (std::size_t e = 0; e < list.size(); ++e)
+      if (step.index == PathStep::Index::every || e == step.element) assign_or_descend(list, e);
+  };
+  walk(walk, root_, 0);
+}
+
 std::string CheckedYaml::at(const YAML::Node& node) const {
+  for (const auto& [overridden, text] : overridden_)
+    if (node.is(overridden)) return "--set '" + text + "'";
   const int line = node.Mark().line;
   return where(path_, line >= 0 ? line + 1 : 0);
 }

@@ -15,9 +15,11 @@ namespace anvil::scene {
 
 class CheckedYaml {
 public:
-  /// Parses `path` and checks every key against `schema` (unknown keys,
+  /// Parses `path`, applies the command-line `overrides` ("key.path=value",
+  /// see apply_override) and checks every key against `schema` (unknown keys,
   /// types, ranges, choices, required keys). Throws InputError.
-  CheckedYaml(const std::string& path, const std::vector<KeySpec>& schema);
+  CheckedYaml(const std::string& path, const std::vector<KeySpec>& schema,
+              const std::vector<std::string>& overrides = {});
 
   const YAML::Node& root() const { return root_; }
   const std::string& path() const { return path_; }
@@ -41,6 +43,9 @@ public:
   [[noreturn]] void fail(const YAML::Node& node, const std::string& shown_key, const std::string& message) const;
 
 private:
+  /// One "key.path=value" override: "[]" after a list key means every element,
+  /// "[N]" element N; maps on the way are created; the value is parsed as YAML.
+  void apply_override(const std::string& override_text);
   void check(const YAML::Node& node, const std::string& spec_prefix, const std::string& shown_prefix) const;
   void check_value(const YAML::Node& value, const KeySpec& spec, const std::string& shown) const;
   const KeySpec& spec(const std::string& spec_path) const;
@@ -48,6 +53,8 @@ private:
   std::string path_;
   const std::vector<KeySpec>& schema_;
   YAML::Node root_;
+  /// Nodes set from the command line, and the text that set them (for at()).
+  std::vector<std::pair<YAML::Node, std::string>> overridden_;
 };
 
 } // namespace anvil::scene

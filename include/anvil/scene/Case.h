@@ -70,6 +70,7 @@ struct ContactSpec {
 
 struct Case {
   std::string path;  ///< the case file
+  std::vector<std::string> overrides; ///< command-line "key.path=value" changes applied to the file
   std::string title;
   std::string output_directory; ///< empty = out/<case name>
   bool write_vtk = true;
@@ -85,8 +86,11 @@ struct Case {
   int checkpoint_every = 10; ///< HDF5 checkpoint every N increments (and the last); 0 = never
 };
 
-/// Reads and checks a case file. Throws InputError naming file, line, key.
-Case read_case(const std::string& path);
+/// Reads and checks a case file, with command-line `overrides` applied first:
+/// "key.path=value", where "dies[]" means every die and "dies[1]" the second,
+/// e.g. "dies[].friction.factor=0.1" or "bodies[0].mesh.element_size=1.5".
+/// Throws InputError naming file, line and key (or the override).
+Case read_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
 /// A material card as read.
 struct MaterialCard {

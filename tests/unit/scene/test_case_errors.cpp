@@ -92,3 +92,30 @@ TEST_CASE("material cards must cite a source for every number", "[unit]") {
     CHECK_NOTHROW(scene::read_material(entry.path().string()));
   }
 }
+
+TEST_CASE("command-line overrides change one key, every list element or one element", "[unit]") {
+  const std::string path = write_case("overrides.yaml", kValid);
+  const scene::Case c = scene::read_case(path, {"bodies[0].mesh.element_size=0.25", "boundary[].velocity=[0, 0, -2]",
+                                                "boundary[0].velocity=[0, 0, 0]", "solver.tolerance=1e-6"});
+  CHECK(c.bodies[0].mesh.element_size == 0.25);
+  CHECK(*c.boundary[0].velocity[2] == 0.0);
+  CHECK(*c.boundary[1].velocity[2] == -2.0);
+  CHECK(c.newton.tolerance == 1e-6); // a map absent from the file is created
+  CHECK(c.overrides.size() == 4);
+
+  using Catch::Contains;
+  auto error_with = [&](const std::string& change) {
+    try {
+      scene::read_case(path, {change});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  CHECK_THAT(error_with("bodies[0].mesh.element_size=-1"),
+             Contains("--set 'bodies[0].mesh.element_size=-1'") && Contains("> 0"));
+  CHECK_THAT(error_with("bodies[].mesh.elementsize=1"), Contains("no key 'bodies[].mesh.elementsize'"));
+  CHECK_THAT(error_with("boundary[5].velocity=[0, 0, 1]"), Contains("has 2 elements"));
+  CHECK_THAT(error_with("time.stroke_increment"), Contains("expected key.path=value"));
+  CHECK_THAT(error_with("title.x=1"), Contains("no key 'title.x'"));
+}
