@@ -3,51 +3,25 @@
 #pragma once
 #include "test_common.h"
 
+#include "anvil/io/RunResults.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Simulation.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
-struct LoadRow {
-  int increment;
-  double time, stroke;
-  Eigen::Vector3d force;
-};
+using anvil::io::LoadRow;
 
 struct RunOutputs {
   std::string directory;
 
   /// Rows of loads.csv for one surface, in order.
-  std::vector<LoadRow> loads(const std::string& surface) const {
-    std::ifstream in(directory + "/loads.csv");
-    std::vector<LoadRow> rows;
-    std::string line;
-    std::getline(in, line); // header
-    while (std::getline(in, line)) {
-      std::vector<std::string> cols;
-      std::istringstream s(line);
-      for (std::string col; std::getline(s, col, ',');) cols.push_back(col);
-      REQUIRE(cols.size() == 7);
-      if (cols[2] != surface) continue;
-      rows.push_back({std::stoi(cols[0]), std::stod(cols[1]), std::stod(cols[3]),
-                      {std::stod(cols[4]), std::stod(cols[5]), std::stod(cols[6])}});
-    }
-    return rows;
-  }
+  std::vector<LoadRow> loads(const std::string& surface) const { return anvil::io::read_loads(directory, surface); }
 
   /// The first number after "key": in summary.json.
-  double summary_number(const std::string& key) const {
-    std::ifstream in(directory + "/summary.json");
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto at = text.find("\"" + key + "\": ");
-    REQUIRE(at != std::string::npos);
-    return std::stod(text.substr(at + key.size() + 4));
-  }
+  double summary_number(const std::string& key) const { return anvil::io::read_summary_number(directory, key); }
 
   /// The last checkpoint (time-stepping runs write one at the end).
   anvil::scene::RunState final_state() const { return anvil::scene::read_checkpoint(directory + "/checkpoint.h5"); }

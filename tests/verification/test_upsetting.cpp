@@ -4,6 +4,7 @@
 #include "test_common.h"
 
 #include "anvil/core/log.h"
+#include "anvil/material/homogeneous_compression.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Simulation.h"
@@ -18,7 +19,6 @@ using namespace anvil;
 namespace {
 
 constexpr double kRadius = 10.0, kHeight = 15.0, kSpeed = 10.0; // cases/upsetting_frictionless.yaml
-constexpr double kConsistency = 36.67, kSensitivity = 0.1685;   // materials/steel_c45_1100C.yaml
 
 /// Runs the frictionless upsetting case with `friction` on both dies.
 RunOutputs upset(const contact::FrictionLaw& friction, const std::string& tag) {
@@ -28,12 +28,6 @@ RunOutputs upset(const contact::FrictionLaw& friction, const std::string& tag) {
   return run_case(c, "anvil_upsetting_" + tag);
 }
 
-/// Exact load on the quarter model at height H (homogeneous flow).
-double exact_load(double height, double volume) {
-  const double rate = kSpeed / height;
-  return volume / height * std::sqrt(3.0) * kConsistency * std::pow(std::sqrt(3.0) * rate, kSensitivity);
-}
-
 } // namespace
 
 TEST_CASE("frictionless Norton-Hoff upsetting follows the exact homogeneous solution to 50 %", "[verification]") {
@@ -41,11 +35,13 @@ TEST_CASE("frictionless Norton-Hoff upsetting follows the exact homogeneous solu
   const RunOutputs out = upset({}, "frictionless");
   const auto rows = out.loads("top");
   REQUIRE(rows.size() >= 20);
-  const double volume = std::numbers::pi * kRadius * kRadius * kHeight / 4.0;
+  const double volume = std::numbers::pi * kRadius * kRadius * kHeight / 4.0; // quarter model
+  const scene::MaterialCard card = scene::read_material(source_path("materials/steel_c45_1100C.yaml"));
   // Each increment's load is solved on the geometry at its start: H = H0 − previous stroke.
   double previous_stroke = 0.0, worst = 0.0;
   for (const LoadRow& r : rows) {
-    const double exact = exact_load(kHeight - previous_stroke, volume);
+    const double exact =
+        material::homogeneous_compression_load(*card.law, volume, kHeight - previous_stroke, kHeight, kSpeed, 1100.0);
     worst = std::max(worst, std::abs(r.force.z() - exact) / exact);
     previous_stroke = r.stroke;
   }

@@ -1,0 +1,320 @@
+// anvil_study: what accuracy costs in time (issue 3 §9).
+//
+// Runs a case over lists of values of case keys (mesh size, stroke increment,
+// any other key of the case file), one key at a time with the other varied
+// keys at their finest value (the last one listed), and records each run's
+// error and wall time in DIR/study.csv; tools/study plots it (DIR/study.png).
+//
+// The error of a run is the worst relative error of its press load over the
+// stroke, on the die whose stroke stops the run:
+//   exact-upsetting  against frictionless homogeneous compression,
+//                    F = (V/H) σ₀(v/H, ln(H0/H)), with V and H0 of the
+//                    nominal body (cylinder or box, not its mesh), at the
+//                    height where each increment is solved (its start);
+//   finest           against the run with every key at its finest value, at
+//                    19 strokes evenly spaced over the stroke.
+#include "anvil/core/error.h"
+#include "anvil/core/log.h"
+#include "anvil/io/RunResults.h"
+#include "anvil/io/atomic_file.h"
+#include "anvil/material/homogeneous_compression.h"
+#include "anvil/scene/Case.h"
+#include "anvil/scene/Simulation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace anvil;
+
+constexpr const char* kUsage = R"(anvil_study — error against wall time over lists of case settings
+
+usage: anvil_study CASE.yaml --vary KEY=V1,V2,... [--vary KEY=...] [--set KEY=VALUE ...]
+                   [--error exact-upsetting|finest] [-o DIR]
+
+  --vary KEY=V1,V2,...  values of one case key, coarse to fine (the last one is
+                        the finest); KEY as for 'anvil run --set', e.g.
+                        bodies[].mesh.element_size=2,1.5,1 or time.stroke_increment=0.5,0.25
+  --set KEY=VALUE       a change applied to every run (VTK output is off unless
+                        --set output.vtk=true)
+  --error exact-upsetting   frictionless upsetting of a generated cylinder or box
+                            against the exact homogeneous load (default when every die
+                            is frictionless)
+  --error finest            against the run with every key at its finest value
+  -o DIR                out/study_<case name> by default
+
+Writes DIR/study.csv (key, value, error, wall time, increments, Newton
+iterations, nodes, run folder) and the runs in DIR/runs/.
+)";
+
+enum class ErrorKind { exact_upsetting, finest };
+
+struct Parameter {
+  std::string key;
+  std::vector<std::string> values; ///< coarse to fine
+};
+
+/// A press-load curve as solved: the load of each increment at the stroke
+/// where it was solved (the start of the increment).
+struct LoadCurve {
+  std::vector<double> stroke, load; // mm, N
+  double at(double s) const {
+    if (s <= stroke.front()) return load.front();
+    for (std::size_t i = 1; i < stroke.size(); ++i)
+      if (stroke[i] >= s) {
+        const double w = (s - stroke[i - 1]) / (stroke[i] - stroke[i - 1]);
+        return (1.0 - w) * load[i - 1] + w * load[i];
+      }
+    return load.back();
+  }
+};
+
+struct Run {
+  std::string directory;
+  double wall_time = 0.0; ///< s
+  int increments = 0, newton_iterations = 0, nodes = 0;
+  LoadCurve curve;
+};
+
+LoadCurve read_curve(const std::string& directory, const std::string& die) {
+  const std::vector<io::LoadRow> rows = io::read_loads(directory, die);
+  if (rows.empty()) throw RunError(directory + "/loads.csv: no load rows for die '" + die + "'");
+  LoadCurve curve;
+  double start = 0.0;
+  for (const io::LoadRow& row : rows) {
+    curve.stroke.push_back(start);
+    curve.load.push_back(row.force.norm());
+    start = row.stroke;
+  }
+  return curve;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::istringstream in(text);
+  for (std::string part; std::getline(in, part, separator);) parts.push_back(part);
+  return parts;
+}
+
+/// Nominal volume (mm³) of a generated body: the shape, not its polygonal mesh.
+double nominal_volume(const scene::MeshSpec& m) {
+  using std::numbers::pi;
+  if (m.generate == "cylinder") return pi * m.radius * m.radius * m.height;
+  if (m.generate == "quarter_cylinder") return pi * m.radius * m.radius * m.height / 4.0;
+  if (m.generate == "box") return m.size.x() * m.size.y() * m.size.z();
+  throw InputError(m.source + ": --error exact-upsetting needs a generated cylinder, quarter_cylinder or box body");
+}
+
+/// The exact homogeneous-compression error of a run of case `c`.
+class ExactUpsetting {
+public:
+  explicit ExactUpsetting(const scene::Case& c) {
+    const scene::BodySpec& body = c.bodies.front();
+    const scene::DieSpec& die = c.dies.at(c.time.stroke_die);
+    for (const scene::DieSpec& d : c.dies)
+      if (d.friction.kind != contact::FrictionKind::frictionless)
+        throw InputError(d.source + ": --error exact-upsetting needs frictionless dies; die '" + d.name + "' has friction");
+    if (die.motion != "constant")
+      throw InputError(die.source + ": --error exact-upsetting needs a die at constant velocity");
+    card_ = scene::read_material(body.material_file);
+    volume_ = nominal_volume(body.mesh);
+    height_ = body.mesh.generate == "box" ? body.mesh.size.z() : body.mesh.height;
+    speed_ = die.velocity.norm();
+    temperature_ = body.temperature.value_or(card_.temperature.value_or(20.0));
+  }
+  double error(const LoadCurve& curve) const {
+    double worst = 0.0;
+    for (std::size_t i = 0; i < curve.stroke.size(); ++i) {
+      const double exact = material::homogeneous_compression_load(*card_.law, volume_, height_ - curve.stroke[i],
+                                                                  height_, speed_, temperature_);
+      worst = std::max(worst, std::abs(curve.load[i] - exact) / exact);
+    }
+    return worst;
+  }
+
+private:
+  scene::MaterialCard card_;
+  double volume_ = 0.0, height_ = 0.0, speed_ = 0.0, temperature_ = 0.0;
+};
+
+/// Worst relative difference to `reference` at 19 strokes over its range.
+double error_against(const LoadCurve& curve, const LoadCurve& reference, double final_stroke) {
+  double worst = 0.0;
+  for (int k = 1; k < 20; ++k) {
+    const double s = final_stroke * k / 20.0, expected = reference.at(s);
+    worst = std::max(worst, std::abs(curve.at(s) - expected) / expected);
+  }
+  return worst;
+}
+
+class Study {
+public:
+  Study(std::string case_file, std::vector<Parameter> parameters, std::vector<std::string> fixed, std::string out)
+      : case_file_(std::move(case_file)), parameters_(std::move(parameters)), fixed_(std::move(fixed)),
+        out_(std::move(out)) {}
+
+  /// The run with every varied key at its finest value except `key` = `value`.
+  const Run& run(const std::string& key, const std::string& value) {
+    std::vector<std::string> overrides{"output.vtk=false"};
+    overrides.insert(overrides.end(), fixed_.begin(), fixed_.end());
+    std::string label;
+    for (const Parameter& p : parameters_) {
+      const std::string& v = p.key == key ? value : p.values.back();
+      overrides.push_back(p.key + "=" + v);
+      label += (label.empty() ? "" : " ") + p.key + "=" + v;
+    }
+    if (auto found = runs_.find(label); found != runs_.end()) return found->second;
+
+    const scene::Case c = scene::read_case(case_file_, overrides);
+    Run r;
+    r.directory = out_ + "/runs/run_" + std::to_string(runs_.size() + 1);
+    std::filesystem::remove_all(r.directory);
+    std::printf("run %zu: %s ... ", runs_.size() + 1, label.c_str());
+    std::fflush(stdout);
+    const auto start = std::chrono::steady_clock::now();
+    scene::run(c, {r.directory});
+    r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.increments = static_cast<int>(io::read_summary_number(r.directory, "increments"));
+    r.newton_iterations = static_cast<int>(io::read_summary_number(r.directory, "newton_iterations"));
+    r.nodes = static_cast<int>(io::read_summary_number(r.directory, "nodes"));
+    r.curve = read_curve(r.directory, c.dies.at(c.time.stroke_die).name);
+    std::printf("%.1f s, %d increments, %d nodes\n", r.wall_time, r.increments, r.nodes);
+    return runs_.emplace(label, std::move(r)).first->second;
+  }
+
+private:
+  std::string case_file_;
+  std::vector<Parameter> parameters_;
+  std::vector<std::string> fixed_;
+  std::string out_;
+  std::map<std::string, Run> runs_;
+};
+
+struct Row {
+  std::string key, value;
+  std::optional<double> error; ///< empty for the reference run
+  const Run* run;
+};
+
+std::string format_row_csv(const Row& r) {
+  char text[512];
+  const std::string error = r.error ? std::to_string(100.0 * *r.error) : "reference";
+  std::snprintf(text, sizeof text, "%s,%s,%s,%.3f,%d,%d,%d,%s\n", r.key.c_str(), r.value.c_str(), error.c_str(),
+                r.run->wall_time, r.run->increments, r.run->newton_iterations, r.run->nodes, r.run->directory.c_str());
+  return text;
+}
+
+/// The cheapest run whose error is below `bound`, as one line.
+std::string cheapest_below(const std::vector<Row>& rows, double bound) {
+  const Row* best = nullptr;
+  for (const Row& r : rows)
+    if (r.error && *r.error < bound && (!best || r.run->wall_time < best->run->wall_time)) best = &r;
+  char text[300];
+  if (!best) {
+    std::snprintf(text, sizeof text, "no run is within %g %%", 100.0 * bound);
+  } else {
+    std::snprintf(text, sizeof text, "%s = %s (the other keys at their finest value): error %.3f %%, %.1f s",
+                  best->key.c_str(), best->value.c_str(), 100.0 * *best->error, best->run->wall_time);
+  }
+  return text;
+}
+
+int study(int argc, char** argv) {
+  std::string case_file, out, error_name;
+  std::vector<Parameter> parameters;
+  std::vector<std::string> fixed;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "--help" || arg == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    if ((arg == "--vary" || arg == "--set" || arg == "--error" || arg == "-o") && !has_value)
+      throw InputError(arg + " needs a value (see --help)");
+    if (arg == "--vary") {
+      const std::string text = argv[++i];
+      const auto equals = text.find('=');
+      if (equals == std::string::npos || equals + 1 == text.size())
+        throw InputError("--vary '" + text + "': expected KEY=V1,V2,..., e.g. time.stroke_increment=0.5,0.25");
+      parameters.push_back({text.substr(0, equals), split(text.substr(equals + 1), ',')});
+    } else if (arg == "--set") fixed.emplace_back(argv[++i]);
+    else if (arg == "--error") error_name = argv[++i];
+    else if (arg == "-o") out = argv[++i];
+    else if (!arg.empty() && arg[0] != '-' && case_file.empty()) case_file = arg;
+    else throw InputError("unexpected argument '" + arg + "' (see --help)");
+  }
+  if (case_file.empty() || parameters.empty()) throw InputError("needs a case file and at least one --vary (see --help)");
+
+  // The case at the finest settings: it names the die and checks every key.
+  std::vector<std::string> finest = fixed;
+  for (const Parameter& p : parameters) finest.push_back(p.key + "=" + p.values.back());
+  const scene::Case c = scene::read_case(case_file, finest);
+  if (c.dies.empty() || !c.time.enabled) throw InputError(case_file + ": the study needs a case with dies and a time section");
+  bool frictionless = true;
+  for (const scene::DieSpec& d : c.dies) frictionless &= d.friction.kind == contact::FrictionKind::frictionless;
+  if (error_name.empty()) error_name = frictionless ? "exact-upsetting" : "finest";
+  if (error_name != "exact-upsetting" && error_name != "finest")
+    throw InputError("--error '" + error_name + "': expected exact-upsetting or finest");
+  const ErrorKind kind = error_name == "finest" ? ErrorKind::finest : ErrorKind::exact_upsetting;
+  std::optional<ExactUpsetting> exact;
+  if (kind == ErrorKind::exact_upsetting) exact.emplace(c);
+  if (out.empty()) out = "out/study_" + std::filesystem::path(case_file).stem().string();
+  std::filesystem::create_directories(out + "/runs");
+
+  log::set_quiet(true);
+  std::printf("study of %s, error: %s, results in %s/\n", case_file.c_str(), error_name.c_str(), out.c_str());
+  Study runs(case_file, parameters, fixed, out);
+  const Run& reference = runs.run(parameters.front().key, parameters.front().values.back());
+  const double final_stroke = reference.curve.stroke.back();
+  std::vector<Row> rows;
+  for (const Parameter& p : parameters)
+    for (const std::string& value : p.values) {
+      const Run& r = runs.run(p.key, value);
+      std::optional<double> error;
+      if (exact) error = exact->error(r.curve);
+      else if (&r != &reference) error = error_against(r.curve, reference.curve, final_stroke);
+      rows.push_back({p.key, value, error, &r});
+    }
+
+  std::string csv = "key,value,error_percent,wall_time_s,increments,newton_iterations,nodes,run_directory\n";
+  for (const Row& r : rows) csv += format_row_csv(r);
+  io::write_file_atomically(out + "/study.csv", csv);
+
+  std::printf("\n| key | value | load error | wall time | increments | nodes |\n|---|---|---|---|---|---|\n");
+  for (const Row& r : rows) {
+    char error[32] = "reference";
+    if (r.error) std::snprintf(error, sizeof error, "%.3f %%", 100.0 * *r.error);
+    std::printf("| %s | %s | %s | %.1f s | %d | %d |\n", r.key.c_str(), r.value.c_str(), error, r.run->wall_time,
+                r.run->increments, r.run->nodes);
+  }
+  std::printf("\nfor 1 %%:   %s\nfor 0.1 %%: %s\n", cheapest_below(rows, 0.01).c_str(), cheapest_below(rows, 0.001).c_str());
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return study(argc, argv);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "anvil_study: input error: %s\n", e.what());
+    return 3;
+  } catch (const RunError& e) {
+    std::fprintf(stderr, "anvil_study: a run stopped: %s\n", e.what());
+    return 4;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "anvil_study: internal error: %s\n", e.what());
+    return 5;
+  }
+}
