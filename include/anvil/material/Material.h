@@ -135,7 +135,9 @@ public:
                          Mat6& tangent) const override;
   std::string describe() const override;
   bool is_linear() const override { return false; }
-  bool hardens() const override { return true; }
+  /// ε̄ matters only through m2, m4, m5, m7; a steady-state card (all zero)
+  /// needs no strain accumulated.
+  bool hardens() const override { return c_.m2 != 0.0 || c_.m4 != 0.0 || c_.m5 != 0.0 || c_.m7 != 0.0; }
   double secant_viscosity(double equivalent_rate, const PointState& state) const override;
   double consistency(const PointState& state) const override;
   double rate_sensitivity(const PointState& state) const override { return c_.m3 + c_.m8 * state.temperature; }
