@@ -486,25 +486,26 @@ void Run::set_contact_scales() {
   // Friction needs σ₀ and K at the contact nodes: taken from the last
   // increment's solution (frozen within the increment, so the tangent stays exact).
   const ElementFields fields = element_fields(state_.mesh, *law_, states_, state_.unknowns);
+  // The penalty and the force scale use σ₀ at the process rate v_ref / body
+  // size instead: a billet left at rest by the dies has almost no strain
+  // rate, and scales taken from it would shrink with every increment at rest.
   const double reference_rate = reference_velocity_ / body_size_;
   std::vector<double> weight(state_.mesh.nodes.size(), 0.0);
   std::fill(node_flow_stress_.begin(), node_flow_stress_.end(), 0.0);
   std::fill(node_consistency_.begin(), node_consistency_.end(), 0.0);
+  double process_flow_stress = 0.0;
   for (int e = 0; e < state_.mesh.tet_count(); ++e) {
     const double rate = fields.rate[e] > 0.0 ? fields.rate[e] : reference_rate;
     const double flow = law_->flow_stress(rate, states_[e]), k = law_->consistency(states_[e]);
     for (int node : state_.mesh.tets[e]) node_flow_stress_[node] += flow, node_consistency_[node] += k, weight[node] += 1.0;
+    process_flow_stress += law_->flow_stress(reference_rate, states_[e]) / state_.mesh.tet_count();
   }
-  double mean_flow_stress = 0.0;
-  for (std::size_t i = 0; i < weight.size(); ++i) {
-    node_flow_stress_[i] /= weight[i], node_consistency_[i] /= weight[i];
-    mean_flow_stress += node_flow_stress_[i] / static_cast<double>(weight.size());
-  }
+  for (std::size_t i = 0; i < weight.size(); ++i) node_flow_stress_[i] /= weight[i], node_consistency_[i] /= weight[i];
   // Penalty ρ = factor × σ₀/v_ref: the penetration velocity σn/ρ is then
   // about 1/factor of the press speed, whatever the flow stress does
   // (hardening, temperature) along the stroke.
-  penalty_ = case_.contact.penalty * mean_flow_stress / reference_velocity_;
-  reference_force_ = mean_flow_stress * std::pow(mesh::volume(state_.mesh), 2.0 / 3.0);
+  penalty_ = case_.contact.penalty * process_flow_stress / reference_velocity_;
+  reference_force_ = process_flow_stress * std::pow(mesh::volume(state_.mesh), 2.0 / 3.0);
 }
 
 bool Run::update_geometry(double dt, std::string& failure) {

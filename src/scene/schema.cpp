@@ -141,7 +141,7 @@ const std::vector<KeySpec>& case_schema() {
       range(key("dies[].friction.exponent", T::number, "norton: q", "-"), 0, 1, true),
       key("contact", T::map, "contact enforcement"),
       with_default(range(key("contact.penalty", T::number,
-                             "penalty ρ = this × mean flow stress / press speed: contact nodes penetrate at about 1/this of the press speed"),
+                             "penalty ρ = this × flow stress at the process rate (press speed / body size) / press speed: contact nodes penetrate at about 1/this of the press speed"),
                          0, kInf, true), "1000"),
       with_default(range(key("contact.regularisation", T::number,
                              "friction regularisation velocity relative to the fastest die speed"), 0, 1, true), "1e-2"),

@@ -1,5 +1,5 @@
 // Hard cases that must finish (issue 3 §8): near rigid-plastic upsetting
-// (m = 0.02) with friction.
+// (m = 0.02) with friction, a die that lets go of the billet and comes back.
 #include "run_outputs.h"
 
 #include "anvil/core/log.h"
@@ -36,5 +36,28 @@ TEST_CASE("near rigid-plastic upsetting (m = 0.02) with Tresca friction runs to 
   REQUIRE(!rows.empty());
   CHECK(rows.back().stroke == Approx(7.5).epsilon(1e-9));
   for (const LoadRow& r : rows) CHECK(std::isfinite(r.force.z()));
+  CHECK(std::abs(out.summary_number("relative_change")) < 0.005);
+}
+
+TEST_CASE("a die that lifts off the billet and comes back re-contacts it", "[hard]") {
+  log::set_quiet(true);
+  // Top die: down 2 mm by t = 0.2 s, up 1 mm by 0.3 s, down to 4 mm at 0.6 s;
+  // it is back on the billet's top face (2 mm) at t = 0.4 s.
+  scene::Case c = scene::read_case(source_path("cases/die_recontact.yaml"));
+  c.write_vtk = false;
+  const RunOutputs out = run_case(c, "anvil_hard_recontact");
+  const auto rows = out.loads("top");
+  REQUIRE(!rows.empty());
+  double before_lift = 0.0, away = 0.0, end = 0.0;
+  for (const LoadRow& r : rows) {
+    CHECK(std::isfinite(r.force.z()));
+    if (r.time <= 0.2 + 1e-9) before_lift = std::abs(r.force.z());
+    if (r.time > 0.2 + 1e-9 && r.time < 0.39) away = std::max(away, std::abs(r.force.z()));
+    end = std::abs(r.force.z());
+  }
+  INFO("load before lift-off " << before_lift << " N, largest while away " << away << " N, at the end " << end << " N");
+  CHECK(rows.back().time == Approx(0.6).epsilon(1e-9));
+  CHECK(away == 0.0);             // no die contact while the die is away
+  CHECK(end > before_lift);       // back on the billet, pressing further than before
   CHECK(std::abs(out.summary_number("relative_change")) < 0.005);
 }
