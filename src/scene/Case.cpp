@@ -33,6 +33,13 @@ std::pair<mesh::Point, Eigen::Vector3d> read_plane(const CheckedYaml& doc, const
   return {point, normal};
 }
 
+/// Calls `read(entry, shown)` for each entry of the list `list` (absent: none),
+/// `shown` being "key[i]", the entry as error messages name it.
+template <class Read>
+void for_each_entry(const YAML::Node& list, const std::string& key, Read read) {
+  for (std::size_t i = 0; list && i < list.size(); ++i) read(list[i], key + "[" + std::to_string(i) + "]");
+}
+
 /// Fails when `item`'s name is already used in `defined` (bodies, dies).
 template <class Spec>
 void check_unique_name(const CheckedYaml& doc, const std::vector<Spec>& defined, const YAML::Node& item,
@@ -48,13 +55,12 @@ contact::FrictionLaw read_friction(const CheckedYaml& doc, const YAML::Node& die
   const YAML::Node f = die["friction"];
   if (!f) return law;
   const std::string name = doc.text(f, "law", "dies[].friction.law");
+  const std::string context = "friction law '" + name + "'";
   auto need = [&](const char* key) {
-    if (!f[key]) doc.fail(f, shown + ".friction." + key, "missing: friction law '" + name + "' needs it");
+    doc.require(f, key, shown + ".friction", context + " needs it");
     return doc.number(f, key, std::string("dies[].friction.") + key);
   };
-  auto forbid = [&](const char* key) {
-    if (f[key]) doc.fail(f[key], shown + ".friction." + key, "does not apply to friction law '" + name + "'");
-  };
+  auto forbid = [&](const char* key) { doc.forbid(f, key, shown + ".friction", context); };
   if (name == "frictionless" || name == "sticking") {
     law.kind = name == "sticking" ? FrictionKind::sticking : FrictionKind::frictionless;
     forbid("factor"), forbid("coefficient"), forbid("exponent");
@@ -77,10 +83,7 @@ contact::FrictionLaw read_friction(const CheckedYaml& doc, const YAML::Node& die
 }
 
 void read_dies(const CheckedYaml& doc, Case& c) {
-  const YAML::Node dies = doc.root()["dies"];
-  for (std::size_t i = 0; dies && i < dies.size(); ++i) {
-    const YAML::Node n = dies[i];
-    const std::string shown = "dies[" + std::to_string(i) + "]";
+  for_each_entry(doc.root()["dies"], "dies", [&](const YAML::Node& n, const std::string& shown) {
     DieSpec d;
     d.name = doc.text(n, "name", "dies[].name");
     d.source = doc.at(n);
@@ -95,14 +98,12 @@ void read_dies(const CheckedYaml& doc, Case& c) {
       d.plane_half_size = doc.number(plane, "half_size", "dies[].plane.half_size");
     }
     d.motion = doc.text(n, "motion", "dies[].motion");
-    auto need = [&](const char* key) {
-      if (!n[key]) doc.fail(n, shown + "." + key, "missing: motion '" + d.motion + "' needs it");
-    };
+    const std::string context = "motion '" + d.motion + "'";
+    auto need = [&](const char* key) { doc.require(n, key, shown, context + " needs it"); };
     auto allow_only = [&](std::vector<std::string> keys) {
       for (const char* key : {"velocity", "direction", "time", "speed", "displacement", "crank_radius", "rod_length",
                               "rpm", "start_angle", "load_limit"})
-        if (n[key] && std::find(keys.begin(), keys.end(), key) == keys.end())
-          doc.fail(n[key], shown + "." + key, "does not apply to motion '" + d.motion + "'");
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) doc.forbid(n, key, shown, context);
     };
     if (d.motion == "fixed") allow_only({});
     else if (d.motion == "constant" || d.motion == "hydraulic") {
@@ -143,7 +144,7 @@ void read_dies(const CheckedYaml& doc, Case& c) {
     if (d.direction.norm() == 0.0) doc.fail(n["direction"], shown + ".direction", "the direction must not be zero");
     d.friction = read_friction(doc, n, shown);
     c.dies.push_back(d);
-  }
+  });
 }
 
 void read_time(const CheckedYaml& doc, Case& c) {
@@ -204,9 +205,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   const YAML::Node bodies = root["bodies"];
   if (bodies.size() > 1)
     doc.fail(bodies, "bodies", "this release solves one body; contact between bodies comes with a later release");
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const YAML::Node b = bodies[i];
-    const std::string shown = "bodies[" + std::to_string(i) + "]";
+  for_each_entry(bodies, "bodies", [&](const YAML::Node& b, const std::string& shown) {
     BodySpec body;
     body.name = doc.text(b, "name", "bodies[].name");
     body.material_file = relative_to(path, doc.text(b, "material", "bodies[].material"));
@@ -237,12 +236,9 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     }
     check_unique_name(doc, c.bodies, b, shown, "body");
     c.bodies.push_back(body);
-  }
+  });
 
-  const YAML::Node boundary = root["boundary"];
-  for (std::size_t i = 0; boundary && i < boundary.size(); ++i) {
-    const YAML::Node n = boundary[i];
-    const std::string shown = "boundary[" + std::to_string(i) + "]";
+  for_each_entry(root["boundary"], "boundary", [&](const YAML::Node& n, const std::string& shown) {
     BoundaryCondition bc;
     bc.name = doc.text(n, "name", "boundary[].name");
     bc.source = doc.at(n);
@@ -263,12 +259,8 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
           read_plane(doc, plane, "boundary[].plane", shown + ".plane");
       bc.faces.tolerance = doc.number(plane, "tolerance", "boundary[].plane.tolerance");
     }
-    auto require = [&](const char* key, const char* why) {
-      if (!n[key]) doc.fail(n, shown + "." + key, std::string("missing: ") + why);
-    };
-    auto forbid = [&](const char* key) {
-      if (n[key]) doc.fail(n[key], shown + "." + key, "does not apply to type '" + n["type"].Scalar() + "'");
-    };
+    auto require = [&](const char* key, const char* why) { doc.require(n, key, shown, why); };
+    auto forbid = [&](const char* key) { doc.forbid(n, key, shown, "type '" + n["type"].Scalar() + "'"); };
     switch (bc.kind) {
     case BoundaryKind::velocity:
       require("velocity", "a velocity condition needs velocity: [vx, vy, vz] (mm/s, ~ for a free component)");
@@ -298,7 +290,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     }
     c.boundary.push_back(bc);
     c.boundary_body.push_back(body);
-  }
+  });
   read_dies(doc, c);
   const YAML::Node contact = root["contact"] ? root["contact"] : YAML::Node(YAML::NodeType::Map);
   c.contact.penalty = doc.number(contact, "penalty", "contact.penalty");
@@ -328,7 +320,7 @@ std::unique_ptr<material::Material> read_law(const CheckedYaml& doc) {
       doc.fail(entry.first, key, "has no entry under 'sources': every number in a material card cites its source");
   }
   auto needed = [&](const char* key) {
-    if (!root[key]) doc.fail(root, key, "missing: law '" + law + "' needs it");
+    doc.require(root, key, "", "law '" + law + "' needs it");
     return doc.number(root, key, key);
   };
   if (law == "hansel_spittel") {

@@ -1,5 +1,6 @@
 #include "checked_yaml.h"
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -58,6 +59,25 @@ struct PathStep {
   std::size_t element = 0;
 };
 
+/// "key", "key[]" or "key[N]"; throws std::invalid_argument saying what is wrong.
+PathStep parse_step(const std::string& part) {
+  PathStep step;
+  const auto open = part.find('[');
+  step.key = part.substr(0, open);
+  if (open == std::string::npos) return step;
+  if (part.back() != ']' || step.key.empty()) throw std::invalid_argument("'" + part + "' is not key, key[] or key[N]");
+  const std::string inside = part.substr(open + 1, part.size() - open - 2);
+  if (inside.empty()) {
+    step.index = PathStep::Index::every;
+    return step;
+  }
+  const auto [end, error] = std::from_chars(inside.data(), inside.data() + inside.size(), step.element);
+  if (error != std::errc() || end != inside.data() + inside.size())
+    throw std::invalid_argument("'" + inside + "' is not a list index");
+  step.index = PathStep::Index::one;
+  return step;
+}
+
 } // namespace
 
 void CheckedYaml::apply_override(const std::string& text) {
@@ -72,30 +92,16 @@ void CheckedYaml::apply_override(const std::string& text) {
     throw bad("the value is not valid YAML: " + e.msg);
   }
   std::vector<PathStep> steps;
-  std::string spec_path;
+  std::string spec_path; // the schema's name of the key: every index written []
   std::istringstream split(key_path);
   for (std::string part; std::getline(split, part, '.');) {
-    PathStep step;
-    const auto open = part.find('[');
-    step.key = part.substr(0, open);
-    if (open != std::string::npos) {
-      const std::string inside = part.substr(open + 1, part.size() - open - 2);
-      if (part.back() != ']' || step.key.empty()) throw bad("'" + part + "' is not key, key[] or key[N]");
-      if (inside.empty()) step.index = PathStep::Index::every;
-      else {
-        std::size_t used = 0;
-        try {
-          step.element = std::stoul(inside, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used != inside.size()) throw bad("'" + inside + "' is not a list index");
-        step.index = PathStep::Index::one;
-      }
+    if (part.empty()) throw bad("empty key in '" + key_path + "'");
+    try {
+      steps.push_back(parse_step(part));
+    } catch (const std::invalid_argument& e) {
+      throw bad(e.what());
     }
-    if (step.key.empty()) throw bad("empty key in '" + key_path + "'");
-    spec_path = join(spec_path, step.key + (step.index == PathStep::Index::none ? "" : "[]"));
-    steps.push_back(step);
+    spec_path = join(spec_path, steps.back().key + (steps.back().index == PathStep::Index::none ? "" : "[]"));
   }
   if (find_key(schema_, spec_path) == nullptr)
     throw bad("no key '" + spec_path + "' in the schema (run 'anvil --schema' for the list)");
@@ -130,6 +136,16 @@ std::string CheckedYaml::at(const YAML::Node& node) const {
     if (node.is(overridden)) return "--set '" + text + "'";
   const int line = node.Mark().line;
   return where(path_, line >= 0 ? line + 1 : 0);
+}
+
+void CheckedYaml::require(const YAML::Node& map, const std::string& key, const std::string& shown,
+                          const std::string& why) const {
+  if (!map[key]) fail(map, join(shown, key), "missing: " + why);
+}
+
+void CheckedYaml::forbid(const YAML::Node& map, const std::string& key, const std::string& shown,
+                         const std::string& context) const {
+  if (map[key]) fail(map[key], join(shown, key), "does not apply to " + context);
 }
 
 void CheckedYaml::fail(const YAML::Node& node, const std::string& shown_key, const std::string& message) const {

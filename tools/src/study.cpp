@@ -119,15 +119,22 @@ double nominal_volume(const scene::MeshSpec& m) {
   throw InputError(m.source + ": --error exact-upsetting needs a generated cylinder, quarter_cylinder or box body");
 }
 
+/// The first die of `c` with friction, or null.
+const scene::DieSpec* die_with_friction(const scene::Case& c) {
+  const auto found = std::find_if(c.dies.begin(), c.dies.end(), [](const scene::DieSpec& d) {
+    return d.friction.kind != contact::FrictionKind::frictionless;
+  });
+  return found == c.dies.end() ? nullptr : &*found;
+}
+
 /// The exact homogeneous-compression error of a run of case `c`.
 class ExactUpsetting {
 public:
   explicit ExactUpsetting(const scene::Case& c) {
     const scene::BodySpec& body = c.bodies.front();
     const scene::DieSpec& die = c.dies.at(c.time.stroke_die);
-    for (const scene::DieSpec& d : c.dies)
-      if (d.friction.kind != contact::FrictionKind::frictionless)
-        throw InputError(d.source + ": --error exact-upsetting needs frictionless dies; die '" + d.name + "' has friction");
+    if (const scene::DieSpec* d = die_with_friction(c))
+      throw InputError(d->source + ": --error exact-upsetting needs frictionless dies; die '" + d->name + "' has friction");
     if (die.motion != "constant")
       throw InputError(die.source + ": --error exact-upsetting needs a die at constant velocity");
     card_ = scene::read_material(body.material_file);
@@ -267,9 +274,7 @@ int study(int argc, char** argv) {
   for (const Parameter& p : parameters) finest.push_back(p.key + "=" + p.values.back());
   const scene::Case c = scene::read_case(case_file, finest);
   if (c.dies.empty() || !c.time.enabled) throw InputError(case_file + ": the study needs a case with dies and a time section");
-  bool frictionless = true;
-  for (const scene::DieSpec& d : c.dies) frictionless &= d.friction.kind == contact::FrictionKind::frictionless;
-  if (error_name.empty()) error_name = frictionless ? "exact-upsetting" : "finest";
+  if (error_name.empty()) error_name = die_with_friction(c) ? "finest" : "exact-upsetting";
   if (error_name != "exact-upsetting" && error_name != "finest")
     throw InputError("--error '" + error_name + "': expected exact-upsetting or finest");
   const ErrorKind kind = error_name == "finest" ? ErrorKind::finest : ErrorKind::exact_upsetting;
