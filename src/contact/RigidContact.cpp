@@ -37,7 +37,8 @@ void RigidContact::search(const mesh::TetMesh& mesh, const std::vector<DieView>&
     }
     if (best.die >= 0) candidates_.push_back(best);
   }
-  active_.assign(candidates_.size(), 0);
+  active_.resize(candidates_.size());
+  gap_.resize(candidates_.size());
 }
 
 double RigidContact::gap_velocity(const ContactCandidate& c, const Eigen::VectorXd& nodal) const {
@@ -49,32 +50,19 @@ double RigidContact::pressure(int i, const Eigen::VectorXd& nodal) const {
   return increment_.penalty * std::max(gap_velocity(candidates_[i], nodal), 0.0);
 }
 
-bool RigidContact::active_at(int i, const Eigen::VectorXd& nodal) const {
-  // A node changes side only beyond the tolerance: at the edge of the contact
-  // zone the exact solution has h = 0 and σn = 0 together, and a strict test
-  // would cycle between the two sets.
-  const double h = gap_velocity(candidates_[i], nodal);
-  return active_[i] ? h > -increment_.gap_tolerance : h > increment_.gap_tolerance;
+const std::vector<double>& RigidContact::gaps(const Eigen::VectorXd& nodal) {
+  for (std::size_t i = 0; i < candidates_.size(); ++i) gap_[i] = gap_velocity(candidates_[i], nodal);
+  return gap_;
 }
 
 void RigidContact::start(const Eigen::VectorXd& nodal) {
-  frozen_ = false;
-  iterations_ = 0;
-  // A node touching its die with no relative normal velocity (h = 0) starts
-  // active: a billet resting on a die is then supported, not floating.
-  for (std::size_t i = 0; i < candidates_.size(); ++i)
-    active_[i] = gap_velocity(candidates_[i], nodal) > -increment_.gap_tolerance;
+  active_.set_tolerance(increment_.gap_tolerance);
+  active_.start(gaps(nodal));
 }
 
-bool RigidContact::consistent(const Eigen::VectorXd& nodal) {
-  bool same = true;
-  for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const char now = active_at(int(i), nodal);
-    same = same && now == active_[i];
-    active_[i] = now;
-  }
-  return same;
-}
+bool RigidContact::consistent(const Eigen::VectorXd& nodal) { return active_.consistent(gaps(nodal)); }
+
+std::string RigidContact::accept(const Eigen::VectorXd& nodal) { return active_.accept(gaps(nodal), "contact nodes"); }
 
 void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
                        std::vector<solver::NodeBlock>* blocks) const {
@@ -99,28 +87,8 @@ void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
       k += c.area * (f.d_sliding * tangent_projector - rho * f.d_normal_pressure * n.transpose());
     }
     residual.segment<3>(kDofsPerNode * c.node) += r;
-    if (blocks) blocks->push_back({c.node, k});
+    if (blocks) blocks->push_back({c.node, c.node, k});
   }
-}
-
-std::string RigidContact::accept(const Eigen::VectorXd& nodal) {
-  int activated = 0, released = 0, active = 0;
-  for (std::size_t i = 0; i < candidates_.size(); ++i) {
-    const char now = frozen_ ? active_[i] : active_at(int(i), nodal);
-    activated += now && !active_[i];
-    released += !now && active_[i];
-    active += now;
-    active_[i] = now;
-  }
-  frozen_ = ++iterations_ >= kFreezeAfter;
-  return "  contact " + std::to_string(active) + " nodes (+" + std::to_string(activated) + " -" +
-         std::to_string(released) + ")" + (frozen_ ? " frozen" : "");
-}
-
-int RigidContact::active_count() const {
-  int n = 0;
-  for (char a : active_) n += a;
-  return n;
 }
 
 std::vector<Eigen::Vector3d> RigidContact::die_forces(const Eigen::VectorXd& nodal) const {

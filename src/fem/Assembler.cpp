@@ -47,30 +47,45 @@ long entry_position(const SparseMatrix& m, long row, long col) {
 
 Assembler::Assembler(const mesh::TetMesh& mesh, const DofMap& dofs)
     : dofs_(dofs), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()),
-      bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0) {
-  // Node adjacency through elements, then 4×4 blocks filtered to free dofs.
-  std::vector<std::vector<int>> neighbours(mesh.nodes.size());
+      bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0), neighbours_(mesh.nodes.size()) {
   for (const mesh::Tet& t : mesh.tets)
     for (int a : t)
-      for (int b : t) neighbours[a].push_back(b);
-  long nnz = 0;
+      for (int b : t) neighbours_[a].push_back(b);
+  for (auto& n : neighbours_) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  build_pattern(neighbours_);
+}
+
+bool Assembler::set_couplings(const std::vector<std::pair<int, int>>& couplings) {
+  if (couplings == couplings_) return false;
+  couplings_ = couplings;
+  std::vector<std::vector<int>> neighbours = neighbours_;
+  for (const auto& [a, b] : couplings) neighbours[a].push_back(b), neighbours[b].push_back(a);
   for (auto& n : neighbours) {
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
-    nnz += 16 * static_cast<long>(n.size());
   }
-  const int free = dofs.free_count();
-  pattern_.resize(free, free);
+  build_pattern(neighbours);
+  return true;
+}
+
+void Assembler::build_pattern(const std::vector<std::vector<int>>& neighbours) {
+  // 4×4 blocks of node adjacency, filtered to free dofs.
+  long nnz = 0;
+  for (const auto& n : neighbours) nnz += 16 * static_cast<long>(n.size());
+  const int free = dofs_.free_count();
   std::vector<long> outer(static_cast<std::size_t>(free) + 1, 0);
   std::vector<long> inner;
   inner.reserve(static_cast<std::size_t>(nnz));
-  for (int node = 0; node < mesh.node_count(); ++node)
+  for (std::size_t node = 0; node < neighbours.size(); ++node)
     for (int c = 0; c < kDofsPerNode; ++c) {
-      const int col = dofs.free_index(kDofsPerNode * node + c);
+      const int col = dofs_.free_index(kDofsPerNode * static_cast<int>(node) + c);
       if (col < 0) continue;
       for (int other : neighbours[node])
         for (int d = 0; d < kDofsPerNode; ++d) {
-          const int row = dofs.free_index(kDofsPerNode * other + d);
+          const int row = dofs_.free_index(kDofsPerNode * other + d);
           if (row >= 0) inner.push_back(row);
         }
       outer[col + 1] = static_cast<long>(inner.size());
@@ -81,14 +96,24 @@ Assembler::Assembler(const mesh::TetMesh& mesh, const DofMap& dofs)
   pattern_.makeCompressed();
 }
 
-AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const material::Material& law,
+void Assembler::add_velocity_block(SparseMatrix& tangent, int row_node, int col_node, const Eigen::Matrix3d& block) const {
+  for (int j = 0; j < 3; ++j) {
+    const int col = dofs_.free_index(kDofsPerNode * col_node + j);
+    if (col < 0) continue;
+    for (int i = 0; i < 3; ++i)
+      if (const int row = dofs_.free_index(kDofsPerNode * row_node + i); row >= 0)
+        tangent.valuePtr()[entry_position(tangent, row, col)] += block(i, j);
+  }
+}
+
+AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws& laws,
                                    const std::vector<material::PointState>& states, const BodyUnknowns& unknowns,
                                    const Eigen::VectorXd& nodal_forces, const BodyForce& body_force,
                                    SparseMatrix* tangent) {
   AssemblyResult result;
   result.residual = -nodal_forces;
   if (tangent) {
-    if (tangent->nonZeros() != pattern_.nonZeros()) *tangent = pattern_;
+    if (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows()) *tangent = pattern_;
     std::fill(tangent->valuePtr(), tangent->valuePtr() + tangent->nonZeros(), 0.0);
   }
   std::fill(bad_.begin(), bad_.end(), 0);
@@ -106,7 +131,7 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const material::Ma
         }
         in.bubble_velocity = unknowns.bubble.segment<3>(3 * e);
         in.state = states.empty() ? material::PointState{} : states[e];
-        if (!mini_element(in, law, tangent != nullptr, body_force, system)) {
+        if (!mini_element(in, *laws[e], tangent != nullptr, body_force, system)) {
           bad_[e] = 1;
           bubble_sq_[e] = 0.0;
           continue;

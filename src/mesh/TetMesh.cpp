@@ -82,4 +82,26 @@ double volume(const TetMesh& mesh) {
   return v;
 }
 
+MeshRange append(TetMesh& mesh, const TetMesh& part) {
+  const MeshRange range{mesh.node_count(), part.node_count(), mesh.tet_count(), part.tet_count(),
+                        static_cast<int>(mesh.boundary_faces.size()), static_cast<int>(part.boundary_faces.size())};
+  mesh.nodes.insert(mesh.nodes.end(), part.nodes.begin(), part.nodes.end());
+  for (Tet t : part.tets) {
+    for (int& v : t) v += range.first_node;
+    mesh.tets.push_back(t);
+  }
+  for (Triangle f : part.boundary_faces) {
+    for (int& v : f) v += range.first_node;
+    mesh.boundary_faces.push_back(f);
+  }
+  mesh.boundary_tags.insert(mesh.boundary_tags.end(), part.boundary_tags.begin(), part.boundary_tags.end());
+  return range;
+}
+
+double volume(const TetMesh& mesh, const MeshRange& range) {
+  double v = 0.0;
+  for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e) v += signed_volume(mesh, e);
+  return v;
+}
+
 } // namespace anvil::mesh

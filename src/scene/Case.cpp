@@ -49,16 +49,19 @@ void check_unique_name(const CheckedYaml& doc, const std::vector<Spec>& defined,
       doc.fail(item["name"], shown + ".name", what + " '" + other.name + "' is defined twice");
 }
 
-contact::FrictionLaw read_friction(const CheckedYaml& doc, const YAML::Node& die, const std::string& shown) {
+/// The `friction` map of a die or a contact pair; `list` is "dies" or "contact_pairs" (schema keys).
+contact::FrictionLaw read_friction(const CheckedYaml& doc, const YAML::Node& item, const std::string& list,
+                                   const std::string& shown) {
   using contact::FrictionKind;
   contact::FrictionLaw law;
-  const YAML::Node f = die["friction"];
+  const YAML::Node f = item["friction"];
   if (!f) return law;
-  const std::string name = doc.text(f, "law", "dies[].friction.law");
+  const std::string spec = list + "[].friction.";
+  const std::string name = doc.text(f, "law", spec + "law");
   const std::string context = "friction law '" + name + "'";
   auto need = [&](const char* key) {
     doc.require(f, key, shown + ".friction", context + " needs it");
-    return doc.number(f, key, std::string("dies[].friction.") + key);
+    return doc.number(f, key, spec + key);
   };
   auto forbid = [&](const char* key) { doc.forbid(f, key, shown + ".friction", context); };
   if (name == "frictionless" || name == "sticking") {
@@ -80,6 +83,31 @@ contact::FrictionLaw read_friction(const CheckedYaml& doc, const YAML::Node& die
     forbid("factor");
   }
   return law;
+}
+
+/// Index of the body named by `item[key]`.
+int body_index(const CheckedYaml& doc, const Case& c, const YAML::Node& item, const char* key, const std::string& shown) {
+  const std::string name = item[key].Scalar();
+  for (std::size_t b = 0; b < c.bodies.size(); ++b)
+    if (c.bodies[b].name == name) return static_cast<int>(b);
+  doc.fail(item[key], shown + "." + key, "no body is named '" + name + "'");
+}
+
+void read_contact_pairs(const CheckedYaml& doc, Case& c) {
+  for_each_entry(doc.root()["contact_pairs"], "contact_pairs", [&](const YAML::Node& n, const std::string& shown) {
+    ContactPairSpec pair;
+    pair.master = body_index(doc, c, n, "master", shown);
+    pair.slave = body_index(doc, c, n, "slave", shown);
+    if (pair.master == pair.slave) doc.fail(n["slave"], shown + ".slave", "a body cannot be in contact with itself");
+    for (const ContactPairSpec& other : c.contact_pairs)
+      if (std::minmax(other.master, other.slave) == std::minmax(pair.master, pair.slave))
+        doc.fail(n, shown, "bodies '" + c.bodies[pair.master].name + "' and '" + c.bodies[pair.slave].name +
+                               "' already form a contact pair");
+    pair.formulation = contact::pair_formulation(doc.text(n, "formulation", "contact_pairs[].formulation"));
+    pair.friction = read_friction(doc, n, "contact_pairs", shown);
+    pair.source = doc.at(n);
+    c.contact_pairs.push_back(pair);
+  });
 }
 
 void read_dies(const CheckedYaml& doc, Case& c) {
@@ -142,7 +170,7 @@ void read_dies(const CheckedYaml& doc, Case& c) {
       allow_only({"crank_radius", "rod_length", "rpm", "start_angle", "direction"});
     }
     if (d.direction.norm() == 0.0) doc.fail(n["direction"], shown + ".direction", "the direction must not be zero");
-    d.friction = read_friction(doc, n, shown);
+    d.friction = read_friction(doc, n, "dies", shown);
     c.dies.push_back(d);
   });
 }
@@ -203,8 +231,6 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.linear_solver = solver::linear_solver_kind(doc.text(solver, "linear_solver", "solver.linear_solver"));
 
   const YAML::Node bodies = root["bodies"];
-  if (bodies.size() > 1)
-    doc.fail(bodies, "bodies", "this release solves one body; contact between bodies comes with a later release");
   for_each_entry(bodies, "bodies", [&](const YAML::Node& b, const std::string& shown) {
     BodySpec body;
     body.name = doc.text(b, "name", "bodies[].name");
@@ -244,12 +270,9 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     bc.source = doc.at(n);
     bc.kind = boundary_kind(doc.text(n, "type", "boundary[].type"));
     int body = 0;
-    if (n["body"]) {
-      body = -1;
-      for (std::size_t b = 0; b < c.bodies.size(); ++b)
-        if (c.bodies[b].name == n["body"].Scalar()) body = static_cast<int>(b);
-      if (body < 0) doc.fail(n["body"], shown + ".body", "no body is named '" + n["body"].Scalar() + "'");
-    }
+    if (n["body"]) body = body_index(doc, c, n, "body", shown);
+    else if (c.bodies.size() > 1)
+      doc.fail(n, shown, "the case has " + std::to_string(c.bodies.size()) + " bodies: say which one with 'body'");
     if (static_cast<bool>(n["tag"]) == static_cast<bool>(n["plane"]))
       doc.fail(n, shown, "give exactly one face selection: 'tag' or 'plane'");
     if (n["tag"]) bc.faces.tag = doc.integer(n, "tag", "boundary[].tag");
@@ -292,6 +315,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     c.boundary_body.push_back(body);
   });
   read_dies(doc, c);
+  read_contact_pairs(doc, c);
   const YAML::Node contact = root["contact"] ? root["contact"] : YAML::Node(YAML::NodeType::Map);
   c.contact.penalty = doc.number(contact, "penalty", "contact.penalty");
   c.contact.regularisation = doc.number(contact, "regularisation", "contact.regularisation");

@@ -4,6 +4,7 @@
 // initial geometry.
 #include "anvil/scene/Simulation.h"
 
+#include "anvil/contact/BodyContact.h"
 #include "anvil/contact/RigidContact.h"
 #include "anvil/core/Timers.h"
 #include "anvil/core/error.h"
@@ -66,7 +67,7 @@ struct ElementFields {
   std::vector<material::Vec6> stress; ///< Cauchy, Mandel (MPa)
 };
 
-ElementFields element_fields(const mesh::TetMesh& mesh, const material::Material& law,
+ElementFields element_fields(const mesh::TetMesh& mesh, const fem::ElementLaws& laws,
                              const std::vector<material::PointState>& states, const fem::BodyUnknowns& u) {
   ElementFields out;
   out.rate.resize(mesh.tets.size());
@@ -80,7 +81,7 @@ ElementFields element_fields(const mesh::TetMesh& mesh, const material::Material
       in.nodal_pressure[a] = u.nodal[4 * t[a] + 3];
     }
     in.state = states[e];
-    const fem::MiniElementFields f = fem::mini_element_fields(in, law);
+    const fem::MiniElementFields f = fem::mini_element_fields(in, *laws[e]);
     out.rate[e] = f.equivalent_strain_rate;
     out.stress[e] = f.stress;
   }
@@ -107,6 +108,32 @@ double mean_boundary_edge(const mesh::TetMesh& mesh) {
     for (int k = 0; k < 3; ++k) sum += (mesh.nodes[f[k]] - mesh.nodes[f[(k + 1) % 3]]).norm();
   return sum / (3.0 * static_cast<double>(mesh.boundary_faces.size()));
 }
+
+/// Appends one body's imposed conditions, its nodes numbered from `first_node`.
+void append(ImposedConditions& all, const ImposedConditions& body, int first_node) {
+  all.prescribed.insert(all.prescribed.end(), body.prescribed.begin(), body.prescribed.end());
+  auto join = [](Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    Eigen::VectorXd joined(a.size() + b.size());
+    joined << a, b;
+    a.swap(joined);
+  };
+  join(all.values, body.values);
+  join(all.nodal_forces, body.nodal_forces);
+  for (std::vector<int> nodes : body.nodes_of_condition) {
+    for (int& n : nodes) n += first_node;
+    all.nodes_of_condition.push_back(std::move(nodes));
+  }
+}
+
+/// A deformable body of the scene: its law and where it sits in the scene's mesh.
+struct Body {
+  std::string name;
+  std::string material_file;
+  std::unique_ptr<material::Material> law;
+  material::PointState state; ///< temperature (isothermal)
+  mesh::MeshRange range;
+  double initial_volume = 0.0; ///< mm³, of the mesh as built
+};
 
 /// The load surfaces of loads.csv: the dies, then the velocity conditions.
 struct LoadSurface {
@@ -148,6 +175,10 @@ private:
   double die_gap() const;
   /// Speed of the fastest moving part at the current press time (mm/s).
   double press_speed() const;
+  bool has_contact() const { return !dies_.empty() || pair_contact_; }
+  std::vector<solver::NodalTerm*> contact_terms();
+  /// One line per node on a body-pair interface: interface.csv.
+  void write_interface() const;
   /// Per-node σ₀ and K for friction, the penalty and the force scale, from
   /// the last increment's solution.
   void set_contact_scales();
@@ -168,8 +199,9 @@ private:
   const RunOptions& options_;
   Timers timers_;
   std::string out_;
-  material::PointState body_state_;
-  std::unique_ptr<material::Material> law_;
+  std::vector<Body> bodies_;
+  fem::ElementLaws element_laws_;
+  bool all_elastic_ = false;
   std::vector<BoundaryCondition> conditions_;
   ImposedConditions imposed_;
   std::vector<std::string> effects_;
@@ -190,6 +222,7 @@ private:
   std::vector<material::PointState> states_;
   std::unique_ptr<solver::IncrementSolver> solver_;
   contact::RigidContact contact_;
+  std::unique_ptr<contact::BodyContact> pair_contact_; ///< built only when the case has contact pairs
   std::vector<double> node_flow_stress_, node_consistency_;
   std::vector<double> solved_rates_; ///< ε̄̇ per element of the last converged increment
   std::unique_ptr<io::VtkSeries> series_;
@@ -200,18 +233,40 @@ private:
 };
 
 void Run::setup() {
-  const BodySpec& body = case_.bodies.front();
-  MaterialCard card = read_material(body.material_file);
-  law_ = std::move(card.law);
-  body_state_.temperature = body.temperature.value_or(card.temperature.value_or(20.0));
-  mesh::TetMesh initial = build_mesh(body.mesh);
-  for (std::size_t i = 0; i < case_.boundary.size(); ++i)
-    if (case_.boundary_body[i] == 0) conditions_.push_back(case_.boundary[i]);
-  {
-    Timers::Scope scope(timers_, "effect boundary_conditions");
-    imposed_ = impose(initial, conditions_);
+  // The bodies are solved as one mesh of disjoint parts, each element with its body's law.
+  mesh::TetMesh initial;
+  imposed_.values.resize(0);
+  imposed_.nodal_forces.resize(0);
+  for (std::size_t b = 0; b < case_.bodies.size(); ++b) {
+    const BodySpec& spec = case_.bodies[b];
+    MaterialCard card = read_material(spec.material_file);
+    Body body{spec.name, spec.material_file, std::move(card.law), {}, {}, 0.0};
+    body.state.temperature = spec.temperature.value_or(card.temperature.value_or(20.0));
+    const mesh::TetMesh part = build_mesh(spec.mesh);
+    std::vector<BoundaryCondition> conditions;
+    for (std::size_t i = 0; i < case_.boundary.size(); ++i)
+      if (case_.boundary_body[i] == static_cast<int>(b)) conditions.push_back(case_.boundary[i]);
+    {
+      Timers::Scope scope(timers_, "effect boundary_conditions");
+      append(imposed_, impose(part, conditions), initial.node_count());
+    }
+    conditions_.insert(conditions_.end(), conditions.begin(), conditions.end());
+    body.initial_volume = mesh::volume(part);
+    body.range = mesh::append(initial, part);
+    element_laws_.insert(element_laws_.end(), part.tets.size(), body.law.get());
+    bodies_.push_back(std::move(body));
   }
-  effects_ = resolve_effects(case_, {law_.get()});
+  std::vector<const material::Material*> laws;
+  for (const Body& body : bodies_) laws.push_back(body.law.get());
+  all_elastic_ = std::all_of(laws.begin(), laws.end(), [](const material::Material* l) { return l->is_elastic(); });
+  if (!case_.contact_pairs.empty()) {
+    std::vector<contact::BodyPair> pairs;
+    for (const ContactPairSpec& p : case_.contact_pairs)
+      pairs.push_back({bodies_[p.master].name + "/" + bodies_[p.slave].name, bodies_[p.master].range,
+                       bodies_[p.slave].range, p.formulation, p.friction});
+    pair_contact_ = std::make_unique<contact::BodyContact>(std::move(pairs));
+  }
+  effects_ = resolve_effects(case_, laws);
   compensate_volume_ = std::find(effects_.begin(), effects_.end(), "volume_compensation") != effects_.end();
 
   // Reference scales from the initial mesh (also on resume, so a resumed run
@@ -253,27 +308,36 @@ void Run::setup() {
     state_.dies.assign(dies_.size(), DieState{});
     state_.volume.initial = mesh::volume(state_.mesh);
   }
-  states_.assign(state_.mesh.tets.size(), body_state_);
+  states_.resize(state_.mesh.tets.size());
+  for (const Body& body : bodies_)
+    std::fill_n(states_.begin() + body.range.first_tet, body.range.tet_count, body.state);
   for (int e = 0; e < state_.mesh.tet_count(); ++e) states_[e].equivalent_strain = state_.equivalent_strain[e];
   for (int k = 0; k < imposed_.values.size(); ++k)
     if (imposed_.prescribed[k]) state_.unknowns.nodal[k] = imposed_.values[k];
 }
 
 void Run::log_header() const {
-  const BodySpec& body = case_.bodies.front();
   log::info("anvil %s — %s%s", ANVIL_VERSION, case_.path.c_str(), options_.resume ? " (resumed)" : "");
   if (!case_.title.empty()) log::info("  %s", case_.title.c_str());
   for (const std::string& change : case_.overrides) log::info("  --set %s", change.c_str());
-  log::info("body '%s': %d nodes, %d tetrahedra, volume %.6g mm3", body.name.c_str(), state_.mesh.node_count(),
-            state_.mesh.tet_count(), mesh::volume(state_.mesh));
-  log::info("  material %s: %s, at %g C", body.material_file.c_str(), law_->describe().c_str(), body_state_.temperature);
+  for (const Body& body : bodies_) {
+    log::info("body '%s': %d nodes, %d tetrahedra, volume %.6g mm3", body.name.c_str(), body.range.node_count,
+              body.range.tet_count, mesh::volume(state_.mesh, body.range));
+    log::info("  material %s: %s, at %g C", body.material_file.c_str(), body.law->describe().c_str(),
+              body.state.temperature);
+  }
   for (std::size_t i = 0; i < conditions_.size(); ++i)
     log::info("  boundary '%s': %zu nodes", conditions_[i].name.c_str(), imposed_.nodes_of_condition[i].size());
   for (const Die& d : dies_)
     log::info("  die '%s': %s; %s; friction %s%s", d.name.c_str(), d.surface->describe().c_str(),
               d.kinematics ? d.kinematics->describe().c_str() : "fixed", contact::describe(d.friction).c_str(),
               std::isfinite(d.load_limit) ? (", load limit " + std::to_string(d.load_limit) + " N").c_str() : "");
-  if (!dies_.empty())
+  for (std::size_t p = 0; pair_contact_ && p < case_.contact_pairs.size(); ++p)
+    log::info("  contact pair '%s' (master '%s', slave '%s'): %s; friction %s", pair_contact_->pairs()[p].name.c_str(),
+              bodies_[case_.contact_pairs[p].master].name.c_str(), bodies_[case_.contact_pairs[p].slave].name.c_str(),
+              contact::to_string(case_.contact_pairs[p].formulation).c_str(),
+              contact::describe(case_.contact_pairs[p].friction).c_str());
+  if (has_contact())
     log::info("  contact: penalty %g x mean flow stress / %.4g mm/s (set each increment), friction regularisation "
               "%.3g mm/s", case_.contact.penalty, reference_velocity_, case_.contact.regularisation * reference_velocity_);
   std::string effect_list;
@@ -311,46 +375,63 @@ double Run::choose_time_step(double nominal) {
   return dt;
 }
 
+std::vector<solver::NodalTerm*> Run::contact_terms() {
+  std::vector<solver::NodalTerm*> terms;
+  if (!dies_.empty()) terms.push_back(&contact_);
+  if (pair_contact_) terms.push_back(pair_contact_.get());
+  return terms;
+}
+
 bool Run::try_increment(double dt, solver::NewtonReport& report) {
+  // Candidates: boundary nodes that can reach a die or another body within the increment.
+  double die_speed = 0.0, body_speed = 0.0;
+  for (std::size_t d = 0; d < dies_.size(); ++d) die_speed = std::max(die_speed, dies_[d].velocity(state_.dies[d], dt).norm());
+  for (int i = 0; i < state_.mesh.node_count(); ++i)
+    body_speed = std::max(body_speed, state_.unknowns.nodal.segment<3>(4 * i).norm());
+  const double reach = 2.0 * (die_speed + std::max(body_speed, die_speed)) * dt + 0.05 * reference_length_;
+  // Gap tolerance: a penetration velocity of 1e-4 of the reference speed is
+  // 1e-4 of the stroke over the run, and projection removes it anyway.
+  const double gap_tolerance = 1e-4 * reference_velocity_;
   if (!dies_.empty()) {
-    // Candidates: boundary nodes that can reach a die within the increment.
     std::vector<contact::DieView> views;
-    double die_speed = 0.0;
-    for (std::size_t d = 0; d < dies_.size(); ++d) {
-      const Eigen::Vector3d v = dies_[d].velocity(state_.dies[d], dt);
-      die_speed = std::max(die_speed, v.norm());
-      views.push_back({dies_[d].surface.get(), state_.dies[d].displacement, v, dies_[d].friction});
-    }
-    double body_speed = 0.0;
-    for (int i = 0; i < state_.mesh.node_count(); ++i)
-      body_speed = std::max(body_speed, state_.unknowns.nodal.segment<3>(4 * i).norm());
-    const double reach = 2.0 * (die_speed + std::max(body_speed, die_speed)) * dt + 0.05 * reference_length_;
+    for (std::size_t d = 0; d < dies_.size(); ++d)
+      views.push_back({dies_[d].surface.get(), state_.dies[d].displacement, dies_[d].velocity(state_.dies[d], dt),
+                       dies_[d].friction});
     {
       Timers::Scope scope(timers_, "search");
       contact_.search(state_.mesh, views, reach);
     }
-    // Gap tolerance: a penetration velocity of 1e-4 of the reference speed is
-    // 1e-4 of the stroke over the run, and projection removes it anyway.
-    contact_.set_increment({dt, penalty_, case_.contact.regularisation * reference_velocity_,
-                            1e-4 * reference_velocity_, &node_flow_stress_, &node_consistency_});
+    contact_.set_increment({dt, penalty_, case_.contact.regularisation * reference_velocity_, gap_tolerance,
+                            &node_flow_stress_, &node_consistency_});
+  }
+  if (pair_contact_) {
+    {
+      Timers::Scope scope(timers_, "search");
+      pair_contact_->search(state_.mesh, reach);
+    }
+    pair_contact_->set_increment({dt, penalty_, case_.contact.regularisation * reference_velocity_, gap_tolerance,
+                                  &node_flow_stress_, &node_consistency_});
   }
   // Volume compensation: the flow of this increment is asked to restore the
-  // volume lost so far (explicit update error, O(Δt) over a run, and contact
-  // projection): ∫ q div v = ∫ q g with g = (V₀ − V)/(V Δt), entered as the
-  // pressure rows of the external vector (r_p = −∫N (div v − g)).
+  // volume each incompressible body lost so far (explicit update error, O(Δt)
+  // over a run, and contact projection): ∫ q div v = ∫ q g with
+  // g = (V₀ − V)/(V Δt), entered as the pressure rows of the external vector
+  // (r_p = −∫N (div v − g)).
   external_ = imposed_.nodal_forces;
-  if (compensate_volume_) {
-    const double volume = mesh::volume(state_.mesh);
-    // Restored over at least the nominal increment, so a short increment
-    // (a stop criterion, a cut) does not get a large dilatation.
-    const double g = (state_.volume.initial - volume) / (volume * std::max(dt, nominal_step_));
-    for (int e = 0; e < state_.mesh.tet_count(); ++e) {
-      const double quarter = 0.25 * mesh::signed_volume(state_.mesh, e);
-      for (int node : state_.mesh.tets[e]) external_[4 * node + 3] -= g * quarter;
+  if (compensate_volume_)
+    for (const Body& body : bodies_) {
+      if (std::isfinite(body.law->bulk_modulus())) continue;
+      const double volume = mesh::volume(state_.mesh, body.range);
+      // Restored over at least the nominal increment, so a short increment
+      // (a stop criterion, a cut) does not get a large dilatation.
+      const double g = (body.initial_volume - volume) / (volume * std::max(dt, nominal_step_));
+      for (int e = body.range.first_tet; e < body.range.first_tet + body.range.tet_count; ++e) {
+        const double quarter = 0.25 * mesh::signed_volume(state_.mesh, e);
+        for (int node : state_.mesh.tets[e]) external_[4 * node + 3] -= g * quarter;
+      }
     }
-  }
-  const solver::IncrementProblem problem{*law_, states_, external_, {}, dies_.empty() ? nullptr : &contact_,
-                                         reference_velocity_, reference_force_};
+  const solver::IncrementProblem problem{element_laws_, states_, external_, {}, contact_terms(), reference_velocity_,
+                                         reference_force_};
   Timers::Scope scope(timers_, "newton");
   report = solver_->solve(problem, case_.newton, state_.unknowns);
   return report.converged;
@@ -390,8 +471,8 @@ void Run::write_outputs(bool force) {
   const bool vtk_due = case_.write_vtk && (force || state_.increment % case_.vtk_every == 0);
   if (vtk_due && last_written_ != state_.increment) {
     const mesh::TetMesh& mesh = state_.mesh;
-    const bool elastic = law_->is_elastic();
-    const ElementFields fields = element_fields(mesh, *law_, states_, state_.unknowns);
+    const bool elastic = all_elastic_;
+    const ElementFields fields = element_fields(mesh, element_laws_, states_, state_.unknowns);
     io::Field velocity{elastic ? "displacement" : "velocity", 3, {}}, pressure{"pressure", 1, {}};
     io::Field contact_status{"contact_status", 1, std::vector<double>(mesh.nodes.size(), 0.0)};
     io::Field contact_pressure{"contact_pressure", 1, std::vector<double>(mesh.nodes.size(), 0.0)};
@@ -399,6 +480,17 @@ void Run::write_outputs(bool force) {
     for (int i = 0; i < mesh.node_count(); ++i) {
       for (int k = 0; k < 3; ++k) velocity.values.push_back(state_.unknowns.nodal[4 * i + k]);
       pressure.values.push_back(state_.unknowns.nodal[4 * i + 3]);
+    }
+    if (pair_contact_) {
+      // Body pairs: the same fields at the nodes projected onto the other body.
+      const auto& points = pair_contact_->points();
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const int node = points[i].node;
+        const double p = pair_contact_->pressure(int(i), state_.unknowns.nodal);
+        contact_status.values[node] = std::max(contact_status.values[node], p > 0.0 ? 2.0 : 1.0);
+        contact_pressure.values[node] = std::max(contact_pressure.values[node], p);
+        gap.values[node] = std::max(points[i].gap, 0.0);
+      }
     }
     if (!dies_.empty()) {
       // Status: 0 far from dies, 1 candidate (near a die), 2 in contact. Gap at
@@ -419,14 +511,23 @@ void Run::write_outputs(bool force) {
       stress.values.insert(stress.values.end(), s.data(), s.data() + 6);
       rate.values.push_back(fields.rate[e]);
       strain.values.push_back(state_.equivalent_strain[e]);
-      body_id.values.push_back(0);
+      body_id.values.push_back(0.0);
       quality.values.push_back(mesh::quality(mesh, e));
     }
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      std::fill_n(body_id.values.begin() + bodies_[b].range.first_tet, bodies_[b].range.tet_count, double(b));
     std::vector<io::Field> cell_fields{stress, rate, body_id, quality};
     if (!elastic && case_.time.enabled) cell_fields.push_back(strain);
+    // Von Mises stress: what a die designer reads off a deformable die.
+    io::Field von_mises{"von_mises_stress", 1, {}};
+    for (const material::Vec6& sigma : fields.stress) von_mises.values.push_back(material::von_mises(sigma));
+    cell_fields.push_back(von_mises);
     std::vector<io::Field> point_fields{velocity, pressure};
-    if (!dies_.empty()) point_fields.insert(point_fields.end(), {contact_status, contact_pressure, gap});
-    series_->write(state_.increment, state_.time, 0, case_.bodies.front().name, mesh, point_fields, cell_fields);
+    if (has_contact()) point_fields.insert(point_fields.end(), {contact_status, contact_pressure, gap});
+    std::string names = bodies_.front().name;
+    for (std::size_t b = 1; b < bodies_.size(); ++b) names += "+" + bodies_[b].name;
+    series_->write(state_.increment, state_.time, 0, names, mesh, point_fields, cell_fields);
+    if (pair_contact_) write_interface();
     for (std::size_t d = 0; d < dies_.size(); ++d) {
       const die::SurfaceTriangles& t = dies_[d].surface->triangles();
       std::vector<mesh::Point> moved = t.vertices;
@@ -443,6 +544,28 @@ void Run::write_outputs(bool force) {
     write_checkpoint(out_ + "/checkpoint.h5", state_);
     last_checkpoint_ = state_.increment;
   }
+}
+
+void Run::write_interface() const {
+  // Per interface node: the normal stress it transmits, from the nodal contact
+  // force of the pair term over the node's tributary area (N/mm² = MPa), and its velocity.
+  const Eigen::VectorXd& nodal = state_.unknowns.nodal;
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(nodal.size());
+  pair_contact_->add(nodal, force, nullptr); // residual = minus the force on the body
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "pair,body,node,x_mm,y_mm,z_mm,normal_stress_MPa,vx,vy,vz\n";
+  for (const contact::ContactPoint& p : pair_contact_->points()) {
+    const ContactPairSpec& pair = case_.contact_pairs[p.pair];
+    const int body = p.on_slave ? pair.slave : pair.master;
+    // The node's force pushes it away from the facet it projects onto: along +n.
+    const double stress = -force.segment<3>(4 * p.node).dot(p.normal) / p.area;
+    const mesh::Point& x = state_.mesh.nodes[p.node];
+    csv << pair_contact_->pairs()[p.pair].name << "," << bodies_[body].name << ","
+        << p.node - bodies_[body].range.first_node + 1 << "," << x.x() << "," << x.y() << "," << x.z() << "," << stress
+        << "," << nodal[4 * p.node] << "," << nodal[4 * p.node + 1] << "," << nodal[4 * p.node + 2] << "\n";
+  }
+  io::write_file_atomically(out_ + "/interface.csv", csv.str());
 }
 
 std::string Run::stop_reason() const {
@@ -485,35 +608,47 @@ double Run::press_speed() const {
 void Run::set_contact_scales() {
   // Friction needs σ₀ and K at the contact nodes: taken from the last
   // increment's solution (frozen within the increment, so the tangent stays exact).
-  const ElementFields fields = element_fields(state_.mesh, *law_, states_, state_.unknowns);
-  // The penalty and the force scale use σ₀ at the process rate v_ref / body
-  // size instead: a billet left at rest by the dies has almost no strain
+  const ElementFields fields = element_fields(state_.mesh, element_laws_, states_, state_.unknowns);
+  // The penalty and the force scale use the laws at the process rate v_ref /
+  // body size instead: a billet left at rest by the dies has almost no strain
   // rate, and scales taken from it would shrink with every increment at rest.
   const double reference_rate = reference_velocity_ / body_size_;
   std::vector<double> weight(state_.mesh.nodes.size(), 0.0);
   std::fill(node_flow_stress_.begin(), node_flow_stress_.end(), 0.0);
   std::fill(node_consistency_.begin(), node_consistency_.end(), 0.0);
-  double process_flow_stress = 0.0;
   for (int e = 0; e < state_.mesh.tet_count(); ++e) {
+    const material::Material& law = *element_laws_[e];
     const double rate = fields.rate[e] > 0.0 ? fields.rate[e] : reference_rate;
-    const double flow = law_->flow_stress(rate, states_[e]), k = law_->consistency(states_[e]);
+    const double flow = law.flow_stress(rate, states_[e]), k = law.consistency(states_[e]);
     for (int node : state_.mesh.tets[e]) node_flow_stress_[node] += flow, node_consistency_[node] += k, weight[node] += 1.0;
-    process_flow_stress += law_->flow_stress(reference_rate, states_[e]) / state_.mesh.tet_count();
   }
   for (std::size_t i = 0; i < weight.size(); ++i) node_flow_stress_[i] /= weight[i], node_consistency_[i] /= weight[i];
-  // Penalty ρ = factor × σ₀/v_ref: the penetration velocity σn/ρ is then
-  // about 1/factor of the press speed, whatever the flow stress does
-  // (hardening, temperature) along the stroke.
-  penalty_ = case_.contact.penalty * process_flow_stress / reference_velocity_;
-  reference_force_ = process_flow_stress * std::pow(mesh::volume(state_.mesh), 2.0 / 3.0);
+  // Penalty ρ = factor × 3η/L, η the mean secant viscosity (shear modulus for
+  // an elastic body) at the process rate and L the scene size: for a flowing
+  // body this is factor × σ₀/v_ref, so the penetration velocity σn/ρ is about
+  // 1/factor of the press speed, whatever the flow stress does (hardening,
+  // temperature) along the stroke. The softest body sets it: a stiff die's
+  // modulus would make the system needlessly ill-conditioned.
+  double softest = std::numeric_limits<double>::infinity();
+  for (const Body& body : bodies_) {
+    double viscosity = 0.0;
+    for (int e = body.range.first_tet; e < body.range.first_tet + body.range.tet_count; ++e)
+      viscosity += body.law->secant_viscosity(reference_rate, states_[e]) / body.range.tet_count;
+    softest = std::min(softest, viscosity);
+  }
+  penalty_ = case_.contact.penalty * 3.0 * softest / body_size_;
+  reference_force_ = 3.0 * softest * reference_rate * std::pow(mesh::volume(state_.mesh), 2.0 / 3.0);
 }
 
 bool Run::update_geometry(double dt, std::string& failure) {
   Timers::Scope scope(timers_, "update");
   // Strain rates of the solution on the geometry it was solved on, for ε̄.
-  solved_rates_ = element_fields(state_.mesh, *law_, states_, state_.unknowns).rate;
+  solved_rates_ = element_fields(state_.mesh, element_laws_, states_, state_.unknowns).rate;
   // x ← x + Δt v; contact nodes back onto the die at its new position.
   const double volume_before = mesh::volume(state_.mesh);
+  double volume_missing = 0.0; // what the compensation asked the incompressible bodies to restore
+  for (const Body& body : bodies_)
+    if (!std::isfinite(body.law->bulk_modulus())) volume_missing += body.initial_volume - mesh::volume(state_.mesh, body.range);
   for (int i = 0; i < state_.mesh.node_count(); ++i) state_.mesh.nodes[i] += dt * state_.unknowns.nodal.segment<3>(4 * i);
   for (std::size_t d = 0; d < dies_.size(); ++d) dies_[d].advance(state_.dies[d], dt);
   record_loads(state_.increment + 1, state_.time + dt);
@@ -533,7 +668,7 @@ bool Run::update_geometry(double dt, std::string& failure) {
   const double volume_after = mesh::volume(state_.mesh);
   state_.volume.solver += volume_flow - volume_before;
   if (compensate_volume_) // g V Δt, with g as set in try_increment()
-    state_.volume.compensation += (state_.volume.initial - volume_before) * std::min(1.0, dt / nominal_step_);
+    state_.volume.compensation += volume_missing * std::min(1.0, dt / nominal_step_);
   state_.volume.projection += volume_after - volume_flow;
   state_.volume.largest_increment =
       std::max(state_.volume.largest_increment, std::abs(volume_after - volume_before) / volume_before);
@@ -561,7 +696,8 @@ void Run::execute() {
     state_.increment = 1;
     log::info("increment 1");
     solver::NewtonReport report;
-    if (!try_increment(1.0, report)) throw RunError("increment 1 of body '" + case_.bodies.front().name + "': " + report.failure);
+    if (has_contact()) set_contact_scales();
+    if (!try_increment(1.0, report)) throw RunError("increment 1: " + report.failure);
     state_.newton_iterations = static_cast<int>(report.iterations.size());
     last_report_ = report;
     record_loads(1, 0.0);
@@ -586,7 +722,7 @@ void Run::execute() {
   const double progress_at_start = progress();
   std::string reason;
   while ((reason = stop_reason()).empty()) {
-    if (!dies_.empty()) set_contact_scales();
+    if (has_contact()) set_contact_scales();
     nominal_step_ = t.stroke_increment / press_speed();
     double dt = choose_time_step(nominal_step_);
     const double nominal = dt;
@@ -637,7 +773,7 @@ void Run::execute() {
       const Eigen::Vector3d v = dies_[d].velocity(state_.dies[d], dt);
       if (v.norm() == 0.0) continue;
       const Eigen::Vector3d& f = state_.loads[state_.loads.size() - surfaces_.size() + d].force;
-      dies_[d].limit_speed(state_.dies[d], f.dot(-v.normalized()), law_->rate_sensitivity(states_.front()));
+      dies_[d].limit_speed(state_.dies[d], f.dot(-v.normalized()), bodies_.front().law->rate_sensitivity(states_.front()));
     }
     // Progress line.
     const LoadRecord& lead = state_.loads[state_.loads.size() - surfaces_.size()];
@@ -647,7 +783,8 @@ void Run::execute() {
     log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN  newton %zu  contact %d  volume %+.3f%%  "
               "left ~%s",
               state_.increment, state_.time, lead.stroke, dt, surfaces_[lead.surface].name.c_str(),
-              lead.force.norm() / 1e3, report.iterations.size(), dies_.empty() ? 0 : contact_.active_count(),
+              lead.force.norm() / 1e3, report.iterations.size(),
+              (dies_.empty() ? 0 : contact_.active_count()) + (pair_contact_ ? pair_contact_->active_count() : 0),
               100.0 * (mesh::volume(state_.mesh) / state_.volume.initial - 1.0), clock_text(eta).c_str());
     write_outputs(false);
   }
@@ -657,15 +794,16 @@ void Run::execute() {
 }
 
 void Run::write_summary(double total) const {
-  const BodySpec& body = case_.bodies.front();
   std::ostringstream summary;
   summary.precision(10);
   const double volume_end = mesh::volume(state_.mesh);
   summary << "{\n  \"case\": " << json_string(case_.path) << ",\n  \"title\": " << json_string(case_.title) << ",\n"
-          << "  \"anvil_version\": " << json_string(ANVIL_VERSION) << ",\n"
-          << "  \"bodies\": [{\"name\": " << json_string(body.name) << ", \"nodes\": " << state_.mesh.node_count()
-          << ", \"elements\": " << state_.mesh.tet_count() << ", \"unknowns\": " << solver_->free_count()
-          << ", \"volume_mm3\": " << volume_end << "}],\n"
+          << "  \"anvil_version\": " << json_string(ANVIL_VERSION) << ",\n  \"bodies\": [";
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    summary << (b ? ", " : "") << "{\"name\": " << json_string(bodies_[b].name)
+            << ", \"nodes\": " << bodies_[b].range.node_count << ", \"elements\": " << bodies_[b].range.tet_count
+            << ", \"volume_mm3\": " << mesh::volume(state_.mesh, bodies_[b].range) << "}";
+  summary << "],\n  \"unknowns\": " << solver_->free_count() << ",\n"
           << "  \"increments\": " << state_.increment << ",\n  \"time_s\": " << state_.time << ",\n"
           << "  \"newton_iterations\": " << state_.newton_iterations << ",\n";
   if (!last_report_.iterations.empty())

@@ -19,7 +19,8 @@ const std::vector<Effect>& effect_registry() {
       {"time_stepping", "updated-Lagrangian time loop: x += Δt v, ε̄ += Δt ε̄̇, Δt control, checkpoints"},
       {"volume_compensation", "incompressible bodies in the time loop: each increment's flow restores the volume lost so far"},
       {"rigid_dies", "contact with rigid dies (plane or STL): search, penalty, active set, projection"},
-      {"friction", "friction on die contact (sticking, Tresca, Coulomb, Norton), regularised near zero slip"},
+      {"body_contact", "contact between deformable bodies: master/slave, symmetric or quasi-symmetric (Fourment 2008)"},
+      {"friction", "friction on die or body contact (sticking, Tresca, Coulomb, Norton), regularised near zero slip"},
       {"hardening", "flow stress depending on ε̄ (Hansel-Spittel)"},
   };
   return registry;
@@ -50,8 +51,11 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
         if (!std::isfinite(law->bulk_modulus())) add("volume_compensation");
   }
   if (!c.dies.empty()) add("rigid_dies");
+  if (!c.contact_pairs.empty()) add("body_contact");
   for (const DieSpec& d : c.dies)
     if (d.friction.kind != contact::FrictionKind::frictionless) add("friction");
+  for (const ContactPairSpec& p : c.contact_pairs)
+    if (p.friction.kind != contact::FrictionKind::frictionless) add("friction");
   for (const material::Material* law : laws)
     if (law->hardens()) add("hardening");
   // Registry order, so logs of different scenes compare line by line.

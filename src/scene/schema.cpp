@@ -49,11 +49,25 @@ const char* type_name(KeyType t) {
   return "?";
 }
 
+/// The keys of a `friction` map under `owner` ("dies[]", "contact_pairs[]").
+std::vector<KeySpec> friction_keys(const std::string& owner, const std::string& between) {
+  using T = KeyType;
+  const std::string f = owner + ".friction";
+  return {key(f, T::map, "friction between " + between + "; default frictionless"),
+          with_default(choices(key(f + ".law", T::string, "friction law (DESIGN §3)"),
+                               {"frictionless", "sticking", "tresca", "coulomb", "norton"}),
+                       "frictionless"),
+          range(key(f + ".factor", T::number, "tresca: m̄ in τ = m̄ σ₀/√3; coulomb: optional Tresca cap", "-"), 0, 1),
+          range(key(f + ".coefficient", T::number, "coulomb: μ; norton: α in τ = α K |Δv|^(q−1) Δv", "-"), 0, kInf),
+          range(key(f + ".exponent", T::number, "norton: q", "-"), 0, 1, true)};
+}
+
 } // namespace
 
 const std::vector<KeySpec>& case_schema() {
   using T = KeyType;
-  static const std::vector<KeySpec> schema = {
+  static const std::vector<KeySpec> schema = [] {
+    std::vector<KeySpec> keys = {
       required(range(key("anvil", T::integer, "case file format version"), 1, 1)),
       with_default(key("title", T::string, "one line shown in the log and summary"), ""),
       key("output", T::map, "what is written and where"),
@@ -69,7 +83,7 @@ const std::vector<KeySpec>& case_schema() {
                                "low memory) above; the LDLT ones need a quasi-definite matrix"),
                            {"auto", "umfpack", "cholmod_ldlt", "eigen_ldlt", "minres"}),
                    "auto"),
-      required(key("bodies", T::list, "deformable bodies (one for now: contact comes with a later release)")),
+      required(key("bodies", T::list, "deformable bodies, solved together (billets, deformable dies)")),
       required(key("bodies[].name", T::string, "name used by boundary conditions and in outputs")),
       required(key("bodies[].material", T::string, "material card (YAML), path relative to the case file")),
       required(key("bodies[].mesh", T::map, "a mesh file or a generated shape")),
@@ -88,7 +102,7 @@ const std::vector<KeySpec>& case_schema() {
       range(key("bodies[].mesh.element_size", T::number, "generated shapes: target edge length", "mm"), 0, kInf, true),
       key("boundary", T::list, "boundary conditions, applied in order (later ones win on shared nodes)"),
       required(key("boundary[].name", T::string, "name shown in loads.csv")),
-      key("boundary[].body", T::string, "body it applies to; default: the only body"),
+      key("boundary[].body", T::string, "body it applies to; required when there are several"),
       required(choices(key("boundary[].type", T::string,
                            "velocity: given components; symmetry: zero normal velocity; sticking_plate: all "
                            "components = plate velocity; frictionless_plate: normal component only; traction; pressure"),
@@ -133,12 +147,15 @@ const std::vector<KeySpec>& case_schema() {
                          0, 360), "0"),
       range(key("dies[].load_limit", T::number,
                 "hydraulic: press capacity; above it the press slows down as (limit/load)^(1/m)", "N"), 0, kInf, true),
-      key("dies[].friction", T::map, "friction between die and body; default frictionless"),
-      with_default(choices(key("dies[].friction.law", T::string, "friction law (DESIGN §3)"),
-                           {"frictionless", "sticking", "tresca", "coulomb", "norton"}), "frictionless"),
-      range(key("dies[].friction.factor", T::number, "tresca: m̄ in τ = m̄ σ₀/√3; coulomb: optional Tresca cap", "-"), 0, 1),
-      range(key("dies[].friction.coefficient", T::number, "coulomb: μ; norton: α in τ = α K |Δv|^(q−1) Δv", "-"), 0, kInf),
-      range(key("dies[].friction.exponent", T::number, "norton: q", "-"), 0, 1, true),
+      key("contact_pairs", T::list, "contact between two deformable bodies (node-to-facet, Fourment 2008)"),
+      required(key("contact_pairs[].master", T::string, "master body (a name from bodies)")),
+      required(key("contact_pairs[].slave", T::string, "slave body (a name from bodies)")),
+      with_default(choices(key("contact_pairs[].formulation", T::string,
+                               "master_slave: conditions at slave nodes (paper eq. 19); symmetric: at the nodes of "
+                               "both bodies (eq. 20); quasi_symmetric: both, with the master nodes' conditions "
+                               "added to the slave nodes' (eqs. 21-24)"),
+                           {"master_slave", "symmetric", "quasi_symmetric"}),
+                   "quasi_symmetric"),
       key("contact", T::map, "contact enforcement"),
       with_default(range(key("contact.penalty", T::number,
                              "penalty ρ = this × flow stress at the process rate (press speed / body size) / press speed: contact nodes penetrate at about 1/this of the press speed"),
@@ -163,7 +180,13 @@ const std::vector<KeySpec>& case_schema() {
       range(key("time.stop.gap", T::number, "distance between the two dies along z", "mm"), 0, kInf, true),
       range(key("time.stop.load", T::number, "largest load magnitude on any die", "N"), 0, kInf, true),
       range(key("time.stop.time", T::number, "end time", "s"), 0, kInf, true),
-  };
+    };
+    for (const auto& [owner, between] : {std::pair{"dies[]", "die and body"}, std::pair{"contact_pairs[]", "the two bodies"}}) {
+      const std::vector<KeySpec> friction = friction_keys(owner, between);
+      keys.insert(keys.end(), friction.begin(), friction.end());
+    }
+    return keys;
+  }();
   return schema;
 }
 

@@ -4,7 +4,9 @@
 #include "anvil/core/log.h"
 #include "anvil/mesh/TetMesh.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace anvil::solver {
 
@@ -36,26 +38,19 @@ IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem
   Merit m{0.0, 0.0, 0.0};
   {
     Timers::Scope scope(timers_, "assembly");
-    fem::AssemblyResult r = assembler_.assemble(mesh_, problem.law, problem.states, unknowns, problem.nodal_forces,
+    fem::AssemblyResult r = assembler_.assemble(mesh_, problem.laws, problem.states, unknowns, problem.nodal_forces,
                                                 problem.body_force, &tangent_);
     residual_ = std::move(r.residual);
     bad_element_ = r.bad_element;
     m.bubble_sq = r.bubble_residual_sq;
   }
-  if (problem.nodal_term) {
+  if (!problem.nodal_terms.empty()) {
     Timers::Scope scope(timers_, "contact");
     nodal_term_residual_.setZero(residual_.size());
     blocks_.clear();
-    problem.nodal_term->add(unknowns.nodal, nodal_term_residual_, &blocks_);
+    for (NodalTerm* term : problem.nodal_terms) term->add(unknowns.nodal, nodal_term_residual_, &blocks_);
     residual_ += nodal_term_residual_;
-    for (const NodeBlock& b : blocks_)
-      for (int i = 0; i < 3; ++i) {
-        const int row = dofs_.free_index(kDofsPerNode * b.node + i);
-        if (row < 0) continue;
-        for (int j = 0; j < 3; ++j)
-          if (const int col = dofs_.free_index(kDofsPerNode * b.node + j); col >= 0)
-            tangent_.coeffRef(row, col) += b.tangent(i, j);
-      }
+    for (const NodeBlock& b : blocks_) assembler_.add_velocity_block(tangent_, b.row_node, b.col_node, b.tangent);
   } else nodal_term_residual_.resize(0);
   for (int d = 0; d < dofs_.dof_count(); ++d) {
     if (dofs_.free_index(d) < 0) continue;
@@ -80,34 +75,53 @@ double IncrementSolver::force_scale(const IncrementProblem& problem) const {
 
 NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const NewtonSettings& settings,
                                     fem::BodyUnknowns& unknowns) {
-  const material::Material& law = problem.law;
   NewtonReport report;
   const int n = dofs_.dof_count();
   const double body_volume = std::abs(mesh::volume(mesh_));
 
   // Predictor: a near-rigid-plastic law started from rest sees huge viscosities
-  // wherever the guess is still, and Newton crawls. One Newtonian solve at the
-  // secant viscosity of a reference rate (|v|max / body size) gives a start
-  // in the quadratic basin.
+  // wherever the guess is still, and Newton crawls. One solve with each
+  // nonlinear law replaced by the Newtonian law of its secant viscosity at a
+  // reference rate (|v|max / body size) gives a start in the quadratic basin.
   bool at_rest = true;
   for (int d = 0; d < n && at_rest; ++d)
     if (dofs_.free_index(d) >= 0 && unknowns.nodal[d] != 0.0) at_rest = false;
   const double reference_velocity =
       problem.reference_velocity > 0.0 ? problem.reference_velocity : max_velocity(unknowns.nodal);
-  if (at_rest && !law.is_linear() && reference_velocity > 0.0) {
+  const bool nonlinear = std::any_of(problem.laws.begin(), problem.laws.end(),
+                                     [](const material::Material* law) { return !law->is_linear(); });
+  if (at_rest && nonlinear && reference_velocity > 0.0) {
     const double reference_rate = reference_velocity / std::cbrt(body_volume);
     const material::PointState state = problem.states.empty() ? material::PointState{} : problem.states.front();
-    const material::NortonHoff newtonian(law.secant_viscosity(reference_rate, state), 1.0, 0.0);
+    // One stand-in per distinct law (a scene has a few), linear laws kept.
+    std::vector<const material::Material*> distinct;
+    std::vector<std::unique_ptr<material::NortonHoff>> stand_ins;
+    fem::ElementLaws newtonian_laws(problem.laws.size());
+    for (std::size_t e = 0; e < problem.laws.size(); ++e) {
+      const material::Material* law = problem.laws[e];
+      const auto known = std::find(distinct.begin(), distinct.end(), law);
+      const std::size_t k = static_cast<std::size_t>(known - distinct.begin());
+      if (known == distinct.end()) {
+        distinct.push_back(law);
+        stand_ins.push_back(law->is_linear() ? nullptr
+                                             : std::make_unique<material::NortonHoff>(
+                                                   law->secant_viscosity(reference_rate, state), 1.0, 0.0));
+      }
+      newtonian_laws[e] = stand_ins[k] ? stand_ins[k].get() : law;
+    }
     NewtonSettings predictor = settings;
-    predictor.max_iterations = 1; // linear law: one Newton step is its solution (with an active
+    predictor.max_iterations = 1; // linear laws: one Newton step is the solution (with an active
     predictor.verbose = false;    // contact set, one step of it is enough for a start)
     Timers::Scope scope(timers_, "effect nonlinear_law (predictor)");
-    const IncrementProblem newtonian_problem{newtonian,          problem.states,     problem.nodal_forces,
-                                             problem.body_force, problem.nodal_term, reference_velocity,
+    const IncrementProblem newtonian_problem{newtonian_laws,     problem.states,     problem.nodal_forces,
+                                             problem.body_force, problem.nodal_terms, reference_velocity,
                                              problem.reference_force};
     solve(newtonian_problem, predictor, unknowns);
-    if (settings.verbose) log::info("    predictor: Newtonian solve at viscosity %.4g MPa.s (rate %.3g 1/s)",
-                                    newtonian.consistency(), reference_rate);
+    if (settings.verbose)
+      for (const auto& stand_in : stand_ins)
+        if (stand_in)
+          log::info("    predictor: Newtonian solve at viscosity %.4g MPa.s (rate %.3g 1/s)", stand_in->consistency(),
+                    reference_rate);
   }
 
   // Residuals are made relative: forces against the larger of the applied
@@ -121,7 +135,15 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     return (m.force_sq + m.bubble_sq) / (force * force) + m.flux_sq / (flux * flux);
   };
 
-  if (problem.nodal_term) problem.nodal_term->start(unknowns.nodal);
+  if (!problem.nodal_terms.empty()) {
+    std::vector<std::pair<int, int>> couplings;
+    for (NodalTerm* term : problem.nodal_terms) {
+      term->start(unknowns.nodal);
+      const std::vector<std::pair<int, int>> own = term->couplings();
+      couplings.insert(couplings.end(), own.begin(), own.end());
+    }
+    if (assembler_.set_couplings(couplings)) linear_solver_.pattern_changed();
+  }
   Merit merit = evaluate(problem, unknowns);
   double scale = force_scale(problem);
   Eigen::VectorXd rhs(dofs_.free_count()), solution(dofs_.free_count()), delta(n), bubble_delta;
@@ -182,7 +204,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
                                  std::sqrt(merit.flux_sq) / flux_scale,
                                  std::sqrt(delta_sq / std::max(velocity_sq, velocity_floor_sq)), step};
     report.iterations.push_back(record);
-    std::string note = problem.nodal_term ? problem.nodal_term->accept(unknowns.nodal) : std::string();
+    std::string note;
+    for (NodalTerm* term : problem.nodal_terms) note += term->accept(unknowns.nodal);
     if (linear_solver_.iterations() > 0) note += "  (" + std::to_string(linear_solver_.iterations()) + " minres iterations)";
     if (settings.verbose)
       log::info("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g%s", it,
@@ -193,7 +216,10 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     }
     if (record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance &&
         record.increment <= settings.tolerance) {
-      if (problem.nodal_term && set_changes < kMaxSetChanges && !problem.nodal_term->consistent(unknowns.nodal)) {
+      bool consistent = true;
+      if (set_changes < kMaxSetChanges)
+        for (NodalTerm* term : problem.nodal_terms) consistent = term->consistent(unknowns.nodal) && consistent;
+      if (!consistent) {
         phase_start = it;
         ++set_changes;
         // The active set changed: the converged field belongs to another

@@ -2,15 +2,12 @@
 // the die is the master, each boundary node a slave. Per candidate node the
 // velocity gap of the increment is
 //   h = −(v − v_die)·n − δ₀/Δt   (≤ 0 allowed, paper eq. 19 with a rigid master),
-// enforced by a penalty on the active nodes: contact pressure σn = ρ h.
-// Active set: for the first Newton iterations it follows the sign of h at the
-// last iterate (semi-smooth Newton); then it is frozen so Newton sees a smooth problem,
-// and once Newton has converged it is checked: a node with tensile contact
-// stress (h < 0) is released, a free node that penetrates (h > 0) is added, and
-// Newton goes on until the set no longer changes. Friction acts on active nodes.
+// enforced by a penalty on the active nodes (contact/ActiveSet.h): contact
+// pressure σn = ρ h. Friction acts on active nodes.
 // The term is nodal (one 3×3 block per node), so the sparsity pattern of the
 // global system does not change with the active set.
 #pragma once
+#include "anvil/contact/ActiveSet.h"
 #include "anvil/contact/Friction.h"
 #include "anvil/die/DieSurface.h"
 #include "anvil/solver/NodalTerm.h"
@@ -68,20 +65,18 @@ public:
   double first_contact_time(const Eigen::VectorXd& nodal, double touching) const;
 
   const std::vector<ContactCandidate>& candidates() const { return candidates_; }
-  int active_count() const;
+  int active_count() const { return active_.count(); }
 
 private:
   double gap_velocity(const ContactCandidate& c, const Eigen::VectorXd& nodal) const;
-  /// Whether candidate i belongs to the active set at `nodal` (with hysteresis).
-  bool active_at(int i, const Eigen::VectorXd& nodal) const;
+  /// h of every candidate at `nodal`, into gap_.
+  const std::vector<double>& gaps(const Eigen::VectorXd& nodal);
 
   std::vector<DieView> dies_;
   std::vector<ContactCandidate> candidates_;
   ContactIncrement increment_{};
-  std::vector<char> active_; ///< per candidate: the active set
-  bool frozen_ = false;      ///< active_ is used as is (else h > 0 decides)
-  int iterations_ = 0;       ///< Newton iterations since start()
-  static constexpr int kFreezeAfter = 3;
+  ActiveSet active_;         ///< per candidate
+  std::vector<double> gap_;  ///< per candidate, h at the last iterate asked
 };
 
 /// Tributary boundary area of each node (mm²): a third of each adjacent boundary face.

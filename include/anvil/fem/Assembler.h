@@ -9,11 +9,16 @@
 #include "anvil/fem/mini_element.h"
 
 #include <Eigen/Sparse>
+#include <utility>
 #include <vector>
 
 namespace anvil::fem {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, long>;
+
+/// The law of each element: bodies of different materials are solved in one
+/// system, each element with its own body's law.
+using ElementLaws = std::vector<const material::Material*>;
 
 /// The unknowns of one body.
 struct BodyUnknowns {
@@ -36,7 +41,7 @@ public:
   /// e.g. tractions) and, when `tangent` is given, the condensed tangent over
   /// free dofs (pattern fixed at construction). Stores what the bubble
   /// update needs; call bubble_increment() after the linear solve.
-  AssemblyResult assemble(const mesh::TetMesh& mesh, const material::Material& law,
+  AssemblyResult assemble(const mesh::TetMesh& mesh, const ElementLaws& laws,
                           const std::vector<material::PointState>& states, const BodyUnknowns& unknowns,
                           const Eigen::VectorXd& nodal_forces, const BodyForce& body_force, SparseMatrix* tangent);
 
@@ -48,9 +53,18 @@ public:
 
   /// A matrix with the tangent's pattern and zero values (for analyse-once solvers).
   const SparseMatrix& pattern() const { return pattern_; }
+  /// Adds node pairs (a, b) that a contact term couples to the pattern of the
+  /// elements (both blocks ab and ba). True when the pattern changed (the
+  /// linear solver must then analyse it again).
+  bool set_couplings(const std::vector<std::pair<int, int>>& couplings);
+  /// tangent(velocity rows of `row_node`, velocity columns of `col_node`) += block, over free dofs;
+  /// the pair must be in the pattern (same node, element neighbours or a coupling).
+  void add_velocity_block(SparseMatrix& tangent, int row_node, int col_node, const Eigen::Matrix3d& block) const;
   int colour_count() const { return static_cast<int>(colours_.size()); }
 
 private:
+  void build_pattern(const std::vector<std::vector<int>>& neighbours);
+
   const DofMap& dofs_;
   SparseMatrix pattern_;
   std::vector<std::vector<int>> colours_; ///< element indices per colour
@@ -60,6 +74,8 @@ private:
   /// (kept per element so the sums are in a fixed order, whatever the threads).
   std::vector<char> bad_;
   std::vector<double> bubble_sq_;
+  std::vector<std::vector<int>> neighbours_;     ///< per node, the nodes it shares an element with (sorted)
+  std::vector<std::pair<int, int>> couplings_;   ///< the contact couplings in the pattern
 };
 
 } // namespace anvil::fem

@@ -42,4 +42,19 @@ void validate(const TetMesh& mesh, const std::string& source);
 /// Sum of tet volumes (mm³).
 double volume(const TetMesh& mesh);
 
+/// Where one body's entities sit in a mesh that holds several (see append).
+struct MeshRange {
+  int first_node = 0, node_count = 0;
+  int first_tet = 0, tet_count = 0;
+  int first_face = 0, face_count = 0;
+  bool has_node(int node) const { return node >= first_node && node < first_node + node_count; }
+};
+
+/// Appends `part` to `mesh` (indices shifted) and returns where it went: the
+/// bodies of a scene are solved as one mesh of disjoint parts.
+MeshRange append(TetMesh& mesh, const TetMesh& part);
+
+/// Sum of the volumes of the tets of `range` (mm³).
+double volume(const TetMesh& mesh, const MeshRange& range);
+
 } // namespace anvil::mesh

@@ -1,5 +1,6 @@
 // A case file (scene) as read and checked, before anything is built.
 #pragma once
+#include "anvil/contact/BodyContact.h"
 #include "anvil/contact/Friction.h"
 #include "anvil/material/Material.h"
 #include "anvil/scene/BoundaryCondition.h"
@@ -46,6 +47,14 @@ struct DieSpec {
   std::string source;
 };
 
+/// Contact between two deformable bodies (DESIGN §3, Fourment 2008).
+struct ContactPairSpec {
+  int master = 0, slave = 1; ///< body indices
+  contact::PairFormulation formulation = contact::PairFormulation::quasi_symmetric;
+  contact::FrictionLaw friction;
+  std::string source;
+};
+
 /// The time loop (DESIGN §4). Absent from a case: one increment, no update.
 struct TimeSpec {
   bool enabled = false;
@@ -80,6 +89,7 @@ struct Case {
   std::vector<BoundaryCondition> boundary;
   std::vector<int> boundary_body; ///< body index of each boundary condition
   std::vector<DieSpec> dies;
+  std::vector<ContactPairSpec> contact_pairs;
   ContactSpec contact;
   TimeSpec time;
   int vtk_every = 1;         ///< write the VTK series every N increments (and the last)

@@ -35,11 +35,11 @@ struct NewtonReport {
 
 /// What one increment solves for, besides the unknowns.
 struct IncrementProblem {
-  const material::Material& law;
+  const fem::ElementLaws& laws;                    ///< per element
   const std::vector<material::PointState>& states; ///< per element; empty = default state
   const Eigen::VectorXd& nodal_forces;             ///< external nodal forces (N), 4 × nodes
   fem::BodyForce body_force;
-  NodalTerm* nodal_term = nullptr;                 ///< contact with rigid dies, if any
+  std::vector<NodalTerm*> nodal_terms;            ///< contact with dies, between bodies
   double reference_velocity = 0.0;                 ///< mm/s; 0 = largest prescribed velocity
   double reference_force = 0.0;                    ///< N; residuals are measured against at least this load
 };
@@ -52,11 +52,12 @@ public:
   /// Solves for the free unknowns of `unknowns` (prescribed entries are kept
   /// as given), starting from their current values.
   NewtonReport solve(const IncrementProblem& problem, const NewtonSettings& settings, fem::BodyUnknowns& unknowns);
-  /// The same without contact: `nodal_forces` are external nodal forces (N), 4 × nodes.
+  /// One body of one law, without contact: `nodal_forces` are external nodal forces (N), 4 × nodes.
   NewtonReport solve(const material::Material& law, const std::vector<material::PointState>& states,
                      const Eigen::VectorXd& nodal_forces, const fem::BodyForce& body_force,
                      const NewtonSettings& settings, fem::BodyUnknowns& unknowns) {
-    return solve(IncrementProblem{law, states, nodal_forces, body_force}, settings, unknowns);
+    const fem::ElementLaws laws(mesh_.tets.size(), &law);
+    return solve(IncrementProblem{laws, states, nodal_forces, body_force, {}}, settings, unknowns);
   }
 
   /// Residual of the last evaluation, 4 × nodes: at prescribed dofs it is the
@@ -87,7 +88,7 @@ private:
   Timers& timers_;
   fem::SparseMatrix tangent_;
   Eigen::VectorXd residual_;
-  Eigen::VectorXd nodal_term_residual_; ///< the nodal term's part of residual_
+  Eigen::VectorXd nodal_term_residual_; ///< the nodal terms' part of residual_
   std::vector<NodeBlock> blocks_;
   int bad_element_ = -1;
   double merit_bubble_sq_ = 0.0;

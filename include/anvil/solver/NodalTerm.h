@@ -1,18 +1,20 @@
-// A term of the residual that couples only the velocity of each node with
-// itself (rigid-die contact and friction, DESIGN §3): a 3-vector and a 3×3
-// block per node. The Newton solver adds it to the assembled system; the
-// node's diagonal block is always in the sparsity pattern, so the pattern
-// never changes with the active set.
+// A node-based term of the residual (contact and friction, DESIGN §3): a
+// 3-vector per node and 3×3 velocity blocks, on a node's own velocity (rigid
+// dies) or coupling it with the nodes of a facet it projects onto (body
+// pairs). The Newton solver adds it to the assembled system. The couplings a
+// term may use are declared once per increment, so the sparsity pattern does
+// not change with the active set.
 #pragma once
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace anvil::solver {
 
 struct NodeBlock {
-  int node;
-  Eigen::Matrix3d tangent; ///< ∂r/∂v of this node (N·s/mm); may be unsymmetric (Coulomb)
+  int row_node, col_node;
+  Eigen::Matrix3d tangent; ///< ∂r(row node)/∂v(col node) (N·s/mm); may be unsymmetric (Coulomb)
 };
 
 class NodalTerm {
@@ -32,6 +34,9 @@ public:
   /// internal choices (an active set) agree with `nodal`; false if it changed
   /// them, and Newton must go on.
   virtual bool consistent(const Eigen::VectorXd& nodal) = 0;
+  /// Pairs of distinct nodes (a < b) whose blocks the term may fill in this
+  /// increment, sorted; none for a term on each node's own velocity.
+  virtual std::vector<std::pair<int, int>> couplings() const { return {}; }
 };
 
 } // namespace anvil::solver

@@ -1,0 +1,72 @@
+// The active set of a penalty contact term (DESIGN §3), one flag per
+// constraint, driven by its gap velocity h (mm/s; h > 0 closes the gap).
+// For the first Newton iterations it follows the sign of h at the last
+// iterate (semi-smooth Newton); then it is frozen so Newton sees a smooth
+// problem, and once Newton has converged it is checked: a constraint with
+// tensile contact stress (h < 0) is released, a free one that penetrates
+// (h > 0) is added, and Newton goes on until the set no longer changes.
+// A constraint changes side only beyond a tolerance: at the edge of a contact
+// zone the exact solution has h = 0 and σn = 0 together, and a strict test
+// would cycle between the two sets.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace anvil::contact {
+
+class ActiveSet {
+public:
+  void resize(std::size_t constraints) { active_.assign(constraints, 0); }
+  void set_tolerance(double gap_tolerance) { tolerance_ = gap_tolerance; }
+
+  /// Newton starts: a constraint touching with no relative normal velocity
+  /// (h = 0) starts active, so a body resting on another is supported.
+  void start(const std::vector<double>& gap) {
+    frozen_ = false;
+    iterations_ = 0;
+    for (std::size_t i = 0; i < active_.size(); ++i) active_[i] = gap[i] > -tolerance_;
+  }
+  /// An accepted Newton iterate: the set follows h until it freezes. Returns the log note.
+  std::string accept(const std::vector<double>& gap, const char* what) {
+    int activated = 0, released = 0, active = 0;
+    for (std::size_t i = 0; i < active_.size(); ++i) {
+      const char now = frozen_ ? active_[i] : wants(i, gap[i]);
+      activated += now && !active_[i];
+      released += !now && active_[i];
+      active += now;
+      active_[i] = now;
+    }
+    frozen_ = ++iterations_ >= kFreezeAfter;
+    return std::string("  ") + what + " " + std::to_string(active) + " (+" + std::to_string(activated) + " -" +
+           std::to_string(released) + ")" + (frozen_ ? " frozen" : "");
+  }
+  /// Newton converged: true if the set agrees with h; otherwise it is updated.
+  bool consistent(const std::vector<double>& gap) {
+    bool same = true;
+    for (std::size_t i = 0; i < active_.size(); ++i) {
+      const char now = wants(i, gap[i]);
+      same = same && now == active_[i];
+      active_[i] = now;
+    }
+    return same;
+  }
+
+  bool operator[](std::size_t i) const { return active_[i] != 0; }
+  std::size_t size() const { return active_.size(); }
+  int count() const {
+    int n = 0;
+    for (char a : active_) n += a;
+    return n;
+  }
+
+private:
+  bool wants(std::size_t i, double h) const { return active_[i] ? h > -tolerance_ : h > tolerance_; }
+
+  std::vector<char> active_;
+  double tolerance_ = 0.0; ///< mm/s
+  bool frozen_ = false;
+  int iterations_ = 0;
+  static constexpr int kFreezeAfter = 3;
+};
+
+} // namespace anvil::contact

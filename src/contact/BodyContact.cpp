@@ -1,0 +1,308 @@
+#include "anvil/contact/BodyContact.h"
+
+#include "anvil/contact/SurfaceSearch.h"
+#include "anvil/core/error.h"
+#include "anvil/fem/DofMap.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace anvil::contact {
+
+using fem::kDofsPerNode;
+
+PairFormulation pair_formulation(const std::string& name) {
+  if (name == "master_slave") return PairFormulation::master_slave;
+  if (name == "symmetric") return PairFormulation::symmetric;
+  if (name == "quasi_symmetric") return PairFormulation::quasi_symmetric;
+  throw InputError("unknown contact formulation '" + name + "' (expected master_slave, symmetric or quasi_symmetric)");
+}
+
+std::string to_string(PairFormulation formulation) {
+  switch (formulation) {
+  case PairFormulation::master_slave: return "master_slave";
+  case PairFormulation::symmetric: return "symmetric";
+  case PairFormulation::quasi_symmetric: return "quasi_symmetric";
+  }
+  return "?";
+}
+
+namespace {
+
+/// Barycentric coordinates of `q` (on or near the plane of triangle abc), clamped to the triangle.
+Eigen::Vector3d barycentric(const mesh::Point& q, const mesh::Point& a, const mesh::Point& b, const mesh::Point& c) {
+  const Eigen::Vector3d e0 = b - a, e1 = c - a, r = q - a;
+  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = r.dot(e0), d21 = r.dot(e1);
+  const double det = d00 * d11 - d01 * d01;
+  Eigen::Vector3d l;
+  l[1] = (d11 * d20 - d01 * d21) / det;
+  l[2] = (d00 * d21 - d01 * d20) / det;
+  l[0] = 1.0 - l[1] - l[2];
+  l = l.cwiseMax(0.0);
+  return l / l.sum();
+}
+
+Eigen::Vector3d face_normal(const mesh::TetMesh& mesh, const mesh::Triangle& f) {
+  return (mesh.nodes[f[1]] - mesh.nodes[f[0]]).cross(mesh.nodes[f[2]] - mesh.nodes[f[0]]);
+}
+
+} // namespace
+
+void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
+  points_.clear();
+  std::vector<std::vector<int>> node_faces(mesh.nodes.size());
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
+    for (int node : mesh.boundary_faces[f]) node_faces[node].push_back(static_cast<int>(f));
+
+  for (std::size_t q = 0; q < pairs_.size(); ++q) {
+    const BodyPair& pair = pairs_[q];
+    const bool one_sided = pair.formulation == PairFormulation::master_slave;
+    const double share = one_sided ? 1.0 : 0.5; // f_p: eq. 19 against the ½ of eqs. 20-21
+    auto project = [&](const mesh::MeshRange& from, const mesh::MeshRange& onto, bool on_slave) {
+      const auto first = mesh.boundary_faces.begin() + onto.first_face;
+      const std::vector<mesh::Triangle> faces(first, first + onto.face_count);
+      const SurfaceSearch surface(mesh.nodes, faces);
+      for (int node = from.first_node; node < from.first_node + from.node_count; ++node) {
+        if (node_faces[node].empty()) continue; // interior node
+        const mesh::Point& x = mesh.nodes[node];
+        const SurfaceSearch::Closest hit = surface.closest(x);
+        const mesh::Triangle& facet = faces[hit.face];
+        const Eigen::Vector3d facet_normal = face_normal(mesh, facet).normalized();
+        // Inside a facet the offset is along its normal; on an edge or a vertex
+        // the offset direction is the surface normal there. The side comes from the facet.
+        const Eigen::Vector3d offset = x - hit.point;
+        const double distance = offset.norm();
+        const double side = offset.dot(facet_normal) >= 0.0 ? 1.0 : -1.0;
+        const bool on_surface = distance < 1e-12 * (1.0 + x.norm());
+        const Eigen::Vector3d normal = on_surface ? facet_normal : Eigen::Vector3d(side * offset / distance);
+        const double gap = on_surface ? 0.0 : side * distance;
+        if (gap >= search_distance) continue;
+        // Tributary area on the faces that look at the other body (not the
+        // sides of a block, whose edge nodes would otherwise weigh double).
+        double area = 0.0, all = 0.0;
+        for (int f : node_faces[node]) {
+          const Eigen::Vector3d n = face_normal(mesh, mesh.boundary_faces[f]);
+          const double third = n.norm() / 6.0;
+          all += third;
+          if (n.dot(normal) < -0.3 * n.norm()) area += third;
+        }
+        if (area == 0.0) area = all;
+        ContactPoint p;
+        p.pair = static_cast<int>(q);
+        p.node = node;
+        p.facet = facet;
+        p.shape = barycentric(hit.point, mesh.nodes[facet[0]], mesh.nodes[facet[1]], mesh.nodes[facet[2]]);
+        p.normal = normal;
+        p.gap = gap;
+        p.area = area;
+        p.weight = share * area;
+        p.on_slave = on_slave;
+        points_.push_back(p);
+      }
+    };
+    project(pair.slave, pair.master, true);
+    if (!one_sided) project(pair.master, pair.slave, false);
+  }
+  build_multipliers(mesh.node_count());
+}
+
+void BodyContact::build_multipliers(int node_count) {
+  multipliers_.clear();
+  support_.clear();
+  // Multiplier of each slave node (master/slave, quasi-symmetric). Points come
+  // pair by pair, so an entry left by an earlier pair is recognised by its pair.
+  std::vector<int> slave_multiplier(static_cast<std::size_t>(node_count), -1);
+  auto multiplier_of = [&](int pair, int node) {
+    int& index = slave_multiplier[node];
+    if (index < 0 || multipliers_[index].pair != pair) {
+      multipliers_.push_back({pair});
+      index = static_cast<int>(multipliers_.size()) - 1;
+    }
+    return index;
+  };
+  for (ContactPoint& p : points_) {
+    const PairFormulation formulation = pairs_[p.pair].formulation;
+    if (formulation == PairFormulation::symmetric) {
+      multipliers_.push_back({p.pair});
+      p.multiplier = {static_cast<int>(multipliers_.size()) - 1, -1, -1};
+      p.multiplier_weight = Eigen::Vector3d(1.0, 0.0, 0.0);
+    } else if (p.on_slave) {
+      p.multiplier = {multiplier_of(p.pair, p.node), -1, -1};
+      p.multiplier_weight = Eigen::Vector3d(1.0, 0.0, 0.0);
+    } else { // quasi-symmetric master node: the slave facet's λ, interpolated (eq. 22)
+      for (int k = 0; k < 3; ++k) p.multiplier[k] = multiplier_of(p.pair, p.facet[k]);
+      p.multiplier_weight = p.shape;
+    }
+  }
+  // Per multiplier, the points feeding it, then its support nodes with merged coefficients.
+  std::vector<std::vector<std::pair<int, double>>> feeds(multipliers_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (points_[i].multiplier[k] >= 0 && points_[i].multiplier_weight[k] > 0.0)
+        feeds[points_[i].multiplier[k]].push_back({static_cast<int>(i), points_[i].multiplier_weight[k]});
+  for (std::size_t m = 0; m < multipliers_.size(); ++m) {
+    Multiplier& mult = multipliers_[m];
+    mult.first = static_cast<int>(support_.size());
+    auto add_support = [&](int node, const Eigen::Vector3d& normal, const Eigen::Matrix3d& tangential) {
+      for (int s = mult.first; s < static_cast<int>(support_.size()); ++s)
+        if (support_[s].node == node) {
+          support_[s].normal += normal;
+          support_[s].tangential += tangential;
+          return;
+        }
+      support_.push_back({node, normal, tangential});
+    };
+    for (const auto& [i, w] : feeds[m]) {
+      const ContactPoint& p = points_[i];
+      const double scale = w * p.weight;
+      // h_p = −n·(v_node − Σ N_j v_j) − δ₀/Δt; tangential velocity in the
+      // slave's sense (slave − master): sign +1 at a slave node, −1 at a master node.
+      const double sense = p.on_slave ? 1.0 : -1.0;
+      const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
+      add_support(p.node, -scale * p.normal, scale * sense * tangent_projector);
+      for (int j = 0; j < 3; ++j)
+        add_support(p.facet[j], scale * p.shape[j] * p.normal, -scale * sense * p.shape[j] * tangent_projector);
+      mult.area_weight += scale;
+      mult.gap_sum += scale * p.gap;
+    }
+    mult.count = static_cast<int>(support_.size()) - mult.first;
+  }
+  active_.resize(multipliers_.size());
+  gap_.assign(multipliers_.size(), 0.0);
+}
+
+void BodyContact::set_increment(const BodyContactIncrement& increment) {
+  increment_ = increment;
+  active_.set_tolerance(increment.gap_tolerance);
+}
+
+double BodyContact::constraint(const Multiplier& m, const Eigen::VectorXd& nodal) const {
+  double c = -m.gap_sum / increment_.time_step;
+  for (int s = m.first; s < m.first + m.count; ++s)
+    c += support_[s].normal.dot(nodal.segment<3>(kDofsPerNode * support_[s].node));
+  return c;
+}
+
+const std::vector<double>& BodyContact::gaps(const Eigen::VectorXd& nodal) {
+  for (std::size_t m = 0; m < multipliers_.size(); ++m)
+    gap_[m] = constraint(multipliers_[m], nodal) / multipliers_[m].area_weight;
+  return gap_;
+}
+
+void BodyContact::start(const Eigen::VectorXd& nodal) { active_.start(gaps(nodal)); }
+bool BodyContact::consistent(const Eigen::VectorXd& nodal) { return active_.consistent(gaps(nodal)); }
+std::string BodyContact::accept(const Eigen::VectorXd& nodal) { return active_.accept(gaps(nodal), "pair constraints"); }
+
+double BodyContact::pressure(int i, const Eigen::VectorXd& nodal) const {
+  const ContactPoint& p = points_[i];
+  double pressure = 0.0;
+  for (int k = 0; k < 3; ++k)
+    if (const int m = p.multiplier[k]; m >= 0 && active_[m])
+      pressure += p.multiplier_weight[k] * increment_.penalty *
+                  std::max(constraint(multipliers_[m], nodal) / multipliers_[m].area_weight, 0.0);
+  return pressure;
+}
+
+double BodyContact::largest_penetration(int pair) const {
+  double largest = 0.0;
+  for (const ContactPoint& p : points_)
+    if (p.pair == pair) largest = std::max(largest, -p.gap);
+  return largest;
+}
+
+void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
+                      std::vector<solver::NodeBlock>* blocks) const {
+  const double rho = increment_.penalty;
+  for (std::size_t index = 0; index < multipliers_.size(); ++index) {
+    if (!active_[index]) continue;
+    const Multiplier& m = multipliers_[index];
+    const double stiffness = rho / m.area_weight;
+    // Normal: ∂Π/∂v_i = λ c_i with λ = ρ C/Ã (may be tensile while the set is frozen).
+    const double lambda = stiffness * constraint(m, nodal);
+    const bool sticking = pairs_[m.pair].friction.kind == FrictionKind::sticking;
+    Eigen::Vector3d tangential = Eigen::Vector3d::Zero(); // T = Σ D_i v_i
+    if (sticking)
+      for (int s = m.first; s < m.first + m.count; ++s)
+        tangential += support_[s].tangential * nodal.segment<3>(kDofsPerNode * support_[s].node);
+    for (int s = m.first; s < m.first + m.count; ++s) {
+      const Support& a = support_[s];
+      Eigen::Vector3d r = lambda * a.normal;
+      if (sticking) r += stiffness * a.tangential.transpose() * tangential;
+      residual.segment<3>(kDofsPerNode * a.node) += r;
+      if (!blocks) continue;
+      for (int t = m.first; t < m.first + m.count; ++t) {
+        const Support& b = support_[t];
+        Eigen::Matrix3d k = stiffness * a.normal * b.normal.transpose();
+        if (sticking) k += stiffness * a.tangential.transpose() * b.tangential;
+        blocks->push_back({a.node, b.node, k});
+      }
+    }
+  }
+  // Friction laws with a stress of their own, at each point.
+  for (const ContactPoint& p : points_) {
+    const FrictionLaw& law = pairs_[p.pair].friction;
+    if (law.kind == FrictionKind::frictionless || law.kind == FrictionKind::sticking) continue;
+    double sigma_n = 0.0;
+    bool touching = false;
+    for (int k = 0; k < 3; ++k)
+      if (const int m = p.multiplier[k]; m >= 0 && active_[m]) {
+        touching = true;
+        sigma_n += p.multiplier_weight[k] * rho * constraint(multipliers_[m], nodal) / multipliers_[m].area_weight;
+      }
+    if (!touching) continue;
+    const double sense = p.on_slave ? 1.0 : -1.0;
+    const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
+    Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * p.node);
+    for (int j = 0; j < 3; ++j) relative -= p.shape[j] * nodal.segment<3>(kDofsPerNode * p.facet[j]);
+    const FrictionStress f =
+        friction_stress(law, {sense * tangent_projector * relative, sigma_n, (*increment_.flow_stress)[p.node],
+                              (*increment_.consistency)[p.node], increment_.regularisation, rho});
+    // w = sense P (v_node − Σ N_j v_j): coefficient of node a in w is c_a P.
+    const std::array<int, 4> nodes{p.node, p.facet[0], p.facet[1], p.facet[2]};
+    const std::array<double, 4> coefficient{sense, -sense * p.shape[0], -sense * p.shape[1], -sense * p.shape[2]};
+    for (int a = 0; a < 4; ++a) {
+      residual.segment<3>(kDofsPerNode * nodes[a]) += coefficient[a] * p.weight * f.stress;
+      if (!blocks) continue;
+      for (int b = 0; b < 4; ++b)
+        blocks->push_back({nodes[a], nodes[b], coefficient[a] * coefficient[b] * p.weight * f.d_sliding * tangent_projector});
+      if (f.d_normal_pressure.isZero()) continue;
+      // Coulomb: τ depends on σn = Σ_m W λ_m, λ_m = ρ C_m/Ã_m.
+      for (int k = 0; k < 3; ++k)
+        if (const int m = p.multiplier[k]; m >= 0 && active_[m]) {
+          const Multiplier& mult = multipliers_[m];
+          const double gain = coefficient[a] * p.weight * p.multiplier_weight[k] * rho / mult.area_weight;
+          for (int s = mult.first; s < mult.first + mult.count; ++s)
+            blocks->push_back({nodes[a], support_[s].node, gain * f.d_normal_pressure * support_[s].normal.transpose()});
+        }
+    }
+  }
+}
+
+std::vector<std::pair<int, int>> BodyContact::couplings() const {
+  std::vector<std::pair<int, int>> pairs;
+  auto couple = [&](int a, int b) {
+    if (a != b) pairs.push_back({std::min(a, b), std::max(a, b)});
+  };
+  for (const Multiplier& m : multipliers_)
+    for (int s = m.first; s < m.first + m.count; ++s)
+      for (int t = s + 1; t < m.first + m.count; ++t) couple(support_[s].node, support_[t].node);
+  for (const ContactPoint& p : points_) {
+    const FrictionKind kind = pairs_[p.pair].friction.kind;
+    if (kind == FrictionKind::frictionless || kind == FrictionKind::sticking) continue;
+    const std::array<int, 4> nodes{p.node, p.facet[0], p.facet[1], p.facet[2]};
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) couple(nodes[a], nodes[b]);
+      if (kind != FrictionKind::coulomb) continue;
+      for (int k = 0; k < 3; ++k)
+        if (const int m = p.multiplier[k]; m >= 0)
+          for (int s = multipliers_[m].first; s < multipliers_[m].first + multipliers_[m].count; ++s)
+            couple(nodes[a], support_[s].node);
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+} // namespace anvil::contact
