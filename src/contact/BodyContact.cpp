@@ -47,6 +47,13 @@ Eigen::Vector3d face_normal(const mesh::TetMesh& mesh, const mesh::Triangle& f) 
   return (mesh.nodes[f[1]] - mesh.nodes[f[0]]).cross(mesh.nodes[f[2]] - mesh.nodes[f[0]]);
 }
 
+/// Outward unit normal of a body at a boundary node: the area-weighted mean of its boundary faces.
+Eigen::Vector3d own_normal(const mesh::TetMesh& mesh, const std::vector<int>& faces) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (int f : faces) n += face_normal(mesh, mesh.boundary_faces[f]);
+  return n.normalized();
+}
+
 } // namespace
 
 void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
@@ -67,14 +74,31 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
         if (node_faces[node].empty()) continue; // interior node
         const mesh::Point& x = mesh.nodes[node];
         const SurfaceSearch::Closest hit = surface.closest(x);
-        const mesh::Triangle& facet = faces[hit.face];
+        // On an edge or a vertex several facets hold the closest point; the one
+        // that faces the node's own surface best gives the normal and the side
+        // (a node on the rim of a block lying on another must not take the
+        // side face of the block below).
+        const Eigen::Vector3d own = own_normal(mesh, node_faces[node]);
+        int best = onto.first_face + hit.face;
+        double best_facing = face_normal(mesh, mesh.boundary_faces[best]).normalized().dot(own);
+        for (int vertex : faces[hit.face])
+          for (int f : node_faces[vertex]) {
+            if (f < onto.first_face || f >= onto.first_face + onto.face_count) continue;
+            const mesh::Triangle& t = mesh.boundary_faces[f];
+            const double facing = face_normal(mesh, t).normalized().dot(own);
+            const Eigen::Vector3d l = barycentric(hit.point, mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]);
+            const mesh::Point on_t = l[0] * mesh.nodes[t[0]] + l[1] * mesh.nodes[t[1]] + l[2] * mesh.nodes[t[2]];
+            if (facing < best_facing && (on_t - hit.point).norm() <= 1e-9 * (1.0 + hit.point.norm()))
+              best = f, best_facing = facing;
+          }
+        const mesh::Triangle& facet = mesh.boundary_faces[best];
         const Eigen::Vector3d facet_normal = face_normal(mesh, facet).normalized();
         // Inside a facet the offset is along its normal; on an edge or a vertex
         // the offset direction is the surface normal there. The side comes from the facet.
         const Eigen::Vector3d offset = x - hit.point;
         const double distance = offset.norm();
         const double side = offset.dot(facet_normal) >= 0.0 ? 1.0 : -1.0;
-        const bool on_surface = distance < 1e-12 * (1.0 + x.norm());
+        const bool on_surface = distance < 1e-9 * (1.0 + x.norm());
         const Eigen::Vector3d normal = on_surface ? facet_normal : Eigen::Vector3d(side * offset / distance);
         const double gap = on_surface ? 0.0 : side * distance;
         if (gap >= search_distance) continue;

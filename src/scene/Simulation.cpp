@@ -547,23 +547,30 @@ void Run::write_outputs(bool force) {
 }
 
 void Run::write_interface() const {
-  // Per interface node: the normal stress it transmits, from the nodal contact
-  // force of the pair term over the node's tributary area (N/mm² = MPa), and its velocity.
+  // Per interface node of either body, whatever the formulation: the normal
+  // stress it transmits, its nodal contact force over its tributary area
+  // (N/mm² = MPa), and its velocity. The nodes are found by projecting both
+  // sides (a symmetric search, for output only: master/slave itself never
+  // looks at master nodes, and that is where its errors show).
   const Eigen::VectorXd& nodal = state_.unknowns.nodal;
   Eigen::VectorXd force = Eigen::VectorXd::Zero(nodal.size());
   pair_contact_->add(nodal, force, nullptr); // residual = minus the force on the body
+  std::vector<contact::BodyPair> both_sides = pair_contact_->pairs();
+  for (contact::BodyPair& pair : both_sides) pair.formulation = contact::PairFormulation::symmetric;
+  contact::BodyContact probe(both_sides);
+  probe.search(state_.mesh, 1e-3 * reference_length_);
   std::ostringstream csv;
   csv.precision(10);
   csv << "pair,body,node,x_mm,y_mm,z_mm,normal_stress_MPa,vx,vy,vz\n";
-  for (const contact::ContactPoint& p : pair_contact_->points()) {
+  for (const contact::ContactPoint& p : probe.points()) {
     const ContactPairSpec& pair = case_.contact_pairs[p.pair];
     const int body = p.on_slave ? pair.slave : pair.master;
-    // The node's force pushes it away from the facet it projects onto: along +n.
+    // The contact force pushes the node away from the facet it projects onto: along +n.
     const double stress = -force.segment<3>(4 * p.node).dot(p.normal) / p.area;
     const mesh::Point& x = state_.mesh.nodes[p.node];
-    csv << pair_contact_->pairs()[p.pair].name << "," << bodies_[body].name << ","
-        << p.node - bodies_[body].range.first_node + 1 << "," << x.x() << "," << x.y() << "," << x.z() << "," << stress
-        << "," << nodal[4 * p.node] << "," << nodal[4 * p.node + 1] << "," << nodal[4 * p.node + 2] << "\n";
+    csv << probe.pairs()[p.pair].name << "," << bodies_[body].name << "," << p.node - bodies_[body].range.first_node + 1
+        << "," << x.x() << "," << x.y() << "," << x.z() << "," << stress << "," << nodal[4 * p.node] << ","
+        << nodal[4 * p.node + 1] << "," << nodal[4 * p.node + 2] << "\n";
   }
   io::write_file_atomically(out_ + "/interface.csv", csv.str());
 }

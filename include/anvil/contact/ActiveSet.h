@@ -24,7 +24,7 @@ public:
   void start(const std::vector<double>& gap) {
     frozen_ = false;
     iterations_ = 0;
-    for (std::size_t i = 0; i < active_.size(); ++i) active_[i] = gap[i] > -tolerance_;
+    for (std::size_t i = 0; i < active_.size(); ++i) active_[i] = gap[i] >= -tolerance_;
   }
   /// An accepted Newton iterate: the set follows h until it freezes. Returns the log note.
   std::string accept(const std::vector<double>& gap, const char* what) {

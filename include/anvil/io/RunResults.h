@@ -20,6 +20,22 @@ struct LoadRow {
 /// InputError naming file and line when the file is missing or malformed.
 std::vector<LoadRow> read_loads(const std::string& directory, const std::string& surface);
 
+/// One row of interface.csv: a node on a body-pair interface.
+struct InterfaceRow {
+  std::string pair, body;
+  int node = 0;                                   ///< 1-based, in its body
+  Eigen::Vector3d position = Eigen::Vector3d::Zero(); ///< mm
+  double normal_stress = 0.0;                     ///< MPa, transmitted (compressive > 0)
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero(); ///< mm/s (mm for elastic bodies)
+};
+
+/// The rows of `directory`/interface.csv (written by runs with contact pairs).
+std::vector<InterfaceRow> read_interface(const std::string& directory);
+
+/// Cell field `name` of the last .vtu of `directory`/anvil.pvd, `components`
+/// values per cell (e.g. "stress", 6: xx yy zz xy yz zx). Throws InputError.
+std::vector<double> read_last_cell_field(const std::string& directory, const std::string& name, int components);
+
 /// The first number after "key": in `directory`/summary.json. Throws
 /// InputError when the key is absent.
 double read_summary_number(const std::string& directory, const std::string& key);
