@@ -338,8 +338,8 @@ void Run::log_header() const {
               contact::to_string(case_.contact_pairs[p].formulation).c_str(),
               contact::describe(case_.contact_pairs[p].friction).c_str());
   if (has_contact())
-    log::info("  contact: penalty %g x mean flow stress / %.4g mm/s (set each increment), friction regularisation "
-              "%.3g mm/s", case_.contact.penalty, reference_velocity_, case_.contact.regularisation * reference_velocity_);
+    log::info("  contact: penalty %g x 3 x secant viscosity of the softest body / scene size (set each increment), "
+              "friction regularisation %.3g mm/s", case_.contact.penalty, case_.contact.regularisation * reference_velocity_);
   std::string effect_list;
   for (const auto& e : effects_) effect_list += " " + e;
   log::info("effects:%s", effect_list.c_str());
