@@ -194,23 +194,24 @@ void BodyContact::build_multipliers(int node_count) {
   }
   active_.resize(multipliers_.size());
   gap_.assign(multipliers_.size(), 0.0);
+  stress_.assign(multipliers_.size(), 0.0);
 }
 
-void BodyContact::set_increment(const BodyContactIncrement& increment) {
+void BodyContact::set_increment(const ContactIncrement& increment) {
   increment_ = increment;
   active_.set_tolerance(increment.gap_tolerance);
 }
 
-double BodyContact::constraint(const Multiplier& m, const Eigen::VectorXd& nodal) const {
+double BodyContact::mean_gap_velocity(std::size_t index, const Eigen::VectorXd& nodal) const {
+  const Multiplier& m = multipliers_[index];
   double c = -m.gap_sum / increment_.time_step;
   for (int s = m.first; s < m.first + m.count; ++s)
     c += support_[s].normal.dot(nodal.segment<3>(kDofsPerNode * support_[s].node));
-  return c;
+  return c / m.area_weight;
 }
 
 const std::vector<double>& BodyContact::gaps(const Eigen::VectorXd& nodal) {
-  for (std::size_t m = 0; m < multipliers_.size(); ++m)
-    gap_[m] = constraint(multipliers_[m], nodal) / multipliers_[m].area_weight;
+  for (std::size_t m = 0; m < multipliers_.size(); ++m) gap_[m] = mean_gap_velocity(m, nodal);
   return gap_;
 }
 
@@ -223,27 +224,20 @@ double BodyContact::pressure(int i, const Eigen::VectorXd& nodal) const {
   double pressure = 0.0;
   for (int k = 0; k < 3; ++k)
     if (const int m = p.multiplier[k]; m >= 0 && active_[m])
-      pressure += p.multiplier_weight[k] * increment_.penalty *
-                  std::max(constraint(multipliers_[m], nodal) / multipliers_[m].area_weight, 0.0);
+      pressure += p.multiplier_weight[k] * increment_.penalty * std::max(mean_gap_velocity(m, nodal), 0.0);
   return pressure;
-}
-
-double BodyContact::largest_penetration(int pair) const {
-  double largest = 0.0;
-  for (const ContactPoint& p : points_)
-    if (p.pair == pair) largest = std::max(largest, -p.gap);
-  return largest;
 }
 
 void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
                       std::vector<solver::NodeBlock>* blocks) const {
   const double rho = increment_.penalty;
   for (std::size_t index = 0; index < multipliers_.size(); ++index) {
+    // Normal: ∂Π/∂v_i = λ c_i with λ = ρ C/Ã (may be tensile while the set is frozen).
+    stress_[index] = active_[index] ? rho * mean_gap_velocity(index, nodal) : 0.0;
     if (!active_[index]) continue;
     const Multiplier& m = multipliers_[index];
     const double stiffness = rho / m.area_weight;
-    // Normal: ∂Π/∂v_i = λ c_i with λ = ρ C/Ã (may be tensile while the set is frozen).
-    const double lambda = stiffness * constraint(m, nodal);
+    const double lambda = stress_[index];
     const bool sticking = pairs_[m.pair].friction.kind == FrictionKind::sticking;
     Eigen::Vector3d tangential = Eigen::Vector3d::Zero(); // T = Σ D_i v_i
     if (sticking)
@@ -263,7 +257,8 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
       }
     }
   }
-  // Friction laws with a stress of their own, at each point.
+  // Friction laws with a stress of their own, at each point, under the
+  // pressure Σ W λ of its multipliers (λ as just computed).
   for (const ContactPoint& p : points_) {
     const FrictionLaw& law = pairs_[p.pair].friction;
     if (law.kind == FrictionKind::frictionless || law.kind == FrictionKind::sticking) continue;
@@ -272,7 +267,7 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     for (int k = 0; k < 3; ++k)
       if (const int m = p.multiplier[k]; m >= 0 && active_[m]) {
         touching = true;
-        sigma_n += p.multiplier_weight[k] * rho * constraint(multipliers_[m], nodal) / multipliers_[m].area_weight;
+        sigma_n += p.multiplier_weight[k] * stress_[m];
       }
     if (!touching) continue;
     const double sense = p.on_slave ? 1.0 : -1.0;

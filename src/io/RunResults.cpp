@@ -14,50 +14,51 @@
 
 namespace anvil::io {
 
-std::vector<LoadRow> read_loads(const std::string& directory, const std::string& surface) {
-  const std::string path = directory + "/loads.csv";
+namespace {
+
+/// Calls `parse(columns)` for each data row of the CSV file `path` (header
+/// skipped); a row without `count` columns, or that `parse` cannot read,
+/// is an InputError naming file, line and the `header` expected.
+template <class Parse>
+void for_each_csv_row(const std::string& path, std::size_t count, const char* header, Parse parse) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file");
-  std::vector<LoadRow> rows;
   std::string line;
   std::getline(in, line); // header
+  std::vector<std::string> cols;
   for (int number = 2; std::getline(in, line); ++number) {
-    std::vector<std::string> cols;
+    cols.clear();
     std::istringstream split(line);
     for (std::string col; std::getline(split, col, ',');) cols.push_back(col);
     try {
-      if (cols.size() != 7) throw std::invalid_argument("columns");
-      if (cols[2] != surface) continue;
-      rows.push_back({std::stoi(cols[0]), std::stod(cols[1]), std::stod(cols[3]),
-                      {std::stod(cols[4]), std::stod(cols[5]), std::stod(cols[6])}});
+      if (cols.size() != count) throw std::invalid_argument("columns");
+      parse(cols);
     } catch (const std::exception&) {
-      throw InputError(where(path, number) +
-                       ": expected increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N, got '" + line + "'");
+      throw InputError(where(path, number) + ": expected " + header + ", got '" + line + "'");
     }
   }
+}
+
+} // namespace
+
+std::vector<LoadRow> read_loads(const std::string& directory, const std::string& surface) {
+  std::vector<LoadRow> rows;
+  for_each_csv_row(directory + "/loads.csv", 7, "increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N",
+                   [&](const std::vector<std::string>& c) {
+                     if (c[2] == surface)
+                       rows.push_back({std::stoi(c[0]), std::stod(c[1]), std::stod(c[3]),
+                                       {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}});
+                   });
   return rows;
 }
 
 std::vector<InterfaceRow> read_interface(const std::string& directory) {
-  const std::string path = directory + "/interface.csv";
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the file");
   std::vector<InterfaceRow> rows;
-  std::string line;
-  std::getline(in, line); // header
-  for (int number = 2; std::getline(in, line); ++number) {
-    std::vector<std::string> cols;
-    std::istringstream split(line);
-    for (std::string col; std::getline(split, col, ',');) cols.push_back(col);
-    try {
-      if (cols.size() != 10) throw std::invalid_argument("columns");
-      rows.push_back({cols[0], cols[1], std::stoi(cols[2]), {std::stod(cols[3]), std::stod(cols[4]), std::stod(cols[5])},
-                      std::stod(cols[6]), {std::stod(cols[7]), std::stod(cols[8]), std::stod(cols[9])}});
-    } catch (const std::exception&) {
-      throw InputError(where(path, number) + ": expected pair,body,node,x_mm,y_mm,z_mm,normal_stress_MPa,vx,vy,vz, got '" +
-                       line + "'");
-    }
-  }
+  for_each_csv_row(directory + "/interface.csv", 10, "pair,body,node,x_mm,y_mm,z_mm,normal_stress_MPa,vx,vy,vz",
+                   [&](const std::vector<std::string>& c) {
+                     rows.push_back({c[0], c[1], std::stoi(c[2]), {std::stod(c[3]), std::stod(c[4]), std::stod(c[5])},
+                                     std::stod(c[6]), {std::stod(c[7]), std::stod(c[8]), std::stod(c[9])}});
+                   });
   return rows;
 }
 

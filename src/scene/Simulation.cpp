@@ -235,8 +235,6 @@ private:
 void Run::setup() {
   // The bodies are solved as one mesh of disjoint parts, each element with its body's law.
   mesh::TetMesh initial;
-  imposed_.values.resize(0);
-  imposed_.nodal_forces.resize(0);
   for (std::size_t b = 0; b < case_.bodies.size(); ++b) {
     const BodySpec& spec = case_.bodies[b];
     MaterialCard card = read_material(spec.material_file);
@@ -384,34 +382,27 @@ std::vector<solver::NodalTerm*> Run::contact_terms() {
 
 bool Run::try_increment(double dt, solver::NewtonReport& report) {
   // Candidates: boundary nodes that can reach a die or another body within the increment.
+  std::vector<contact::DieView> views;
   double die_speed = 0.0, body_speed = 0.0;
-  for (std::size_t d = 0; d < dies_.size(); ++d) die_speed = std::max(die_speed, dies_[d].velocity(state_.dies[d], dt).norm());
+  for (std::size_t d = 0; d < dies_.size(); ++d) {
+    views.push_back({dies_[d].surface.get(), state_.dies[d].displacement, dies_[d].velocity(state_.dies[d], dt),
+                     dies_[d].friction});
+    die_speed = std::max(die_speed, views.back().velocity.norm());
+  }
   for (int i = 0; i < state_.mesh.node_count(); ++i)
     body_speed = std::max(body_speed, state_.unknowns.nodal.segment<3>(4 * i).norm());
   const double reach = 2.0 * (die_speed + std::max(body_speed, die_speed)) * dt + 0.05 * reference_length_;
   // Gap tolerance: a penetration velocity of 1e-4 of the reference speed is
   // 1e-4 of the stroke over the run, and projection removes it anyway.
-  const double gap_tolerance = 1e-4 * reference_velocity_;
-  if (!dies_.empty()) {
-    std::vector<contact::DieView> views;
-    for (std::size_t d = 0; d < dies_.size(); ++d)
-      views.push_back({dies_[d].surface.get(), state_.dies[d].displacement, dies_[d].velocity(state_.dies[d], dt),
-                       dies_[d].friction});
-    {
-      Timers::Scope scope(timers_, "search");
-      contact_.search(state_.mesh, views, reach);
-    }
-    contact_.set_increment({dt, penalty_, case_.contact.regularisation * reference_velocity_, gap_tolerance,
-                            &node_flow_stress_, &node_consistency_});
+  const contact::ContactIncrement increment{dt, penalty_, case_.contact.regularisation * reference_velocity_,
+                                            1e-4 * reference_velocity_, &node_flow_stress_, &node_consistency_};
+  {
+    Timers::Scope scope(timers_, "search");
+    if (!dies_.empty()) contact_.search(state_.mesh, views, reach);
+    if (pair_contact_) pair_contact_->search(state_.mesh, reach);
   }
-  if (pair_contact_) {
-    {
-      Timers::Scope scope(timers_, "search");
-      pair_contact_->search(state_.mesh, reach);
-    }
-    pair_contact_->set_increment({dt, penalty_, case_.contact.regularisation * reference_velocity_, gap_tolerance,
-                                  &node_flow_stress_, &node_consistency_});
-  }
+  if (!dies_.empty()) contact_.set_increment(increment);
+  if (pair_contact_) pair_contact_->set_increment(increment);
   // Volume compensation: the flow of this increment is asked to restore the
   // volume each incompressible body lost so far (explicit update error, O(Δt)
   // over a run, and contact projection): ∫ q div v = ∫ q g with

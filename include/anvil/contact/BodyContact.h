@@ -20,6 +20,7 @@
 // its own pressure Σ_m W_pm λ_m and weight f_p A_p.
 #pragma once
 #include "anvil/contact/ActiveSet.h"
+#include "anvil/contact/ContactIncrement.h"
 #include "anvil/contact/Friction.h"
 #include "anvil/solver/NodalTerm.h"
 #include "anvil/mesh/TetMesh.h"
@@ -57,15 +58,6 @@ struct ContactPoint {
   Eigen::Vector3d multiplier_weight = Eigen::Vector3d::Zero(); ///< W_pm
 };
 
-/// Per-increment constants of the term.
-struct BodyContactIncrement {
-  double time_step;      ///< Δt (s)
-  double penalty;        ///< ρ (MPa·s/mm)
-  double regularisation; ///< friction w₀ (mm/s)
-  double gap_tolerance;  ///< mm/s, active-set hysteresis
-  const std::vector<double>* flow_stress = nullptr; ///< σ₀ per node (MPa), for Tresca
-  const std::vector<double>* consistency = nullptr; ///< K per node, for Norton friction
-};
 
 class BodyContact final : public solver::NodalTerm {
 public:
@@ -74,7 +66,7 @@ public:
   /// Projects the boundary nodes of each pair (slave nodes, and master nodes
   /// unless master/slave) that are within `search_distance` (mm) of the other body.
   void search(const mesh::TetMesh& mesh, double search_distance);
-  void set_increment(const BodyContactIncrement& increment);
+  void set_increment(const ContactIncrement& increment);
 
   void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
            std::vector<solver::NodeBlock>* blocks) const override;
@@ -88,8 +80,6 @@ public:
   /// Contact pressure (MPa) at point i: Σ_m W λ_m over active multipliers.
   double pressure(int i, const Eigen::VectorXd& nodal) const;
   int active_count() const { return active_.count(); }
-  /// Largest penetration (mm, ≥ 0) of the points of `pair` at the start of the increment.
-  double largest_penetration(int pair) const;
 
 private:
   /// One constraint: C = Σ_i c_i·v_i − gap_sum/Δt over its support nodes.
@@ -105,7 +95,8 @@ private:
     Eigen::Matrix3d tangential;   ///< ∂T/∂v_i (mm²), T the combined tangential velocity (sticking)
   };
 
-  double constraint(const Multiplier& m, const Eigen::VectorXd& nodal) const;
+  /// C/Ã of multiplier `index` at `nodal`: its weighted mean gap velocity (mm/s).
+  double mean_gap_velocity(std::size_t index, const Eigen::VectorXd& nodal) const;
   const std::vector<double>& gaps(const Eigen::VectorXd& nodal);
   void build_multipliers(int node_count);
 
@@ -113,9 +104,10 @@ private:
   std::vector<ContactPoint> points_;
   std::vector<Multiplier> multipliers_;
   std::vector<Support> support_;
-  BodyContactIncrement increment_{};
+  ContactIncrement increment_{};
   ActiveSet active_;            ///< per multiplier
   std::vector<double> gap_;     ///< per multiplier, C/Ã at the last iterate asked (mm/s)
+  mutable std::vector<double> stress_; ///< per multiplier, λ of the last add() (MPa), 0 when inactive
 };
 
 } // namespace anvil::contact

@@ -8,6 +8,7 @@
 // global system does not change with the active set.
 #pragma once
 #include "anvil/contact/ActiveSet.h"
+#include "anvil/contact/ContactIncrement.h"
 #include "anvil/contact/Friction.h"
 #include "anvil/die/DieSurface.h"
 #include "anvil/solver/NodalTerm.h"
@@ -33,15 +34,6 @@ struct ContactCandidate {
   double area;            ///< tributary boundary area (mm²)
 };
 
-/// Per-increment constants of the contact term.
-struct ContactIncrement {
-  double time_step;       ///< Δt (s)
-  double penalty;         ///< ρ (MPa·s/mm)
-  double regularisation;  ///< friction w₀ (mm/s)
-  double gap_tolerance;   ///< mm/s: the active set changes at convergence only beyond ±this
-  const std::vector<double>* flow_stress = nullptr; ///< σ₀ per node (MPa), for Tresca
-  const std::vector<double>* consistency = nullptr; ///< K per node, for Norton friction
-};
 
 class RigidContact final : public solver::NodalTerm {
 public:
