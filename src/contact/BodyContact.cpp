@@ -104,14 +104,12 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
         if (gap >= search_distance) continue;
         // Tributary area on the faces that look at the other body (not the
         // sides of a block, whose edge nodes would otherwise weigh double).
-        double area = 0.0, all = 0.0;
+        double area = 0.0;
         for (int f : node_faces[node]) {
           const Eigen::Vector3d n = face_normal(mesh, mesh.boundary_faces[f]);
-          const double third = n.norm() / 6.0;
-          all += third;
-          if (n.dot(normal) < -0.3 * n.norm()) area += third;
+          if (n.dot(normal) < -0.3 * n.norm()) area += n.norm() / 6.0;
         }
-        if (area == 0.0) area = all;
+        if (area == 0.0) continue; // no face looks at the other body: not on its contact surface
         ContactPoint p;
         p.pair = static_cast<int>(q);
         p.node = node;
@@ -120,7 +118,7 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
         p.normal = normal;
         p.gap = gap;
         p.area = area;
-        p.weight = share * area;
+        p.share = share;
         p.on_slave = on_slave;
         points_.push_back(p);
       }
@@ -179,7 +177,7 @@ void BodyContact::build_multipliers(int node_count) {
     };
     for (const auto& [i, w] : feeds[m]) {
       const ContactPoint& p = points_[i];
-      const double scale = w * p.weight;
+      const double scale = w * p.share;
       // h_p = −n·(v_node − Σ N_j v_j) − δ₀/Δt; tangential velocity in the
       // slave's sense (slave − master): sign +1 at a slave node, −1 at a master node.
       const double sense = p.on_slave ? 1.0 : -1.0;
@@ -187,7 +185,8 @@ void BodyContact::build_multipliers(int node_count) {
       add_support(p.node, -scale * p.normal, scale * sense * tangent_projector);
       for (int j = 0; j < 3; ++j)
         add_support(p.facet[j], scale * p.shape[j] * p.normal, -scale * sense * p.shape[j] * tangent_projector);
-      mult.area_weight += scale;
+      mult.node_weight += scale;
+      mult.area += scale * p.area;
       mult.gap_sum += scale * p.gap;
     }
     mult.count = static_cast<int>(support_.size()) - mult.first;
@@ -207,7 +206,7 @@ double BodyContact::mean_gap_velocity(std::size_t index, const Eigen::VectorXd& 
   double c = -m.gap_sum / increment_.time_step;
   for (int s = m.first; s < m.first + m.count; ++s)
     c += support_[s].normal.dot(nodal.segment<3>(kDofsPerNode * support_[s].node));
-  return c / m.area_weight;
+  return c / m.node_weight;
 }
 
 const std::vector<double>& BodyContact::gaps(const Eigen::VectorXd& nodal) {
@@ -217,7 +216,8 @@ const std::vector<double>& BodyContact::gaps(const Eigen::VectorXd& nodal) {
 
 void BodyContact::start(const Eigen::VectorXd& nodal) { active_.start(gaps(nodal)); }
 bool BodyContact::consistent(const Eigen::VectorXd& nodal) { return active_.consistent(gaps(nodal)); }
-std::string BodyContact::accept(const Eigen::VectorXd& nodal) { return active_.accept(gaps(nodal), "pair constraints"); }
+std::string BodyContact::accept(const Eigen::VectorXd& nodal) {
+  return active_.accept(gaps(nodal), "pair constraints"); }
 
 double BodyContact::pressure(int i, const Eigen::VectorXd& nodal) const {
   const ContactPoint& p = points_[i];
@@ -232,11 +232,12 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
                       std::vector<solver::NodeBlock>* blocks) const {
   const double rho = increment_.penalty;
   for (std::size_t index = 0; index < multipliers_.size(); ++index) {
-    // Normal: ∂Π/∂v_i = λ c_i with λ = ρ C/Ã (may be tensile while the set is frozen).
+    // Normal: ∂Π/∂v_i = λ (Ã/G) c_i with λ = ρ C/G (may be tensile while the set is frozen).
     stress_[index] = active_[index] ? rho * mean_gap_velocity(index, nodal) : 0.0;
     if (!active_[index]) continue;
     const Multiplier& m = multipliers_[index];
-    const double stiffness = rho / m.area_weight;
+    const double area_per_weight = m.area / m.node_weight;
+    const double stiffness = rho * area_per_weight / m.node_weight;
     const double lambda = stress_[index];
     const bool sticking = pairs_[m.pair].friction.kind == FrictionKind::sticking;
     Eigen::Vector3d tangential = Eigen::Vector3d::Zero(); // T = Σ D_i v_i
@@ -245,7 +246,7 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
         tangential += support_[s].tangential * nodal.segment<3>(kDofsPerNode * support_[s].node);
     for (int s = m.first; s < m.first + m.count; ++s) {
       const Support& a = support_[s];
-      Eigen::Vector3d r = lambda * a.normal;
+      Eigen::Vector3d r = lambda * area_per_weight * a.normal;
       if (sticking) r += stiffness * a.tangential.transpose() * tangential;
       residual.segment<3>(kDofsPerNode * a.node) += r;
       if (!blocks) continue;
@@ -281,16 +282,16 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     const std::array<int, 4> nodes{p.node, p.facet[0], p.facet[1], p.facet[2]};
     const std::array<double, 4> coefficient{sense, -sense * p.shape[0], -sense * p.shape[1], -sense * p.shape[2]};
     for (int a = 0; a < 4; ++a) {
-      residual.segment<3>(kDofsPerNode * nodes[a]) += coefficient[a] * p.weight * f.stress;
+      residual.segment<3>(kDofsPerNode * nodes[a]) += coefficient[a] * p.share * p.area * f.stress;
       if (!blocks) continue;
       for (int b = 0; b < 4; ++b)
-        blocks->push_back({nodes[a], nodes[b], coefficient[a] * coefficient[b] * p.weight * f.d_sliding * tangent_projector});
+        blocks->push_back({nodes[a], nodes[b], coefficient[a] * coefficient[b] * p.share * p.area * f.d_sliding * tangent_projector});
       if (f.d_normal_pressure.isZero()) continue;
-      // Coulomb: τ depends on σn = Σ_m W λ_m, λ_m = ρ C_m/Ã_m.
+      // Coulomb: τ depends on σn = Σ_m W λ_m, λ_m = ρ C_m/G_m.
       for (int k = 0; k < 3; ++k)
         if (const int m = p.multiplier[k]; m >= 0 && active_[m]) {
           const Multiplier& mult = multipliers_[m];
-          const double gain = coefficient[a] * p.weight * p.multiplier_weight[k] * rho / mult.area_weight;
+          const double gain = coefficient[a] * p.share * p.area * p.multiplier_weight[k] * rho / mult.node_weight;
           for (int s = mult.first; s < mult.first + mult.count; ++s)
             blocks->push_back({nodes[a], support_[s].node, gain * f.d_normal_pressure * support_[s].normal.transpose()});
         }

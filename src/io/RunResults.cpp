@@ -54,10 +54,12 @@ std::vector<LoadRow> read_loads(const std::string& directory, const std::string&
 
 std::vector<InterfaceRow> read_interface(const std::string& directory) {
   std::vector<InterfaceRow> rows;
-  for_each_csv_row(directory + "/interface.csv", 10, "pair,body,node,x_mm,y_mm,z_mm,normal_stress_MPa,vx,vy,vz",
+  for_each_csv_row(directory + "/interface.csv", 13,
+                   "pair,body,node,x_mm,y_mm,z_mm,area_mm2,gap_mm,gap_rate_mm_s,normal_stress_MPa,vx,vy,vz",
                    [&](const std::vector<std::string>& c) {
                      rows.push_back({c[0], c[1], std::stoi(c[2]), {std::stod(c[3]), std::stod(c[4]), std::stod(c[5])},
-                                     std::stod(c[6]), {std::stod(c[7]), std::stod(c[8]), std::stod(c[9])}});
+                                     std::stod(c[6]), std::stod(c[7]), std::stod(c[8]), std::stod(c[9]),
+                                     {std::stod(c[10]), std::stod(c[11]), std::stod(c[12])}});
                    });
   return rows;
 }

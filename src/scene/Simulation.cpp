@@ -538,9 +538,10 @@ void Run::write_outputs(bool force) {
 }
 
 void Run::write_interface() const {
-  // Per interface node of either body, whatever the formulation: the normal
-  // stress it transmits, its nodal contact force over its tributary area
-  // (N/mm² = MPa), and its velocity. The nodes are found by projecting both
+  // Per interface node of either body, whatever the formulation: its
+  // tributary area, its signed distance to the other body (< 0 penetrating)
+  // and the rate at which it opens (< 0 closing), the normal stress it transmits (its nodal contact force over its
+  // tributary area, N/mm² = MPa) and its velocity. The nodes are found by projecting both
   // sides (a symmetric search, for output only: master/slave itself never
   // looks at master nodes, and that is where its errors show).
   const Eigen::VectorXd& nodal = state_.unknowns.nodal;
@@ -552,15 +553,17 @@ void Run::write_interface() const {
   probe.search(state_.mesh, 1e-3 * reference_length_);
   std::ostringstream csv;
   csv.precision(10);
-  csv << "pair,body,node,x_mm,y_mm,z_mm,normal_stress_MPa,vx,vy,vz\n";
+  csv << "pair,body,node,x_mm,y_mm,z_mm,area_mm2,gap_mm,gap_rate_mm_s,normal_stress_MPa,vx,vy,vz\n";
   for (const contact::ContactPoint& p : probe.points()) {
     const ContactPairSpec& pair = case_.contact_pairs[p.pair];
     const int body = p.on_slave ? pair.slave : pair.master;
     // The contact force pushes the node away from the facet it projects onto: along +n.
     const double stress = -force.segment<3>(4 * p.node).dot(p.normal) / p.area;
+    Eigen::Vector3d relative = nodal.segment<3>(4 * p.node);
+    for (int j = 0; j < 3; ++j) relative -= p.shape[j] * nodal.segment<3>(4 * p.facet[j]);
     const mesh::Point& x = state_.mesh.nodes[p.node];
     csv << probe.pairs()[p.pair].name << "," << bodies_[body].name << "," << p.node - bodies_[body].range.first_node + 1
-        << "," << x.x() << "," << x.y() << "," << x.z() << "," << stress << "," << nodal[4 * p.node] << ","
+        << "," << x.x() << "," << x.y() << "," << x.z() << "," << p.area << "," << p.gap << "," << relative.dot(p.normal) << "," << stress << "," << nodal[4 * p.node] << ","
         << nodal[4 * p.node + 1] << "," << nodal[4 * p.node + 2] << "\n";
   }
   io::write_file_atomically(out_ + "/interface.csv", csv.str());

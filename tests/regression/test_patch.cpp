@@ -5,12 +5,10 @@
 // table (four load cases, six mesh pairs, three formulations) is printed by
 // tools/patch_test; the README gives it.
 //
-// What this test does not assert, because it is not true of this nodal
-// implementation (measured, see the README): that the QS error is at most
-// half the M/S error in every non-matching case. On the 7/4 (master finer)
-// pair QS has 0.51 of the M/S error; with the slave 3.75 times finer (4/15)
-// under a pressure, and with the master finer under an imposed velocity, QS
-// is worse than M/S.
+// The paper's claim, QS error at most half the M/S error, holds on every
+// non-matching pair but one (measured, README): with the slave 3.75 times
+// finer (4/15) M/S is itself below 1 % RMS and QS has 0.65 of it. There the
+// test asserts only that QS is better.
 #include "test_common.h"
 
 #include "anvil/core/log.h"
@@ -22,7 +20,10 @@ namespace {
 
 patch_test::Errors run(const patch_test::LoadCase& load, const patch_test::MeshPair& meshes, const char* formulation) {
   anvil::log::set_quiet(true);
-  const auto out = std::filesystem::temp_directory_path() / "anvil_patch_test";
+  // One folder per configuration: the tests of this file may run in parallel.
+  const std::string name = "anvil_patch_" + std::filesystem::path(load.file).stem().string() + "_" +
+                           std::to_string(meshes.master_cells) + "_" + std::to_string(meshes.slave_cells) + "_" + formulation;
+  const auto out = std::filesystem::temp_directory_path() / name;
   return patch_test::run(load, meshes, formulation, ANVIL_SOURCE_DIR, out.string());
 }
 
@@ -48,22 +49,22 @@ TEST_CASE("matching meshes transmit the patch-test stress exactly, with master/s
   }
 }
 
-TEST_CASE("quasi-symmetric contact transmits the patch-test stress better than master/slave on non-matching meshes",
+TEST_CASE("quasi-symmetric contact transmits the patch-test stress with at most half the master/slave error",
           "[regression]") {
-  for (const char* pair_name : {"similar 4/5", "slave finer 4/7", "master finer 7/4"}) {
-    const auto& pairs = patch_test::mesh_pairs();
-    const auto meshes = *std::find_if(pairs.begin(), pairs.end(), [&](const auto& p) { return p.name == std::string(pair_name); });
+  for (const patch_test::MeshPair& meshes : patch_test::mesh_pairs()) {
+    if (meshes.master_cells == meshes.slave_cells) continue;
+    const bool much_finer_slave = meshes.slave_cells >= 3 * meshes.master_cells; // see the header comment
     for (const patch_test::LoadCase& load : patch_test::load_cases()) {
-      if (load.exact_stress < 1.0 && meshes.master_cells > meshes.slave_cells) continue; // see the header comment
       INFO(load.name << ", " << meshes.name);
       const patch_test::Errors ms = run(load, meshes, "master_slave");
       const patch_test::Errors qs = run(load, meshes, "quasi_symmetric");
       // Non-matching meshes make node-to-facet contact lose the uniform
-      // stress: M/S errors are several percent at least (measured 3.9-67 % RMS).
-      CHECK(ms.interface_rms > 0.02);
-      CHECK(qs.interface_rms < ms.interface_rms);
-      CHECK(qs.interface_max < ms.interface_max);
-      CHECK(qs.interior_max < ms.interior_max);
+      // stress: M/S errors are above half a percent (measured 0.76-275 % RMS).
+      CHECK(ms.interface_rms > 0.005);
+      const double factor = much_finer_slave ? 1.0 : 0.5;
+      CHECK(qs.interface_rms < factor * ms.interface_rms);
+      CHECK(qs.interface_max < factor * ms.interface_max);
+      CHECK(qs.interior_max < factor * ms.interior_max);
     }
   }
 }

@@ -5,19 +5,24 @@
 //   h_p = −(v_node − Σ_j N_j(ξ) v_j)·n − δ₀/Δt     (paper eq. 4, in velocity)
 // with n the facet body's outward normal, δ₀ the signed distance.
 // The formulations differ only in how points are weighted into constraints,
-// one multiplier λ_m each:
-//   C_m = Σ_p W_pm f_p A_p h_p,   Ã_m = Σ_p W_pm f_p A_p
+// one multiplier λ_m each. In the nodal formulation (paper §4) a constraint
+// adds the nodes' gap velocities, not their areas:
+//   C_m = Σ_p W_pm f_p h_p,   G_m = Σ_p W_pm f_p,   Ã_m = Σ_p W_pm f_p A_p
 //   master/slave    (eq. 19): slave nodes only, f = 1, W = 1 on their own λ;
 //   symmetric       (eq. 20): nodes of both bodies, f = ½, each its own λ;
 //   quasi-symmetric (eqs. 21-24): nodes of both bodies, f = ½; a master node l
 //     has no λ of its own: W = N_a^k(ξ_a^l), the slave facet's shape functions
 //     at its projection, on the slave nodes' λ (eq. 22), so C_k is eq. 24.
-// Penalty: λ_m = ρ C_m⁺/Ã_m (MPa, the weighted mean gap velocity times ρ),
-// from the potential Π = Σ_m ρ (C_m⁺)²/(2Ã_m); on matching meshes the three
-// give the same Π. The active set is per multiplier (contact/ActiveSet.h).
+//     A fine master thus outweighs a coarse slave node (the paper's "dominant"
+//     master contribution); weighting by area instead would leave the fine
+//     master free to sink between the coarse slave's nodes.
+// Penalty: λ_m = ρ C_m⁺/G_m (MPa, ρ times the mean gap velocity) acting on
+// the area Ã_m, from the potential Π = Σ_m ρ Ã_m (C_m⁺)²/(2 G_m²): multiplier
+// m transmits λ_m Ã_m. On matching meshes the three give the same Π.
+// The active set is per multiplier (contact/ActiveSet.h).
 // Friction: sticking is a penalty on the tangential relative velocity
 // combined the same way; Tresca, Coulomb and Norton act at each point with
-// its own pressure Σ_m W_pm λ_m and weight f_p A_p.
+// its own pressure Σ_m W_pm λ_m on its area f_p A_p.
 #pragma once
 #include "anvil/contact/ActiveSet.h"
 #include "anvil/contact/ContactIncrement.h"
@@ -52,7 +57,7 @@ struct ContactPoint {
   Eigen::Vector3d normal;    ///< outward normal of the facet's body there (towards the node)
   double gap;                ///< δ₀ (mm), < 0 penetrated
   double area;               ///< tributary area A_p of the node on the faces looking at the other body (mm²)
-  double weight;             ///< f_p A_p (mm²)
+  double share;              ///< f_p: 1 (eq. 19) or ½ (eqs. 20-21)
   bool on_slave;             ///< a slave node (on a master facet); else a master node
   std::array<int, 3> multiplier{-1, -1, -1}; ///< multipliers it feeds
   Eigen::Vector3d multiplier_weight = Eigen::Vector3d::Zero(); ///< W_pm
@@ -85,17 +90,18 @@ private:
   /// One constraint: C = Σ_i c_i·v_i − gap_sum/Δt over its support nodes.
   struct Multiplier {
     int pair;
-    double area_weight = 0.0;     ///< Ã (mm²)
-    double gap_sum = 0.0;         ///< Σ W f A δ₀ (mm³)
+    double node_weight = 0.0;     ///< G = Σ W f
+    double area = 0.0;            ///< Ã = Σ W f A (mm²), on which λ acts
+    double gap_sum = 0.0;         ///< Σ W f δ₀ (mm)
     int first = 0, count = 0;     ///< range in support_
   };
   struct Support {
     int node;
-    Eigen::Vector3d normal;       ///< c_i (mm²): ∂C/∂v_i
-    Eigen::Matrix3d tangential;   ///< ∂T/∂v_i (mm²), T the combined tangential velocity (sticking)
+    Eigen::Vector3d normal;       ///< c_i = ∂C/∂v_i
+    Eigen::Matrix3d tangential;   ///< ∂T/∂v_i, T the combined tangential velocity (sticking)
   };
 
-  /// C/Ã of multiplier `index` at `nodal`: its weighted mean gap velocity (mm/s).
+  /// C/G of multiplier `index` at `nodal`: its weighted mean gap velocity (mm/s).
   double mean_gap_velocity(std::size_t index, const Eigen::VectorXd& nodal) const;
   const std::vector<double>& gaps(const Eigen::VectorXd& nodal);
   void build_multipliers(int node_count);

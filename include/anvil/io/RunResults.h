@@ -25,6 +25,9 @@ struct InterfaceRow {
   std::string pair, body;
   int node = 0;                                   ///< 1-based, in its body
   Eigen::Vector3d position = Eigen::Vector3d::Zero(); ///< mm
+  double area = 0.0;                              ///< mm², tributary, on the faces looking at the other body
+  double gap = 0.0;                               ///< mm, signed distance to the other body (< 0 penetrating)
+  double gap_rate = 0.0;                          ///< mm/s, opening rate (< 0 closing; mm for elastic bodies)
   double normal_stress = 0.0;                     ///< MPa, transmitted (compressive > 0)
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero(); ///< mm/s (mm for elastic bodies)
 };
