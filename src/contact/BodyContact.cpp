@@ -54,6 +54,15 @@ Eigen::Vector3d own_normal(const mesh::TetMesh& mesh, const std::vector<int>& fa
   return n.normalized();
 }
 
+/// The smaller of a nodal value at the point's node and at its projection:
+/// friction is bounded by the weaker body (an elastic die's value is infinite).
+double weaker_side(const std::vector<double>& nodal_value, const ContactPoint& p) {
+  double facet = 0.0;
+  for (int j = 0; j < 3; ++j)
+    if (p.shape[j] > 0.0) facet += p.shape[j] * nodal_value[p.facet[j]];
+  return std::min(nodal_value[p.node], facet);
+}
+
 } // namespace
 
 void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
@@ -74,10 +83,12 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
         if (node_faces[node].empty()) continue; // interior node
         const mesh::Point& x = mesh.nodes[node];
         const SurfaceSearch::Closest hit = surface.closest(x);
-        // On an edge or a vertex several facets hold the closest point; the one
-        // that faces the node's own surface best gives the normal and the side
-        // (a node on the rim of a block lying on another must not take the
-        // side face of the block below).
+        // On an edge or a vertex several facets hold the closest point (to a
+        // hair: two blocks sharing a symmetry plane meet there to round-off);
+        // the one that faces the node's own surface best gives the normal and
+        // the side (a node on the rim of a block lying on another must not
+        // take the side face of the block below).
+        const double hair = std::max(1e-9 * (1.0 + hit.point.norm()), 1e-3 * search_distance);
         const Eigen::Vector3d own = own_normal(mesh, node_faces[node]);
         int best = onto.first_face + hit.face;
         double best_facing = face_normal(mesh, mesh.boundary_faces[best]).normalized().dot(own);
@@ -88,20 +99,28 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
             const double facing = face_normal(mesh, t).normalized().dot(own);
             const Eigen::Vector3d l = barycentric(hit.point, mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]);
             const mesh::Point on_t = l[0] * mesh.nodes[t[0]] + l[1] * mesh.nodes[t[1]] + l[2] * mesh.nodes[t[2]];
-            if (facing < best_facing && (on_t - hit.point).norm() <= 1e-9 * (1.0 + hit.point.norm()))
+            if (facing < best_facing && (on_t - hit.point).norm() <= hair)
               best = f, best_facing = facing;
           }
         const mesh::Triangle& facet = mesh.boundary_faces[best];
         const Eigen::Vector3d facet_normal = face_normal(mesh, facet).normalized();
-        // Inside a facet the offset is along its normal; on an edge or a vertex
-        // the offset direction is the surface normal there. The side comes from the facet.
-        const Eigen::Vector3d offset = x - hit.point;
-        const double distance = offset.norm();
-        const double side = offset.dot(facet_normal) >= 0.0 ? 1.0 : -1.0;
-        const bool on_surface = distance < 1e-9 * (1.0 + x.norm());
-        const Eigen::Vector3d normal = on_surface ? facet_normal : Eigen::Vector3d(side * offset / distance);
-        const double gap = on_surface ? 0.0 : side * distance;
-        if (gap >= search_distance) continue;
+        // Inside a facet (or off its edge by a hair: bodies pressed together
+        // widen alike, to round-off) the offset is along its normal; off an
+        // edge or a vertex the offset direction is the surface normal there.
+        // The side comes from the facet.
+        const Eigen::Vector3d shape = barycentric(x, mesh.nodes[facet[0]], mesh.nodes[facet[1]], mesh.nodes[facet[2]]);
+        const Eigen::Vector3d offset =
+            x - (shape[0] * mesh.nodes[facet[0]] + shape[1] * mesh.nodes[facet[1]] + shape[2] * mesh.nodes[facet[2]]);
+        const double along_normal = offset.dot(facet_normal);
+        const double lateral = (offset - along_normal * facet_normal).norm();
+        const bool over_facet = lateral <= hair;
+        const double side = along_normal >= 0.0 ? 1.0 : -1.0;
+        const Eigen::Vector3d normal = over_facet ? facet_normal : Eigen::Vector3d(side * offset / offset.norm());
+        const double gap = over_facet ? along_normal : side * offset.norm();
+        // Deeper than the reach is not a penetration of this increment: the
+        // node lies behind the other body's edge (a block's top corner over
+        // the side of the block below), where the side test is ambiguous.
+        if (std::abs(gap) >= search_distance) continue;
         // Tributary area on the faces that look at the other body (not the
         // sides of a block, whose edge nodes would otherwise weigh double).
         double area = 0.0;
@@ -114,7 +133,7 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
         p.pair = static_cast<int>(q);
         p.node = node;
         p.facet = facet;
-        p.shape = barycentric(hit.point, mesh.nodes[facet[0]], mesh.nodes[facet[1]], mesh.nodes[facet[2]]);
+        p.shape = shape;
         p.normal = normal;
         p.gap = gap;
         p.area = area;
@@ -153,7 +172,8 @@ void BodyContact::build_multipliers(int node_count) {
       p.multiplier = {multiplier_of(p.pair, p.node), -1, -1};
       p.multiplier_weight = Eigen::Vector3d(1.0, 0.0, 0.0);
     } else { // quasi-symmetric master node: the slave facet's λ, interpolated (eq. 22)
-      for (int k = 0; k < 3; ++k) p.multiplier[k] = multiplier_of(p.pair, p.facet[k]);
+      for (int k = 0; k < 3; ++k)
+        if (p.shape[k] > 0.0) p.multiplier[k] = multiplier_of(p.pair, p.facet[k]); // no empty multiplier
       p.multiplier_weight = p.shape;
     }
   }
@@ -161,7 +181,7 @@ void BodyContact::build_multipliers(int node_count) {
   std::vector<std::vector<std::pair<int, double>>> feeds(multipliers_.size());
   for (std::size_t i = 0; i < points_.size(); ++i)
     for (int k = 0; k < 3; ++k)
-      if (points_[i].multiplier[k] >= 0 && points_[i].multiplier_weight[k] > 0.0)
+      if (points_[i].multiplier[k] >= 0)
         feeds[points_[i].multiplier[k]].push_back({static_cast<int>(i), points_[i].multiplier_weight[k]});
   for (std::size_t m = 0; m < multipliers_.size(); ++m) {
     Multiplier& mult = multipliers_[m];
@@ -275,9 +295,9 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
     Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * p.node);
     for (int j = 0; j < 3; ++j) relative -= p.shape[j] * nodal.segment<3>(kDofsPerNode * p.facet[j]);
-    const FrictionStress f =
-        friction_stress(law, {sense * tangent_projector * relative, sigma_n, (*increment_.flow_stress)[p.node],
-                              (*increment_.consistency)[p.node], increment_.regularisation, rho});
+    const FrictionStress f = friction_stress(
+        law, {sense * tangent_projector * relative, sigma_n, weaker_side(*increment_.flow_stress, p),
+              weaker_side(*increment_.consistency, p), increment_.regularisation, rho});
     // w = sense P (v_node − Σ N_j v_j): coefficient of node a in w is c_a P.
     const std::array<int, 4> nodes{p.node, p.facet[0], p.facet[1], p.facet[2]};
     const std::array<double, 4> coefficient{sense, -sense * p.shape[0], -sense * p.shape[1], -sense * p.shape[2]};

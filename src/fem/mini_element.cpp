@@ -108,7 +108,11 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
   const Eigen::Vector4d p = Eigen::Map<const Eigen::Vector4d>(in.nodal_pressure.data());
   const Eigen::Matrix<double, 12, 1> r_l = g.linear_strain.transpose() * stress_sum + g_l * p + r_l_force;
   r_b.noalias() += g_b * p;
-  const Eigen::Vector4d r_p = g_l.transpose() * v_lin + g_b.transpose() * in.bubble_velocity - c * p;
+  // An elastic body's pressure equation is div v + (p − p_n)/κ = 0 (κ = bulk
+  // modulus × Δt), p_n the pressure it carries in (zero for other laws).
+  const double carried_pressure = -in.state.elastic_stress.head<3>().sum() / 3.0;
+  const Eigen::Vector4d r_p =
+      g_l.transpose() * v_lin + g_b.transpose() * in.bubble_velocity - c * (p - Eigen::Vector4d::Constant(carried_pressure));
 
   // Condense the bubble: Δb = −K_bb⁻¹ (r_b + K_bl Δl + G_b Δp).
   const Eigen::Matrix<double, 12, 3> k_lb = g.linear_strain.transpose() * tangent_bubble_sum;

@@ -67,7 +67,7 @@ LinearElastic::LinearElastic(double young_modulus, double poisson_ratio)
 }
 
 void LinearElastic::deviatoric_stress(const Vec6& strain, const PointState&, Vec6& stress, Mat6& tangent) const {
-  const double shear = young_modulus_ / (2.0 * (1.0 + poisson_ratio_));
+  const double shear = shear_modulus();
   static const Mat6 projector = deviatoric_projector();
   stress = 2.0 * shear * deviator(strain);
   tangent = 2.0 * shear * projector;
@@ -76,6 +76,13 @@ void LinearElastic::deviatoric_stress(const Vec6& strain, const PointState&, Vec
 double LinearElastic::bulk_modulus() const {
   if (poisson_ratio_ == 0.5) return std::numeric_limits<double>::infinity();
   return young_modulus_ / (3.0 * (1.0 - 2.0 * poisson_ratio_));
+}
+
+void IncrementalElastic::deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
+                                           Mat6& tangent) const {
+  elastic_.deviatoric_stress(strain_rate, state, stress, tangent);
+  stress = time_step_ * stress + deviator(state.elastic_stress);
+  tangent *= time_step_;
 }
 
 std::string LinearElastic::describe() const {

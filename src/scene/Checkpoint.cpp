@@ -1,6 +1,7 @@
 // HDF5 checkpoint of a RunState (C API, numbered calls, TECH-NOTES §5).
 // Layout: datasets /nodes (n×3), /tets (m×4), /boundary_faces (f×3),
 // /boundary_tags, /nodal (4n), /bubble (3m), /equivalent_strain (m),
+// /elastic_stress (m×6, or empty),
 // /dies (d×7), /loads (r×8), /outputs (k×2) with /output_files (strings),
 // scalar attributes on the root group.
 #include "anvil/core/error.h"
@@ -97,6 +98,7 @@ void write_checkpoint(const std::string& path, const RunState& s) {
     write_array(file, "nodal", H5T_NATIVE_DOUBLE, s.unknowns.nodal.data(), s.unknowns.nodal.size(), 0);
     write_array(file, "bubble", H5T_NATIVE_DOUBLE, s.unknowns.bubble.data(), s.unknowns.bubble.size(), 0);
     write_array(file, "equivalent_strain", H5T_NATIVE_DOUBLE, s.equivalent_strain.data(), s.equivalent_strain.size(), 0);
+    write_array(file, "elastic_stress", H5T_NATIVE_DOUBLE, s.elastic_stress.data(), s.elastic_stress.size() / 6, 6);
 
     std::vector<double> dies;
     for (const DieState& d : s.dies)
@@ -152,6 +154,7 @@ RunState read_checkpoint(const std::string& path) {
   s.unknowns.nodal = Eigen::Map<Eigen::VectorXd>(nodal.data(), static_cast<long>(nodal.size()));
   s.unknowns.bubble = Eigen::Map<Eigen::VectorXd>(bubble.data(), static_cast<long>(bubble.size()));
   read_array(file, path, "equivalent_strain", H5T_NATIVE_DOUBLE, s.equivalent_strain, 1);
+  read_array(file, path, "elastic_stress", H5T_NATIVE_DOUBLE, s.elastic_stress, 6);
   read_array(file, path, "dies", H5T_NATIVE_DOUBLE, dies, 6);
   for (std::size_t i = 0; i < dies.size(); i += 6)
     s.dies.push_back({dies[i], dies[i + 1], dies[i + 2], {dies[i + 3], dies[i + 4], dies[i + 5]}});
@@ -173,7 +176,8 @@ RunState read_checkpoint(const std::string& path) {
     ++k;
   }
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
-      s.equivalent_strain.size() != s.mesh.tets.size() || s.mesh.boundary_tags.size() != s.mesh.boundary_faces.size())
+      s.equivalent_strain.size() != s.mesh.tets.size() ||
+      (!s.elastic_stress.empty() && s.elastic_stress.size() != 6 * s.mesh.tets.size()) || s.mesh.boundary_tags.size() != s.mesh.boundary_faces.size())
     throw InputError(path + ": checkpoint arrays do not match the mesh");
   return s;
 }

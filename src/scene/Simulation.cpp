@@ -130,6 +130,9 @@ struct Body {
   std::string name;
   std::string material_file;
   std::unique_ptr<material::Material> law;
+  /// An elastic body solved with flowing ones or over time: its law in velocity
+  /// form, Δt set per increment (null otherwise).
+  std::unique_ptr<material::IncrementalElastic> increment_law;
   material::PointState state; ///< temperature (isothermal)
   mesh::MeshRange range;
   double initial_volume = 0.0; ///< mm³, of the mesh as built
@@ -201,7 +204,9 @@ private:
   std::string out_;
   std::vector<Body> bodies_;
   fem::ElementLaws element_laws_;
-  bool all_elastic_ = false;
+  /// Every body elastic and one increment: the unknown is the displacement
+  /// (mm); otherwise it is the velocity (mm/s) and elastic bodies carry σ.
+  bool solve_displacement_ = false;
   std::vector<BoundaryCondition> conditions_;
   ImposedConditions imposed_;
   std::vector<std::string> effects_;
@@ -224,7 +229,7 @@ private:
   contact::RigidContact contact_;
   std::unique_ptr<contact::BodyContact> pair_contact_; ///< built only when the case has contact pairs
   std::vector<double> node_flow_stress_, node_consistency_;
-  std::vector<double> solved_rates_; ///< ε̄̇ per element of the last converged increment
+  ElementFields solved_; ///< ε̄̇ and σ per element of the last converged increment
   std::unique_ptr<io::VtkSeries> series_;
   solver::NewtonReport last_report_;
   Clock::time_point start_ = Clock::now();
@@ -238,7 +243,7 @@ void Run::setup() {
   for (std::size_t b = 0; b < case_.bodies.size(); ++b) {
     const BodySpec& spec = case_.bodies[b];
     MaterialCard card = read_material(spec.material_file);
-    Body body{spec.name, spec.material_file, std::move(card.law), {}, {}, 0.0};
+    Body body{spec.name, spec.material_file, std::move(card.law), nullptr, {}, {}, 0.0};
     body.state.temperature = spec.temperature.value_or(card.temperature.value_or(20.0));
     const mesh::TetMesh part = build_mesh(spec.mesh);
     std::vector<BoundaryCondition> conditions;
@@ -251,12 +256,20 @@ void Run::setup() {
     conditions_.insert(conditions_.end(), conditions.begin(), conditions.end());
     body.initial_volume = mesh::volume(part);
     body.range = mesh::append(initial, part);
-    element_laws_.insert(element_laws_.end(), part.tets.size(), body.law.get());
     bodies_.push_back(std::move(body));
   }
   std::vector<const material::Material*> laws;
   for (const Body& body : bodies_) laws.push_back(body.law.get());
-  all_elastic_ = std::all_of(laws.begin(), laws.end(), [](const material::Material* l) { return l->is_elastic(); });
+  solve_displacement_ = !case_.time.enabled &&
+      std::all_of(laws.begin(), laws.end(), [](const material::Material* l) { return l->is_elastic(); });
+  for (Body& body : bodies_) {
+    if (body.law->is_elastic() && !solve_displacement_)
+      body.increment_law = std::make_unique<material::IncrementalElastic>(
+          dynamic_cast<const material::LinearElastic&>(*body.law));
+    const material::Material* law = body.increment_law ? body.increment_law.get() : body.law.get();
+    element_laws_.insert(element_laws_.end(), body.range.tet_count, law);
+  }
+  const bool carries_stress = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return bool(b.increment_law); });
   if (!case_.contact_pairs.empty()) {
     std::vector<contact::BodyPair> pairs;
     for (const ContactPairSpec& p : case_.contact_pairs)
@@ -303,6 +316,7 @@ void Run::setup() {
     state_.mesh = std::move(initial);
     state_.unknowns = {imposed_.values, Eigen::VectorXd::Zero(3 * state_.mesh.tet_count())};
     state_.equivalent_strain.assign(state_.mesh.tets.size(), 0.0);
+    if (carries_stress) state_.elastic_stress.assign(6 * state_.mesh.tets.size(), 0.0);
     state_.dies.assign(dies_.size(), DieState{});
     state_.volume.initial = mesh::volume(state_.mesh);
   }
@@ -310,6 +324,10 @@ void Run::setup() {
   for (const Body& body : bodies_)
     std::fill_n(states_.begin() + body.range.first_tet, body.range.tet_count, body.state);
   for (int e = 0; e < state_.mesh.tet_count(); ++e) states_[e].equivalent_strain = state_.equivalent_strain[e];
+  if (carries_stress != !state_.elastic_stress.empty())
+    throw InputError("checkpoint: elastic stresses do not match the case's bodies (was the case changed?)");
+  for (std::size_t e = 0; e < state_.elastic_stress.size() / 6; ++e)
+    states_[e].elastic_stress = Eigen::Map<const material::Vec6>(&state_.elastic_stress[6 * e]);
   for (int k = 0; k < imposed_.values.size(); ++k)
     if (imposed_.prescribed[k]) state_.unknowns.nodal[k] = imposed_.values[k];
 }
@@ -381,6 +399,8 @@ std::vector<solver::NodalTerm*> Run::contact_terms() {
 }
 
 bool Run::try_increment(double dt, solver::NewtonReport& report) {
+  for (Body& body : bodies_)
+    if (body.increment_law) body.increment_law->set_time_step(dt);
   // Candidates: boundary nodes that can reach a die or another body within the increment.
   std::vector<contact::DieView> views;
   double die_speed = 0.0, body_speed = 0.0;
@@ -462,7 +482,7 @@ void Run::write_outputs(bool force) {
   const bool vtk_due = case_.write_vtk && (force || state_.increment % case_.vtk_every == 0);
   if (vtk_due && last_written_ != state_.increment) {
     const mesh::TetMesh& mesh = state_.mesh;
-    const bool elastic = all_elastic_;
+    const bool elastic = solve_displacement_;
     const ElementFields fields = element_fields(mesh, element_laws_, states_, state_.unknowns);
     io::Field velocity{elastic ? "displacement" : "velocity", 3, {}}, pressure{"pressure", 1, {}};
     io::Field contact_status{"contact_status", 1, std::vector<double>(mesh.nodes.size(), 0.0)};
@@ -624,6 +644,12 @@ void Run::set_contact_scales() {
     for (int node : state_.mesh.tets[e]) node_flow_stress_[node] += flow, node_consistency_[node] += k, weight[node] += 1.0;
   }
   for (std::size_t i = 0; i < weight.size(); ++i) node_flow_stress_[i] /= weight[i], node_consistency_[i] /= weight[i];
+  // An elastic body does not flow: friction against it is bounded by the
+  // other body's shear strength (BodyContact takes the weaker side).
+  for (const Body& body : bodies_)
+    if (body.law->is_elastic())
+      for (int i = body.range.first_node; i < body.range.first_node + body.range.node_count; ++i)
+        node_flow_stress_[i] = node_consistency_[i] = std::numeric_limits<double>::infinity();
   // Penalty ρ = factor × 3η/L, η the mean secant viscosity (shear modulus for
   // an elastic body) at the process rate and L the scene size: for a flowing
   // body this is factor × σ₀/v_ref, so the penetration velocity σn/ρ is about
@@ -643,8 +669,9 @@ void Run::set_contact_scales() {
 
 bool Run::update_geometry(double dt, std::string& failure) {
   Timers::Scope scope(timers_, "update");
-  // Strain rates of the solution on the geometry it was solved on, for ε̄.
-  solved_rates_ = element_fields(state_.mesh, element_laws_, states_, state_.unknowns).rate;
+  // Strain rates and stresses of the solution on the geometry it was solved
+  // on, for ε̄ and the stress elastic bodies carry.
+  solved_ = element_fields(state_.mesh, element_laws_, states_, state_.unknowns);
   // x ← x + Δt v; contact nodes back onto the die at its new position.
   const double volume_before = mesh::volume(state_.mesh);
   double volume_missing = 0.0; // what the compensation asked the incompressible bodies to restore
@@ -766,9 +793,16 @@ void Run::execute() {
     last_report_ = report;
     // ε̄ += Δt ε̄̇ per element, with the rates of the converged increment on the geometry it was solved on.
     for (int e = 0; e < state_.mesh.tet_count(); ++e) {
-      state_.equivalent_strain[e] += dt * solved_rates_[e];
+      state_.equivalent_strain[e] += dt * solved_.rate[e];
       states_[e].equivalent_strain = state_.equivalent_strain[e];
     }
+    // σ_{n+1} = σ_n + Δt C:ε̇ in elastic bodies (IncrementalElastic): the stress just solved.
+    for (const Body& body : bodies_)
+      if (body.increment_law)
+        for (int e = body.range.first_tet; e < body.range.first_tet + body.range.tet_count; ++e) {
+          states_[e].elastic_stress = solved_.stress[e];
+          Eigen::Map<material::Vec6>(&state_.elastic_stress[6 * e]) = solved_.stress[e];
+        }
     // A load-limited press slows down for the next increment.
     for (std::size_t d = 0; d < dies_.size(); ++d) {
       const Eigen::Vector3d v = dies_[d].velocity(state_.dies[d], dt);

@@ -14,6 +14,9 @@ namespace anvil::material {
 struct PointState {
   double equivalent_strain = 0.0; ///< ε̄ (-)
   double temperature = 20.0;      ///< T (°C)
+  /// Cauchy stress σ_n an elastic body carries into the increment (MPa,
+  /// Mandel; IncrementalElastic); zero for laws without elastic memory.
+  Vec6 elastic_stress = Vec6::Zero();
 };
 
 /// Deviatoric stress s and its tangent ds/dε for a strain rate ε (Mandel,
@@ -111,10 +114,36 @@ public:
   double consistency(const PointState& state) const override { return secant_viscosity(0.0, state); }
   double rate_sensitivity(const PointState&) const override { return 0.0; }
   std::string describe() const override;
+  double shear_modulus() const { return young_modulus_ / (2.0 * (1.0 + poisson_ratio_)); }
 
 private:
   double young_modulus_;
   double poisson_ratio_;
+};
+
+/// One increment Δt of a linear elastic law in velocity form, for an elastic
+/// body (a die) solved with flowing ones: σ = σ_n + Δt C:ε̇ (small strain,
+/// updated Lagrangian, rotations neglected: die strains are ~1e-3). With σ_n
+/// from PointState::elastic_stress, s = dev σ_n + 2GΔt dev ε̇, and the
+/// pressure equation is div v + (p − p_n)/(κΔt) = 0, p_n = −tr σ_n / 3:
+/// a Newtonian law of viscosity GΔt with an initial stress.
+class IncrementalElastic final : public Material {
+public:
+  explicit IncrementalElastic(const LinearElastic& elastic) : elastic_(elastic) {}
+  void set_time_step(double time_step) { time_step_ = time_step; }
+
+  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
+                         Mat6& tangent) const override;
+  double bulk_modulus() const override { return elastic_.bulk_modulus() * time_step_; }
+  bool is_linear() const override { return true; }
+  double secant_viscosity(double, const PointState&) const override { return elastic_.shear_modulus() * time_step_; }
+  double consistency(const PointState& state) const override { return secant_viscosity(0.0, state); }
+  double rate_sensitivity(const PointState&) const override { return 0.0; }
+  std::string describe() const override { return elastic_.describe() + ", in velocity form"; }
+
+private:
+  const LinearElastic& elastic_;
+  double time_step_ = 1.0; ///< s
 };
 
 /// Hansel-Spittel flow stress (isothermal use: T is a constant of the scene):

@@ -45,6 +45,9 @@ struct RunState {
   mesh::TetMesh mesh;
   fem::BodyUnknowns unknowns;
   std::vector<double> equivalent_strain; ///< ε̄ per element
+  /// σ (MPa, Mandel, 6 per element) carried by the elements of elastic bodies
+  /// solved in velocity form; empty when the scene has none.
+  std::vector<double> elastic_stress;
   std::vector<DieState> dies;
   std::vector<LoadRecord> loads;
   VolumeBudget volume;
