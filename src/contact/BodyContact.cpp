@@ -43,6 +43,11 @@ Eigen::Vector3d barycentric(const mesh::Point& q, const mesh::Point& a, const me
   return l / l.sum();
 }
 
+/// The point of triangle f with barycentric coordinates `shape`.
+mesh::Point point_on(const mesh::TetMesh& mesh, const mesh::Triangle& f, const Eigen::Vector3d& shape) {
+  return shape[0] * mesh.nodes[f[0]] + shape[1] * mesh.nodes[f[1]] + shape[2] * mesh.nodes[f[2]];
+}
+
 Eigen::Vector3d face_normal(const mesh::TetMesh& mesh, const mesh::Triangle& f) {
   return (mesh.nodes[f[1]] - mesh.nodes[f[0]]).cross(mesh.nodes[f[2]] - mesh.nodes[f[0]]);
 }
@@ -64,6 +69,12 @@ double weaker_side(const std::vector<double>& nodal_value, const ContactPoint& p
 }
 
 } // namespace
+
+Eigen::Vector3d relative_velocity(const ContactPoint& p, const Eigen::VectorXd& nodal) {
+  Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * p.node);
+  for (int j = 0; j < 3; ++j) relative -= p.shape[j] * nodal.segment<3>(kDofsPerNode * p.facet[j]);
+  return relative;
+}
 
 void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
   points_.clear();
@@ -98,8 +109,7 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
             const mesh::Triangle& t = mesh.boundary_faces[f];
             const double facing = face_normal(mesh, t).normalized().dot(own);
             const Eigen::Vector3d l = barycentric(hit.point, mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]);
-            const mesh::Point on_t = l[0] * mesh.nodes[t[0]] + l[1] * mesh.nodes[t[1]] + l[2] * mesh.nodes[t[2]];
-            if (facing < best_facing && (on_t - hit.point).norm() <= hair)
+            if (facing < best_facing && (point_on(mesh, t, l) - hit.point).norm() <= hair)
               best = f, best_facing = facing;
           }
         const mesh::Triangle& facet = mesh.boundary_faces[best];
@@ -109,8 +119,7 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
         // edge or a vertex the offset direction is the surface normal there.
         // The side comes from the facet.
         const Eigen::Vector3d shape = barycentric(x, mesh.nodes[facet[0]], mesh.nodes[facet[1]], mesh.nodes[facet[2]]);
-        const Eigen::Vector3d offset =
-            x - (shape[0] * mesh.nodes[facet[0]] + shape[1] * mesh.nodes[facet[1]] + shape[2] * mesh.nodes[facet[2]]);
+        const Eigen::Vector3d offset = x - point_on(mesh, facet, shape);
         const double along_normal = offset.dot(facet_normal);
         const double lateral = (offset - along_normal * facet_normal).norm();
         const bool over_facet = lateral <= hair;
@@ -236,8 +245,7 @@ const std::vector<double>& BodyContact::gaps(const Eigen::VectorXd& nodal) {
 
 void BodyContact::start(const Eigen::VectorXd& nodal) { active_.start(gaps(nodal)); }
 bool BodyContact::consistent(const Eigen::VectorXd& nodal) { return active_.consistent(gaps(nodal)); }
-std::string BodyContact::accept(const Eigen::VectorXd& nodal) {
-  return active_.accept(gaps(nodal), "pair constraints"); }
+std::string BodyContact::accept(const Eigen::VectorXd& nodal) { return active_.accept(gaps(nodal), "pair constraints"); }
 
 double BodyContact::pressure(int i, const Eigen::VectorXd& nodal) const {
   const ContactPoint& p = points_[i];
@@ -293,10 +301,8 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     if (!touching) continue;
     const double sense = p.on_slave ? 1.0 : -1.0;
     const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
-    Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * p.node);
-    for (int j = 0; j < 3; ++j) relative -= p.shape[j] * nodal.segment<3>(kDofsPerNode * p.facet[j]);
     const FrictionStress f = friction_stress(
-        law, {sense * tangent_projector * relative, sigma_n, weaker_side(*increment_.flow_stress, p),
+        law, {sense * tangent_projector * relative_velocity(p, nodal), sigma_n, weaker_side(*increment_.flow_stress, p),
               weaker_side(*increment_.consistency, p), increment_.regularisation, rho});
     // w = sense P (v_node − Σ N_j v_j): coefficient of node a in w is c_a P.
     const std::array<int, 4> nodes{p.node, p.facet[0], p.facet[1], p.facet[2]};

@@ -560,8 +560,9 @@ void Run::write_outputs(bool force) {
 void Run::write_interface() const {
   // Per interface node of either body, whatever the formulation: its
   // tributary area, its signed distance to the other body (< 0 penetrating)
-  // and the rate at which it opens (< 0 closing), the normal stress it transmits (its nodal contact force over its
-  // tributary area, N/mm² = MPa) and its velocity. The nodes are found by projecting both
+  // and the rate at which it opens (< 0 closing), the normal stress it
+  // transmits (its nodal contact force over its tributary area, N/mm² = MPa)
+  // and its velocity. The nodes are found by projecting both
   // sides (a symmetric search, for output only: master/slave itself never
   // looks at master nodes, and that is where its errors show).
   const Eigen::VectorXd& nodal = state_.unknowns.nodal;
@@ -579,11 +580,10 @@ void Run::write_interface() const {
     const int body = p.on_slave ? pair.slave : pair.master;
     // The contact force pushes the node away from the facet it projects onto: along +n.
     const double stress = -force.segment<3>(4 * p.node).dot(p.normal) / p.area;
-    Eigen::Vector3d relative = nodal.segment<3>(4 * p.node);
-    for (int j = 0; j < 3; ++j) relative -= p.shape[j] * nodal.segment<3>(4 * p.facet[j]);
     const mesh::Point& x = state_.mesh.nodes[p.node];
     csv << probe.pairs()[p.pair].name << "," << bodies_[body].name << "," << p.node - bodies_[body].range.first_node + 1
-        << "," << x.x() << "," << x.y() << "," << x.z() << "," << p.area << "," << p.gap << "," << relative.dot(p.normal) << "," << stress << "," << nodal[4 * p.node] << ","
+        << "," << x.x() << "," << x.y() << "," << x.z() << "," << p.area << "," << p.gap << ","
+        << contact::relative_velocity(p, nodal).dot(p.normal) << "," << stress << "," << nodal[4 * p.node] << ","
         << nodal[4 * p.node + 1] << "," << nodal[4 * p.node + 2] << "\n";
   }
   io::write_file_atomically(out_ + "/interface.csv", csv.str());
@@ -635,21 +635,25 @@ void Run::set_contact_scales() {
   // rate, and scales taken from it would shrink with every increment at rest.
   const double reference_rate = reference_velocity_ / body_size_;
   std::vector<double> weight(state_.mesh.nodes.size(), 0.0);
-  std::fill(node_flow_stress_.begin(), node_flow_stress_.end(), 0.0);
-  std::fill(node_consistency_.begin(), node_consistency_.end(), 0.0);
-  for (int e = 0; e < state_.mesh.tet_count(); ++e) {
-    const material::Material& law = *element_laws_[e];
-    const double rate = fields.rate[e] > 0.0 ? fields.rate[e] : reference_rate;
-    const double flow = law.flow_stress(rate, states_[e]), k = law.consistency(states_[e]);
-    for (int node : state_.mesh.tets[e]) node_flow_stress_[node] += flow, node_consistency_[node] += k, weight[node] += 1.0;
+  for (const Body& body : bodies_) {
+    const int first = body.range.first_node, end = first + body.range.node_count;
+    if (body.law->is_elastic()) {
+      // An elastic body does not flow: friction against it is bounded by the
+      // other body's shear strength (BodyContact takes the weaker side).
+      std::fill(node_flow_stress_.begin() + first, node_flow_stress_.begin() + end, std::numeric_limits<double>::infinity());
+      std::fill(node_consistency_.begin() + first, node_consistency_.begin() + end, std::numeric_limits<double>::infinity());
+      continue;
+    }
+    std::fill(node_flow_stress_.begin() + first, node_flow_stress_.begin() + end, 0.0);
+    std::fill(node_consistency_.begin() + first, node_consistency_.begin() + end, 0.0);
+    for (int e = body.range.first_tet; e < body.range.first_tet + body.range.tet_count; ++e) {
+      const material::Material& law = *element_laws_[e];
+      const double rate = fields.rate[e] > 0.0 ? fields.rate[e] : reference_rate;
+      const double flow = law.flow_stress(rate, states_[e]), k = law.consistency(states_[e]);
+      for (int node : state_.mesh.tets[e]) node_flow_stress_[node] += flow, node_consistency_[node] += k, weight[node] += 1.0;
+    }
+    for (int i = first; i < end; ++i) node_flow_stress_[i] /= weight[i], node_consistency_[i] /= weight[i];
   }
-  for (std::size_t i = 0; i < weight.size(); ++i) node_flow_stress_[i] /= weight[i], node_consistency_[i] /= weight[i];
-  // An elastic body does not flow: friction against it is bounded by the
-  // other body's shear strength (BodyContact takes the weaker side).
-  for (const Body& body : bodies_)
-    if (body.law->is_elastic())
-      for (int i = body.range.first_node; i < body.range.first_node + body.range.node_count; ++i)
-        node_flow_stress_[i] = node_consistency_[i] = std::numeric_limits<double>::infinity();
   // Penalty ρ = factor × 3η/L, η the mean secant viscosity (shear modulus for
   // an elastic body) at the process rate and L the scene size: for a flowing
   // body this is factor × σ₀/v_ref, so the penetration velocity σn/ρ is about

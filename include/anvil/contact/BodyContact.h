@@ -63,6 +63,8 @@ struct ContactPoint {
   Eigen::Vector3d multiplier_weight = Eigen::Vector3d::Zero(); ///< W_pm
 };
 
+/// Velocity of the point's node relative to its projection, v_node − Σ_j N_j(ξ) v_j (mm/s).
+Eigen::Vector3d relative_velocity(const ContactPoint& p, const Eigen::VectorXd& nodal);
 
 class BodyContact final : public solver::NodalTerm {
 public:
