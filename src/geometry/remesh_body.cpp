@@ -1,0 +1,138 @@
+// The CGAL side of remesh_body: our tets as a CGAL remeshing triangulation
+// (tet soup, TECH-NOTES §2), one surface patch per boundary patch, isotropic
+// remeshing, and back.
+#include "anvil/remesh/remesh_body.h"
+
+#include "anvil/contact/SurfaceSearch.h"
+#include "anvil/core/error.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_3/tet_soup_to_c3t3.h>
+#include <CGAL/Tetrahedral_remeshing/Remeshing_triangulation_3.h>
+#include <CGAL/tetrahedral_remeshing.h>
+
+#include <map>
+#include <set>
+#include <unordered_map>
+
+namespace anvil::remesh {
+namespace {
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Triangulation = CGAL::Tetrahedral_remeshing::Remeshing_triangulation_3<Kernel>;
+using VertexHandle = Triangulation::Vertex_handle;
+
+/// Face key as build_triangulation looks it up: the smallest index first, the rest in order.
+std::array<int, 3> facet_key(const mesh::Triangle& f) {
+  int k = 0;
+  while (f[k] != std::min({f[0], f[1], f[2]})) ++k;
+  return {f[k], f[(k + 1) % 3], f[(k + 2) % 3]};
+}
+/// Tags whose faces are not all in one plane somewhere in `body`: a patch
+/// that is curved (the barrel of an upset billet), where new facets are
+/// chords of the old surface.
+std::set<int> curved_tags(const mesh::TetMesh& body, const std::vector<int>& patch, const std::vector<int>& tag_of_patch) {
+  std::vector<mesh::Point> first_normal(tag_of_patch.size(), mesh::Point::Zero());
+  std::set<int> curved;
+  for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
+    const mesh::Triangle& t = body.boundary_faces[f];
+    const mesh::Point n = (body.nodes[t[1]] - body.nodes[t[0]]).cross(body.nodes[t[2]] - body.nodes[t[0]]).normalized();
+    mesh::Point& first = first_normal[patch[f]];
+    if (first.isZero()) first = n;
+    else if (first.dot(n) < 1.0 - 1e-9) curved.insert(tag_of_patch[patch[f]]);
+  }
+  return curved;
+}
+
+/// Moves the nodes inside curved patches (every face around them on one)
+/// along their normal by the one distance that gives `mesh` the volume
+/// `target`: the chords of a re-triangulated curved surface cut the old
+/// surface by about h²/8R, a volume loss that must not accumulate over remeshes.
+void restore_volume(mesh::TetMesh& mesh, double target, const std::set<int>& curved) {
+  if (curved.empty()) return;
+  const std::size_t n = mesh.nodes.size();
+  std::vector<mesh::Point> normal(n, mesh::Point::Zero()); // Σ face area vectors / 3: the node's share of the surface
+  std::vector<char> movable(n, 0), fixed(n, 0);
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
+    const mesh::Triangle& t = mesh.boundary_faces[f];
+    const mesh::Point area = 0.5 * (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]);
+    const bool on_curved = curved.count(mesh.boundary_tags[f]) > 0;
+    for (int v : t) {
+      normal[v] += area / 3.0;
+      (on_curved ? movable : fixed)[v] = 1;
+    }
+  }
+  // dV = Σ (A_i · n_i) δ over the movable nodes, to first order.
+  double area = 0.0;
+  for (std::size_t v = 0; v < n; ++v)
+    if (movable[v] && !fixed[v]) area += normal[v].norm();
+  if (area <= 0.0) return;
+  for (int pass = 0; pass < 2; ++pass) { // the second pass removes the second-order rest
+    const double shift = (target - mesh::volume(mesh)) / area;
+    for (std::size_t v = 0; v < n; ++v)
+      if (movable[v] && !fixed[v]) mesh.nodes[v] += shift * normal[v].normalized();
+  }
+}
+} // namespace
+
+mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {
+  std::vector<Triangulation::Point> points;
+  points.reserve(body.nodes.size());
+  for (const mesh::Point& x : body.nodes) points.emplace_back(x.x(), x.y(), x.z());
+  std::vector<std::array<int, 5>> cells;
+  cells.reserve(body.tets.size());
+  for (const mesh::Tet& t : body.tets) cells.push_back({t[0], t[1], t[2], t[3], 1});
+  const std::vector<int> patch = boundary_patches(body, settings.feature_angle);
+  std::map<std::array<int, 3>, int> patch_of_facet;
+  std::vector<int> tag_of_patch(1, 0);
+  for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
+    patch_of_facet[facet_key(body.boundary_faces[f])] = patch[f];
+    if (patch[f] >= static_cast<int>(tag_of_patch.size())) tag_of_patch.resize(patch[f] + 1, 0);
+    tag_of_patch[patch[f]] = body.boundary_tags[f];
+  }
+  Triangulation tr;
+  std::vector<VertexHandle> handles;
+  if (!CGAL::build_triangulation<Triangulation, false>(tr, points, cells, patch_of_facet, handles))
+    throw RunError("remeshing: CGAL cannot build a triangulation from the body's tets (is the body one "
+                   "piece without holes?)");
+
+  CGAL::tetrahedral_isotropic_remeshing(
+      tr, settings.edge_length,
+      CGAL::parameters::number_of_iterations(settings.iterations).remesh_boundaries(true).smooth_constrained_edges(false));
+
+  // Back to our mesh: the cells of the body (subdomain ≠ 0), their vertices numbered in order of first use.
+  mesh::TetMesh out;
+  std::unordered_map<VertexHandle, int> number;
+  auto node = [&](VertexHandle v) {
+    auto [it, inserted] = number.try_emplace(v, static_cast<int>(out.nodes.size()));
+    if (inserted) out.nodes.emplace_back(v->point().x(), v->point().y(), v->point().z());
+    return it->second;
+  };
+  std::vector<mesh::Triangle> tagged;
+  std::vector<int> tags;
+  for (auto c : tr.finite_cell_handles()) {
+    if (c->subdomain_index() == 0) continue;
+    out.tets.push_back({node(c->vertex(0)), node(c->vertex(1)), node(c->vertex(2)), node(c->vertex(3))});
+    for (int i = 0; i < 4; ++i) {
+      const int p = c->surface_patch_index(i);
+      if (p <= 0) continue;
+      tagged.push_back({node(c->vertex((i + 1) % 4)), node(c->vertex((i + 2) % 4)), node(c->vertex((i + 3) % 4))});
+      tags.push_back(p < static_cast<int>(tag_of_patch.size()) ? tag_of_patch[p] : 0);
+    }
+  }
+  mesh::build_boundary(out, tagged, tags);
+  // CGAL smooths the vertices of a curved patch in its tangent plane, which
+  // lets them sink below the old surface (0.34 % of a quarter cylinder's
+  // volume at h = R/10). Put every boundary node back on the old surface;
+  // what is left is the chord error of the new facets.
+  const contact::SurfaceSearch old_surface(body.nodes, body.boundary_faces);
+  std::vector<char> on_boundary(out.nodes.size(), 0);
+  for (const mesh::Triangle& f : out.boundary_faces)
+    for (int n : f) on_boundary[n] = 1;
+  for (std::size_t n = 0; n < out.nodes.size(); ++n)
+    if (on_boundary[n]) out.nodes[n] = old_surface.closest(out.nodes[n]).point;
+  restore_volume(out, mesh::volume(body), curved_tags(body, patch, tag_of_patch));
+  mesh::validate(out, "remeshed body");
+  return out;
+}
+
+} // namespace anvil::remesh
