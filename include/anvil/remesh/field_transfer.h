@@ -1,0 +1,40 @@
+// Fields from an old mesh to a new one after a remesh (issue 5 point 4).
+// Vertex handles do not survive CGAL's splits and collapses, so the transfer
+// is geometric (TECH-NOTES §2): each new point is located in the old mesh.
+#pragma once
+#include "anvil/mesh/TetMesh.h"
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+namespace anvil::remesh {
+
+/// Where a point lies in the old mesh: a tet and its barycentric weights
+/// (≥ 0, sum 1). A point outside (a boundary node a hair off the old surface)
+/// gets the closest tet, its weights clamped to the tet.
+struct Location {
+  int tet;
+  std::array<double, 4> weights;
+};
+
+/// Locates every point of `points` in `old_mesh` (a VTK static cell locator).
+std::vector<Location> locate(const mesh::TetMesh& old_mesh, const std::vector<mesh::Point>& points);
+
+/// Centroids of the tets of `m`.
+std::vector<mesh::Point> centroids(const mesh::TetMesh& m);
+
+/// Nodal field with `stride` values per node (e.g. 4: velocity and pressure),
+/// interpolated linearly at `at`.
+Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::VectorXd& values, int stride,
+                                  const std::vector<Location>& at);
+
+/// Element field (one value per tet, e.g. ε̄), transferred by injection: a new
+/// element takes the value of the old element that holds its centroid. It
+/// keeps the range (no smoothing of a peak) and is first-order accurate.
+std::vector<double> inject_element(const std::vector<double>& values, const std::vector<Location>& centroids_at);
+
+/// ∫ f dV over `m` of a one-value-per-tet field (mm³ × unit of f).
+double integral(const mesh::TetMesh& m, const std::vector<double>& values);
+
+} // namespace anvil::remesh

@@ -1,0 +1,93 @@
+#include "anvil/remesh/field_transfer.h"
+
+#include "anvil/mesh/tet_geometry.h"
+
+#include <Eigen/Dense>
+#include <vtkCellArray.h>
+#include <vtkGenericCell.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+
+namespace anvil::remesh {
+namespace {
+
+/// Barycentric coordinates of x in tet `e`, clamped to the tet (negative ones
+/// set to zero and the rest rescaled): exact inside, the nearest sensible
+/// weights just outside.
+std::array<double, 4> barycentric(const mesh::TetMesh& m, int e, const mesh::Point& x) {
+  const mesh::Tet& t = m.tets[e];
+  Eigen::Matrix3d jacobian;
+  for (int k = 0; k < 3; ++k) jacobian.col(k) = m.nodes[t[k + 1]] - m.nodes[t[0]];
+  const Eigen::Vector3d local = jacobian.partialPivLu().solve(x - m.nodes[t[0]]);
+  std::array<double, 4> w{1.0 - local.sum(), local[0], local[1], local[2]};
+  double sum = 0.0;
+  for (double& v : w) sum += (v = std::max(v, 0.0));
+  for (double& v : w) v /= sum;
+  return w;
+}
+
+} // namespace
+
+std::vector<Location> locate(const mesh::TetMesh& old_mesh, const std::vector<mesh::Point>& points) {
+  vtkNew<vtkPoints> vertices;
+  vertices->SetNumberOfPoints(old_mesh.node_count());
+  for (int i = 0; i < old_mesh.node_count(); ++i) vertices->SetPoint(i, old_mesh.nodes[i].data());
+  vtkNew<vtkCellArray> cells;
+  for (const mesh::Tet& t : old_mesh.tets) {
+    const vtkIdType ids[4] = {t[0], t[1], t[2], t[3]};
+    cells->InsertNextCell(4, ids);
+  }
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(vertices);
+  grid->SetCells(VTK_TETRA, cells);
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(grid);
+  locator->BuildLocator();
+
+  vtkNew<vtkGenericCell> cell;
+  std::vector<Location> out;
+  out.reserve(points.size());
+  for (const mesh::Point& p : points) {
+    double x[3] = {p.x(), p.y(), p.z()}, pcoords[3], weights[4], closest[3], distance2;
+    int sub = 0;
+    vtkIdType tet = locator->FindCell(x, 0.0, cell.GetPointer(), pcoords, weights);
+    if (tet < 0) locator->FindClosestPoint(x, closest, cell.GetPointer(), tet, sub, distance2);
+    out.push_back({static_cast<int>(tet), barycentric(old_mesh, static_cast<int>(tet), p)});
+  }
+  return out;
+}
+
+std::vector<mesh::Point> centroids(const mesh::TetMesh& m) {
+  std::vector<mesh::Point> out;
+  out.reserve(m.tets.size());
+  for (const mesh::Tet& t : m.tets) out.push_back(0.25 * (m.nodes[t[0]] + m.nodes[t[1]] + m.nodes[t[2]] + m.nodes[t[3]]));
+  return out;
+}
+
+Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::VectorXd& values, int stride,
+                                  const std::vector<Location>& at) {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(stride * static_cast<Eigen::Index>(at.size()));
+  for (std::size_t i = 0; i < at.size(); ++i)
+    for (int a = 0; a < 4; ++a)
+      out.segment(stride * i, stride) += at[i].weights[a] * values.segment(stride * old_mesh.tets[at[i].tet][a], stride);
+  return out;
+}
+
+std::vector<double> inject_element(const std::vector<double>& values, const std::vector<Location>& centroids_at) {
+  std::vector<double> out;
+  out.reserve(centroids_at.size());
+  for (const Location& l : centroids_at) out.push_back(values[l.tet]);
+  return out;
+}
+
+double integral(const mesh::TetMesh& m, const std::vector<double>& values) {
+  double sum = 0.0;
+  for (int e = 0; e < m.tet_count(); ++e) sum += values[e] * mesh::signed_volume(m, e);
+  return sum;
+}
+
+} // namespace anvil::remesh

@@ -1,0 +1,32 @@
+// Field transfer between two meshes of the same box.
+#include "anvil/mesh/generators.h"
+#include "anvil/remesh/field_transfer.h"
+
+#include <catch2/catch.hpp>
+
+using namespace anvil;
+
+TEST_CASE("Linear nodal fields are interpolated exactly, element fields injected", "[unit][remesh]") {
+  const mesh::TetMesh old_mesh = mesh::make_box({0, 0, 0}, {4, 3, 2}, 1.0);
+  mesh::TetMesh new_mesh = mesh::make_box({0, 0, 0}, {4, 3, 2}, 0.7);
+  // A new boundary node a hair outside the old mesh still gets a location.
+  new_mesh.nodes[0] -= mesh::Point(1e-7, 1e-7, 1e-7);
+  const auto linear = [](const mesh::Point& x) { return Eigen::Vector2d(1.0 + 2.0 * x.x() - x.y(), 3.0 * x.z()); };
+  Eigen::VectorXd old_values(2 * old_mesh.node_count());
+  for (int i = 0; i < old_mesh.node_count(); ++i) old_values.segment<2>(2 * i) = linear(old_mesh.nodes[i]);
+  const std::vector<remesh::Location> at = remesh::locate(old_mesh, new_mesh.nodes);
+  const Eigen::VectorXd values = remesh::interpolate_nodal(old_mesh, old_values, 2, at);
+  for (int i = 0; i < new_mesh.node_count(); ++i) {
+    const Eigen::Vector2d expected = linear(new_mesh.nodes[i]);
+    CHECK(values[2 * i] == Approx(expected[0]).margin(1e-6)); // 1e-7 outside, slope 2
+    CHECK(values[2 * i + 1] == Approx(expected[1]).margin(1e-6));
+  }
+  // Element field f = x at the centroids: injection is exact for constants
+  // and off by at most one old element's extent (1 mm) in x for a slope of 1.
+  const std::vector<mesh::Point> old_centres = remesh::centroids(old_mesh), new_centres = remesh::centroids(new_mesh);
+  std::vector<double> f;
+  for (const mesh::Point& c : old_centres) f.push_back(c.x());
+  const std::vector<double> injected = remesh::inject_element(f, remesh::locate(old_mesh, new_centres));
+  for (std::size_t e = 0; e < injected.size(); ++e) CHECK(injected[e] == Approx(new_centres[e].x()).margin(1.0));
+  CHECK(remesh::integral(new_mesh, injected) == Approx(remesh::integral(old_mesh, f)).epsilon(0.02));
+}
