@@ -98,6 +98,23 @@ MeshRange append(TetMesh& mesh, const TetMesh& part) {
   return range;
 }
 
+TetMesh extract(const TetMesh& mesh, const MeshRange& range) {
+  TetMesh part;
+  part.nodes.assign(mesh.nodes.begin() + range.first_node, mesh.nodes.begin() + range.first_node + range.node_count);
+  for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e) {
+    Tet t = mesh.tets[e];
+    for (int& v : t) v -= range.first_node;
+    part.tets.push_back(t);
+  }
+  for (int f = range.first_face; f < range.first_face + range.face_count; ++f) {
+    Triangle t = mesh.boundary_faces[f];
+    for (int& v : t) v -= range.first_node;
+    part.boundary_faces.push_back(t);
+    part.boundary_tags.push_back(mesh.boundary_tags[f]);
+  }
+  return part;
+}
+
 double volume(const TetMesh& mesh, const MeshRange& range) {
   double v = 0.0;
   for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e) v += signed_volume(mesh, e);

@@ -320,6 +320,17 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.contact.penalty = doc.number(contact, "penalty", "contact.penalty");
   c.contact.regularisation = doc.number(contact, "regularisation", "contact.regularisation");
   read_time(doc, c);
+  if (const YAML::Node r = root["remeshing"]) {
+    if (!c.time.enabled) doc.fail(r, "remeshing", "remeshing needs a 'time' section (it happens between increments)");
+    RemeshSpec& m = c.remeshing;
+    m.enabled = true;
+    m.quality = doc.number(r, "quality", "remeshing.quality");
+    m.every = doc.integer(r, "every", "remeshing.every");
+    m.die_penetration = doc.number(r, "die_penetration", "remeshing.die_penetration");
+    if (r["element_size"]) m.element_size = doc.number(r, "element_size", "remeshing.element_size");
+    m.feature_angle = doc.number(r, "feature_angle", "remeshing.feature_angle");
+    m.iterations = doc.integer(r, "iterations", "remeshing.iterations");
+  }
   if (!c.dies.empty() && !c.time.enabled)
     doc.fail(root["dies"], "dies", "dies need a 'time' section (stroke increment and stop criteria)");
   return c;

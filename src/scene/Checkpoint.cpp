@@ -1,7 +1,7 @@
 // HDF5 checkpoint of a RunState (C API, numbered calls, TECH-NOTES §5).
 // Layout: datasets /nodes (n×3), /tets (m×4), /boundary_faces (f×3),
 // /boundary_tags, /nodal (4n), /bubble (3m), /equivalent_strain (m),
-// /elastic_stress (m×6, or empty),
+// /elastic_stress (m×6, or empty), /body_ranges (b×6), /remeshes (r×10),
 // /dies (d×7), /loads (r×8), /outputs (k×2) with /output_files (strings),
 // scalar attributes on the root group.
 #include "anvil/core/error.h"
@@ -77,14 +77,24 @@ void write_checkpoint(const std::string& path, const RunState& s) {
   {
     Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
     if (!file.valid()) throw RunError(temporary + ": cannot create the checkpoint file");
-    const int format = 1;
+    const int format = 2;
     write_attribute(file, "format", H5T_NATIVE_INT, &format);
     write_attribute(file, "increment", H5T_NATIVE_INT, &s.increment);
     write_attribute(file, "time", H5T_NATIVE_DOUBLE, &s.time);
     write_attribute(file, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
-    const double volume[5] = {s.volume.initial, s.volume.solver, s.volume.projection, s.volume.largest_increment,
-                              s.volume.compensation};
-    write_array(file, "volume", H5T_NATIVE_DOUBLE, volume, 5, 0);
+    const double volume[6] = {s.volume.initial, s.volume.solver, s.volume.projection, s.volume.largest_increment,
+                              s.volume.compensation, s.volume.remeshing};
+    write_array(file, "volume", H5T_NATIVE_DOUBLE, volume, 6, 0);
+    std::vector<int> ranges;
+    for (const mesh::MeshRange& r : s.bodies)
+      ranges.insert(ranges.end(), {r.first_node, r.node_count, r.first_tet, r.tet_count, r.first_face, r.face_count});
+    write_array(file, "body_ranges", H5T_NATIVE_INT, ranges.data(), s.bodies.size(), 6);
+    std::vector<double> remeshes;
+    for (const RemeshRecord& r : s.remeshes)
+      remeshes.insert(remeshes.end(), {double(r.increment), double(r.body), double(r.nodes_before), double(r.nodes_after),
+                                       r.worst_quality_before, r.worst_quality_after, r.volume_change,
+                                       r.strain_integral_change, r.strain_max_change, r.seconds});
+    write_array(file, "remeshes", H5T_NATIVE_DOUBLE, remeshes.data(), s.remeshes.size(), 10);
 
     std::vector<double> nodes;
     for (const mesh::Point& p : s.mesh.nodes) nodes.insert(nodes.end(), p.data(), p.data() + 3);
@@ -130,16 +140,28 @@ RunState read_checkpoint(const std::string& path) {
   RunState s;
   int format = 0;
   read_attribute(file, path, "format", H5T_NATIVE_INT, &format);
-  if (format != 1) throw InputError(path + ": checkpoint format " + std::to_string(format) + ", expected 1");
+  if (format != 2)
+    throw InputError(path + ": checkpoint format " + std::to_string(format) + ", expected 2 (written by another "
+                            "version of anvil: run the case again without --resume)");
   read_attribute(file, path, "increment", H5T_NATIVE_INT, &s.increment);
   read_attribute(file, path, "time", H5T_NATIVE_DOUBLE, &s.time);
   read_attribute(file, path, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
   std::vector<double> volume, nodes, nodal, bubble, dies, loads, outputs;
   std::vector<long long> tets, faces;
   std::vector<char> files;
-  read_array(file, path, "volume", H5T_NATIVE_DOUBLE, volume, 5);
+  read_array(file, path, "volume", H5T_NATIVE_DOUBLE, volume, 6);
   s.volume.initial = volume[0], s.volume.solver = volume[1], s.volume.projection = volume[2];
-  s.volume.largest_increment = volume[3], s.volume.compensation = volume[4];
+  s.volume.largest_increment = volume[3], s.volume.compensation = volume[4], s.volume.remeshing = volume[5];
+  std::vector<int> ranges;
+  read_array(file, path, "body_ranges", H5T_NATIVE_INT, ranges, 6);
+  for (std::size_t i = 0; i < ranges.size(); i += 6)
+    s.bodies.push_back({ranges[i], ranges[i + 1], ranges[i + 2], ranges[i + 3], ranges[i + 4], ranges[i + 5]});
+  std::vector<double> remeshes;
+  read_array(file, path, "remeshes", H5T_NATIVE_DOUBLE, remeshes, 10);
+  for (std::size_t i = 0; i < remeshes.size(); i += 10) {
+    const double* r = &remeshes[i];
+    s.remeshes.push_back({int(r[0]), int(r[1]), int(r[2]), int(r[3]), r[4], r[5], r[6], r[7], r[8], r[9]});
+  }
   read_array(file, path, "nodes", H5T_NATIVE_DOUBLE, nodes, 3);
   for (std::size_t i = 0; i < nodes.size(); i += 3) s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);
   read_array(file, path, "tets", H5T_NATIVE_LLONG, tets, 4);

@@ -15,6 +15,10 @@
 #include "anvil/mesh/generators.h"
 #include "anvil/mesh/mesh_io.h"
 #include "anvil/mesh/tet_geometry.h"
+#include "anvil/remesh/die_feature_depth.h"
+#include "anvil/remesh/field_transfer.h"
+#include "anvil/remesh/quality.h"
+#include "anvil/remesh/remesh_body.h"
 #include "anvil/scene/Die.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/effects.h"
@@ -134,8 +138,13 @@ struct Body {
   /// form, Δt set per increment (null otherwise).
   std::unique_ptr<material::IncrementalElastic> increment_law;
   material::PointState state; ///< temperature (isothermal)
+  std::vector<BoundaryCondition> conditions; ///< the case's conditions on this body
+  /// What they impose on the mesh as built (faces chosen on the initial
+  /// geometry: a plane condition on a moving face is found there once).
+  ImposedConditions initial_imposed;
   mesh::MeshRange range;
   double initial_volume = 0.0; ///< mm³, of the mesh as built
+  double element_size = 0.0;   ///< mm, mean boundary edge of the mesh as built
 };
 
 /// The load surfaces of loads.csv: the dies, then the velocity conditions.
@@ -165,6 +174,15 @@ public:
 
 private:
   void setup();
+  /// Builds everything that depends on the mesh (element laws, imposed
+  /// conditions, body pairs, point states, solver) from state_.mesh and
+  /// state_.bodies: at the start, on resume and after a remesh.
+  void adopt_mesh();
+  /// Quality watch after an increment of length `dt`: the bodies to remesh,
+  /// each with why (empty when none).
+  std::vector<std::pair<int, std::string>> remesh_triggers(double dt);
+  /// Remeshes the bodies of `which`, transfers the fields, adopts the new mesh.
+  void remesh(const std::vector<std::pair<int, std::string>>& which);
   void log_header() const;
   double choose_time_step(double nominal);
   bool try_increment(double time_step, solver::NewtonReport& report);
@@ -243,18 +261,21 @@ void Run::setup() {
   for (std::size_t b = 0; b < case_.bodies.size(); ++b) {
     const BodySpec& spec = case_.bodies[b];
     MaterialCard card = read_material(spec.material_file);
-    Body body{spec.name, spec.material_file, std::move(card.law), nullptr, {}, {}, 0.0};
+    Body body;
+    body.name = spec.name;
+    body.material_file = spec.material_file;
+    body.law = std::move(card.law);
     body.state.temperature = spec.temperature.value_or(card.temperature.value_or(20.0));
     const mesh::TetMesh part = build_mesh(spec.mesh);
-    std::vector<BoundaryCondition> conditions;
     for (std::size_t i = 0; i < case_.boundary.size(); ++i)
-      if (case_.boundary_body[i] == static_cast<int>(b)) conditions.push_back(case_.boundary[i]);
+      if (case_.boundary_body[i] == static_cast<int>(b)) body.conditions.push_back(case_.boundary[i]);
+    conditions_.insert(conditions_.end(), body.conditions.begin(), body.conditions.end());
     {
       Timers::Scope scope(timers_, "effect boundary_conditions");
-      append(imposed_, impose(part, conditions), initial.node_count());
+      body.initial_imposed = impose(part, body.conditions);
     }
-    conditions_.insert(conditions_.end(), conditions.begin(), conditions.end());
     body.initial_volume = mesh::volume(part);
+    body.element_size = mean_boundary_edge(part);
     body.range = mesh::append(initial, part);
     bodies_.push_back(std::move(body));
   }
@@ -262,21 +283,11 @@ void Run::setup() {
   for (const Body& body : bodies_) laws.push_back(body.law.get());
   solve_displacement_ = !case_.time.enabled &&
       std::all_of(laws.begin(), laws.end(), [](const material::Material* l) { return l->is_elastic(); });
-  for (Body& body : bodies_) {
+  for (Body& body : bodies_)
     if (body.law->is_elastic() && !solve_displacement_)
       body.increment_law = std::make_unique<material::IncrementalElastic>(
           dynamic_cast<const material::LinearElastic&>(*body.law));
-    const material::Material* law = body.increment_law ? body.increment_law.get() : body.law.get();
-    element_laws_.insert(element_laws_.end(), body.range.tet_count, law);
-  }
   const bool carries_stress = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return bool(b.increment_law); });
-  if (!case_.contact_pairs.empty()) {
-    std::vector<contact::BodyPair> pairs;
-    for (const ContactPairSpec& p : case_.contact_pairs)
-      pairs.push_back({bodies_[p.master].name + "/" + bodies_[p.slave].name, bodies_[p.master].range,
-                       bodies_[p.slave].range, p.formulation, p.friction});
-    pair_contact_ = std::make_unique<contact::BodyContact>(std::move(pairs));
-  }
   effects_ = resolve_effects(case_, laws);
   compensate_volume_ = std::find(effects_.begin(), effects_.end(), "volume_compensation") != effects_.end();
 
@@ -298,38 +309,73 @@ void Run::setup() {
 
   // Speed at t = 0 over a short probe step (an increment is far longer).
   const double probe = 1e-3 * std::max(case_.time.stroke_increment, 1e-6);
-  for (const Die& d : dies_) reference_velocity_ = std::max(reference_velocity_, d.velocity(DieState{}, probe).norm());
-  for (int k = 0; k < imposed_.values.size(); ++k)
-    if (imposed_.prescribed[k] && k % 4 != 3) reference_velocity_ = std::max(reference_velocity_, std::abs(imposed_.values[k]));
-  if (case_.time.enabled && !(reference_velocity_ > 0.0))
-    throw InputError(case_.path + ": nothing moves at t = 0 (no moving die, no prescribed velocity): the time loop "
-                                  "needs a motion");
 
   if (options_.resume) {
     state_ = read_checkpoint(output_directory(case_, options_) + "/checkpoint.h5");
     if (state_.dies.size() != dies_.size())
       throw InputError("checkpoint: " + std::to_string(state_.dies.size()) + " dies, the case has " +
                        std::to_string(dies_.size()));
-    if (state_.mesh.tets.size() != initial.tets.size() || state_.mesh.nodes.size() != initial.nodes.size())
-      throw InputError("checkpoint: the mesh does not match the case's (was the case changed?)");
+    bool same_bodies = state_.bodies.size() == bodies_.size();
+    for (std::size_t b = 0; same_bodies && b < bodies_.size(); ++b)
+      same_bodies = state_.remeshes.empty() ? state_.bodies[b].node_count == bodies_[b].range.node_count &&
+                                                  state_.bodies[b].tet_count == bodies_[b].range.tet_count
+                                            : state_.bodies[b].first_node + state_.bodies[b].node_count <= state_.mesh.node_count();
+    if (!same_bodies) throw InputError("checkpoint: the bodies do not match the case's (was the case changed?)");
+    if (carries_stress != !state_.elastic_stress.empty())
+      throw InputError("checkpoint: elastic stresses do not match the case's bodies (was the case changed?)");
   } else {
-    state_.mesh = std::move(initial);
-    state_.unknowns = {imposed_.values, Eigen::VectorXd::Zero(3 * state_.mesh.tet_count())};
+    state_.mesh = initial;
+    for (const Body& body : bodies_) state_.bodies.push_back(body.range);
+    state_.unknowns = {Eigen::VectorXd::Zero(4 * state_.mesh.node_count()), Eigen::VectorXd::Zero(3 * state_.mesh.tet_count())};
     state_.equivalent_strain.assign(state_.mesh.tets.size(), 0.0);
     if (carries_stress) state_.elastic_stress.assign(6 * state_.mesh.tets.size(), 0.0);
     state_.dies.assign(dies_.size(), DieState{});
     state_.volume.initial = mesh::volume(state_.mesh);
   }
-  states_.resize(state_.mesh.tets.size());
+  adopt_mesh();
+
+  for (const Die& d : dies_) reference_velocity_ = std::max(reference_velocity_, d.velocity(DieState{}, probe).norm());
+  for (int k = 0; k < imposed_.values.size(); ++k)
+    if (imposed_.prescribed[k] && k % 4 != 3) reference_velocity_ = std::max(reference_velocity_, std::abs(imposed_.values[k]));
+  if (case_.time.enabled && !(reference_velocity_ > 0.0))
+    throw InputError(case_.path + ": nothing moves at t = 0 (no moving die, no prescribed velocity): the time loop "
+                                  "needs a motion");
+}
+
+void Run::adopt_mesh() {
+  element_laws_.clear();
+  imposed_ = {};
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    Body& body = bodies_[b];
+    body.range = state_.bodies[b];
+    const material::Material* law = body.increment_law ? body.increment_law.get() : body.law.get();
+    element_laws_.insert(element_laws_.end(), body.range.tet_count, law);
+    // A remeshed body has its faces chosen again on its new mesh: by tag
+    // (remeshing keeps tags) or by plane.
+    const bool remeshed = std::any_of(state_.remeshes.begin(), state_.remeshes.end(),
+                                      [&](const RemeshRecord& r) { return r.body == static_cast<int>(b); });
+    Timers::Scope scope(timers_, "effect boundary_conditions");
+    append(imposed_, remeshed ? impose(mesh::extract(state_.mesh, body.range), body.conditions) : body.initial_imposed,
+           body.range.first_node);
+  }
+  if (!case_.contact_pairs.empty()) {
+    std::vector<contact::BodyPair> pairs;
+    for (const ContactPairSpec& p : case_.contact_pairs)
+      pairs.push_back({bodies_[p.master].name + "/" + bodies_[p.slave].name, bodies_[p.master].range,
+                       bodies_[p.slave].range, p.formulation, p.friction});
+    pair_contact_ = std::make_unique<contact::BodyContact>(std::move(pairs));
+  }
+  states_.assign(state_.mesh.tets.size(), {});
   for (const Body& body : bodies_)
     std::fill_n(states_.begin() + body.range.first_tet, body.range.tet_count, body.state);
   for (int e = 0; e < state_.mesh.tet_count(); ++e) states_[e].equivalent_strain = state_.equivalent_strain[e];
-  if (carries_stress != !state_.elastic_stress.empty())
-    throw InputError("checkpoint: elastic stresses do not match the case's bodies (was the case changed?)");
   for (std::size_t e = 0; e < state_.elastic_stress.size() / 6; ++e)
     states_[e].elastic_stress = Eigen::Map<const material::Vec6>(&state_.elastic_stress[6 * e]);
   for (int k = 0; k < imposed_.values.size(); ++k)
     if (imposed_.prescribed[k]) state_.unknowns.nodal[k] = imposed_.values[k];
+  node_flow_stress_.assign(state_.mesh.nodes.size(), 0.0);
+  node_consistency_.assign(state_.mesh.nodes.size(), 0.0);
+  if (solver_) solver_ = std::make_unique<solver::IncrementSolver>(state_.mesh, imposed_.prescribed, case_.linear_solver, timers_);
 }
 
 void Run::log_header() const {
@@ -707,6 +753,117 @@ bool Run::update_geometry(double dt, std::string& failure) {
   return true;
 }
 
+std::vector<std::pair<int, std::string>> Run::remesh_triggers(double dt) {
+  const RemeshSpec& spec = case_.remeshing;
+  std::vector<std::pair<int, std::string>> due;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const Body& body = bodies_[b];
+    if (body.law->is_elastic()) continue; // an elastic die keeps its mesh
+    const remesh::QualityReport q = remesh::assess_quality(state_.mesh, body.range, state_.unknowns.nodal, dt, spec.quality);
+    const mesh::Point& at = q.worst_at;
+    log::info("  quality '%s': worst %.3f (element %d at %.3g, %.3g, %.3g mm), %d below %g; next increment %.3f",
+              body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
+              q.predicted_worst);
+    char why[160] = "";
+    if (q.worst < spec.quality) std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
+    else if (q.predicted_worst <= 0.0)
+      std::snprintf(why, sizeof why, "element %d would invert in the next increment", q.predicted_tet + 1);
+    else if (spec.every > 0 && state_.increment % spec.every == 0)
+      std::snprintf(why, sizeof why, "every %d increments", spec.every);
+    else {
+      const double size = spec.element_size > 0.0 ? spec.element_size : body.element_size;
+      const mesh::TetMesh part = mesh::extract(state_.mesh, body.range);
+      for (std::size_t d = 0; d < dies_.size() && !why[0]; ++d) {
+        std::vector<mesh::Point> vertices = dies_[d].surface->triangles().vertices;
+        for (mesh::Point& x : vertices) x += state_.dies[d].displacement;
+        const double depth = remesh::die_feature_depth(part, vertices);
+        if (depth > spec.die_penetration * size)
+          std::snprintf(why, sizeof why, "a vertex of die '%s' is %.3g mm inside", dies_[d].name.c_str(), depth);
+      }
+    }
+    if (why[0]) due.emplace_back(int(b), why);
+  }
+  return due;
+}
+
+void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
+  Timers::Scope scope(timers_, "remeshing");
+  const RemeshSpec& spec = case_.remeshing;
+  const mesh::TetMesh old_mesh = state_.mesh;
+  const fem::BodyUnknowns old_unknowns = state_.unknowns;
+  mesh::TetMesh next;
+  std::vector<mesh::MeshRange> ranges;
+  std::vector<Eigen::VectorXd> nodal;
+  std::vector<double> strain, stress;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const Clock::time_point start = Clock::now();
+    const mesh::MeshRange& range = state_.bodies[b];
+    const mesh::TetMesh part = mesh::extract(old_mesh, range);
+    const Eigen::VectorXd part_nodal = old_unknowns.nodal.segment(4 * range.first_node, 4 * range.node_count);
+    const std::vector<double> part_strain(state_.equivalent_strain.begin() + range.first_tet,
+                                          state_.equivalent_strain.begin() + range.first_tet + range.tet_count);
+    const auto due = std::find_if(which.begin(), which.end(), [&](const auto& w) { return w.first == int(b); });
+    if (due == which.end()) {
+      ranges.push_back(mesh::append(next, part));
+      nodal.push_back(part_nodal);
+      strain.insert(strain.end(), part_strain.begin(), part_strain.end());
+      if (!state_.elastic_stress.empty())
+        stress.insert(stress.end(), state_.elastic_stress.begin() + 6 * range.first_tet,
+                      state_.elastic_stress.begin() + 6 * (range.first_tet + range.tet_count));
+      continue;
+    }
+    remesh::RemeshSettings settings;
+    settings.edge_length = spec.element_size > 0.0 ? spec.element_size : bodies_[b].element_size;
+    settings.feature_angle = spec.feature_angle;
+    settings.iterations = spec.iterations;
+    const mesh::TetMesh fresh = remesh::remesh_body(part, settings);
+    // Nodal v and p interpolated: the next Newton's first guess. ε̄ injected.
+    nodal.push_back(remesh::interpolate_nodal(part, part_nodal, 4, remesh::locate(part, fresh.nodes)));
+    const std::vector<double> fresh_strain =
+        remesh::inject_element(part_strain, remesh::locate(part, remesh::centroids(fresh)));
+    strain.insert(strain.end(), fresh_strain.begin(), fresh_strain.end());
+    if (!state_.elastic_stress.empty()) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // flowing body: none
+    ranges.push_back(mesh::append(next, fresh));
+
+    auto relative = [](double after, double before) { return before != 0.0 ? after / before - 1.0 : after - before; };
+    auto worst = [](const mesh::TetMesh& m) {
+      double q = 1.0;
+      for (int e = 0; e < m.tet_count(); ++e) q = std::min(q, mesh::quality(m, e));
+      return q;
+    };
+    const RemeshRecord record{state_.increment,
+                              int(b),
+                              part.node_count(),
+                              fresh.node_count(),
+                              worst(part),
+                              worst(fresh),
+                              relative(mesh::volume(fresh), mesh::volume(part)),
+                              relative(remesh::integral(fresh, fresh_strain), remesh::integral(part, part_strain)),
+                              relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
+                                       *std::max_element(part_strain.begin(), part_strain.end())),
+                              seconds_since(start)};
+    state_.volume.remeshing += mesh::volume(fresh) - mesh::volume(part);
+    state_.remeshes.push_back(record);
+    log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm; worst quality %.3f -> %.3f; "
+              "volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
+              bodies_[b].name.c_str(), due->second.c_str(), record.nodes_before, record.nodes_after, part.tet_count(),
+              fresh.tet_count(), settings.edge_length, record.worst_quality_before, record.worst_quality_after,
+              100.0 * record.volume_change, 100.0 * record.strain_integral_change, 100.0 * record.strain_max_change,
+              record.seconds);
+  }
+  Eigen::Index size = 0;
+  for (const Eigen::VectorXd& v : nodal) size += v.size();
+  state_.unknowns.nodal.resize(size);
+  size = 0;
+  for (const Eigen::VectorXd& v : nodal) state_.unknowns.nodal.segment(size, v.size()) = v, size += v.size();
+  state_.unknowns.bubble = Eigen::VectorXd::Zero(3 * next.tet_count()); // condensed per element: a zero guess
+  state_.mesh = std::move(next);
+  state_.bodies = ranges;
+  state_.equivalent_strain = std::move(strain);
+  state_.elastic_stress = std::move(stress);
+  adopt_mesh();
+}
+
 void Run::execute() {
   setup();
   out_ = output_directory(case_, options_);
@@ -720,8 +877,6 @@ void Run::execute() {
     log::info("resumed from %s/checkpoint.h5 at increment %d, t = %.6g s", out_.c_str(), state_.increment, state_.time);
     last_written_ = last_checkpoint_ = state_.increment;
   }
-  node_flow_stress_.assign(state_.mesh.nodes.size(), 0.0);
-  node_consistency_.assign(state_.mesh.nodes.size(), 0.0);
 
   if (!case_.time.enabled) {
     // One increment on the initial geometry.
@@ -825,6 +980,10 @@ void Run::execute() {
               lead.force.norm() / 1e3, report.iterations.size(),
               (dies_.empty() ? 0 : contact_.active_count()) + (pair_contact_ ? pair_contact_->active_count() : 0),
               100.0 * (mesh::volume(state_.mesh) / state_.volume.initial - 1.0), clock_text(eta).c_str());
+    if (case_.remeshing.enabled && stop_reason().empty()) {
+      const auto due = remesh_triggers(dt);
+      if (!due.empty()) remesh(due);
+    }
     write_outputs(false);
   }
   log::info("stop: %s at increment %d, t = %.6g s", reason.c_str(), state_.increment, state_.time);
@@ -851,9 +1010,26 @@ void Run::write_summary(double total) const {
   summary << "  \"volume_mm3\": {\"start\": " << state_.volume.initial << ", \"end\": " << volume_end
           << ", \"change_solver\": " << state_.volume.solver << ", \"of_which_compensation\": "
           << state_.volume.compensation << ", \"change_contact_projection\": "
-          << state_.volume.projection << ", \"largest_relative_change_per_increment\": "
+          << state_.volume.projection << ", \"change_remeshing\": " << state_.volume.remeshing
+          << ", \"largest_relative_change_per_increment\": "
           << state_.volume.largest_increment << ", \"relative_change\": "
           << (state_.volume.initial > 0 ? volume_end / state_.volume.initial - 1.0 : 0.0) << "},\n";
+  if (case_.remeshing.enabled) {
+    double seconds = 0.0;
+    for (const RemeshRecord& r : state_.remeshes) seconds += r.seconds;
+    summary << "  \"remeshing\": {\"count\": " << state_.remeshes.size() << ", \"seconds\": " << seconds
+            << ", \"remeshes\": [";
+    for (std::size_t i = 0; i < state_.remeshes.size(); ++i) {
+      const RemeshRecord& r = state_.remeshes[i];
+      summary << (i ? ",\n    " : "\n    ") << "{\"increment\": " << r.increment << ", \"body\": "
+              << json_string(bodies_[r.body].name) << ", \"nodes_before\": " << r.nodes_before
+              << ", \"nodes_after\": " << r.nodes_after << ", \"worst_quality_before\": " << r.worst_quality_before
+              << ", \"worst_quality_after\": " << r.worst_quality_after << ", \"volume_change\": " << r.volume_change
+              << ", \"strain_integral_change\": " << r.strain_integral_change
+              << ", \"strain_max_change\": " << r.strain_max_change << ", \"seconds\": " << r.seconds << "}";
+    }
+    summary << "]},\n";
+  }
   summary << "  \"dies\": [";
   for (std::size_t d = 0; d < dies_.size(); ++d)
     summary << (d ? ", " : "") << "{\"name\": " << json_string(dies_[d].name) << ", \"stroke_mm\": " << state_.dies[d].stroke

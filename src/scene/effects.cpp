@@ -22,6 +22,7 @@ const std::vector<Effect>& effect_registry() {
       {"body_contact", "contact between deformable bodies: master/slave, symmetric or quasi-symmetric (Fourment 2008)"},
       {"friction", "friction on die or body contact (sticking, Tresca, Coulomb, Norton), regularised near zero slip"},
       {"hardening", "flow stress depending on ε̄ (Hansel-Spittel)"},
+      {"remeshing", "quality watch every increment; CGAL remeshing of flowing bodies with field transfer when triggered"},
   };
   return registry;
 }
@@ -58,6 +59,7 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
     if (p.friction.kind != contact::FrictionKind::frictionless) add("friction");
   for (const material::Material* law : laws)
     if (law->hardens()) add("hardening");
+  if (c.remeshing.enabled) add("remeshing");
   // Registry order, so logs of different scenes compare line by line.
   std::vector<std::string> ordered;
   for (const Effect& e : effect_registry())

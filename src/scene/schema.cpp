@@ -180,6 +180,19 @@ const std::vector<KeySpec>& case_schema() {
       range(key("time.stop.gap", T::number, "distance between the two dies along z", "mm"), 0, kInf, true),
       range(key("time.stop.load", T::number, "largest load magnitude on any die", "N"), 0, kInf, true),
       range(key("time.stop.time", T::number, "end time", "s"), 0, kInf, true),
+      key("remeshing", T::map, "automatic remeshing of the flowing bodies (CGAL, fields transferred); absent: never"),
+      with_default(range(key("remeshing.quality", T::number,
+                             "remesh a body when its worst element's volume-edge ratio 6√2V/l_rms³ falls below this, "
+                             "or would reach 0 in the next increment"), 0, 1), "0.1"),
+      with_default(range(key("remeshing.every", T::integer, "also remesh every N increments; 0 = off"), 0, kInf), "0"),
+      with_default(range(key("remeshing.die_penetration", T::number,
+                             "also remesh when a die vertex lies this deep inside a body, relative to its element size"),
+                         0, kInf, true), "0.25"),
+      range(key("remeshing.element_size", T::number,
+                "target edge length; default each body's initial mean boundary edge", "mm"), 0, kInf, true),
+      with_default(range(key("remeshing.feature_angle", T::number,
+                             "boundary edges where the surface turns more than this stay sharp", "deg"), 0, 180, true), "40"),
+      with_default(range(key("remeshing.iterations", T::integer, "CGAL remeshing passes"), 1, 20), "3"),
     };
     for (const auto& [owner, between] : {std::pair{"dies[]", "die and body"}, std::pair{"contact_pairs[]", "the two bodies"}}) {
       const std::vector<KeySpec> friction = friction_keys(owner, between);

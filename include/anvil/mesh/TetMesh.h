@@ -54,6 +54,9 @@ struct MeshRange {
 /// bodies of a scene are solved as one mesh of disjoint parts.
 MeshRange append(TetMesh& mesh, const TetMesh& part);
 
+/// The part of `mesh` that `range` names, renumbered from 0 (inverse of append).
+TetMesh extract(const TetMesh& mesh, const MeshRange& range);
+
 /// Sum of the volumes of the tets of `range` (mm³).
 double volume(const TetMesh& mesh, const MeshRange& range);
 

@@ -72,6 +72,18 @@ struct TimeSpec {
   double end_time = std::numeric_limits<double>::infinity(); ///< s
 };
 
+/// Automatic remeshing (issue 5). Flowing bodies only: an elastic die strains
+/// too little to need it and keeps its mesh.
+struct RemeshSpec {
+  bool enabled = false;
+  double quality = 0.1;         ///< trigger: worst volume-edge ratio below this (or ≤ 0 predicted next increment)
+  int every = 0;                ///< trigger: every N increments (0 = off)
+  double die_penetration = 0.25; ///< trigger: a die vertex this deep inside the body, × element size
+  double element_size = 0.0;    ///< mm, target edge length; 0 = the body's initial mean boundary edge
+  double feature_angle = 40.0;  ///< degrees
+  int iterations = 3;           ///< CGAL passes
+};
+
 struct ContactSpec {
   double penalty = 1e3;        ///< ρ relative to σ₀ / v_ref (mean flow stress / press speed)
   double regularisation = 1e-2; ///< friction w₀ relative to the fastest die speed
@@ -92,6 +104,7 @@ struct Case {
   std::vector<ContactPairSpec> contact_pairs;
   ContactSpec contact;
   TimeSpec time;
+  RemeshSpec remeshing;
   int vtk_every = 1;         ///< write the VTK series every N increments (and the last)
   int checkpoint_every = 10; ///< HDF5 checkpoint every N increments (and the last); 0 = never
 };

@@ -36,13 +36,27 @@ struct VolumeBudget {
   double solver = 0.0;      ///< change from x += Δt v (time-integration error plus compensation)
   double compensation = 0.0; ///< volume the compensation dilatation asked the flow to restore
   double projection = 0.0;  ///< change from putting contact nodes back on the dies
+  double remeshing = 0.0;   ///< change from remeshing (new mesh against old)
   double largest_increment = 0.0; ///< largest |relative change| in one increment
+};
+
+/// One remesh of one body (issue 5 point 4): what it changed.
+struct RemeshRecord {
+  int increment;         ///< after this increment
+  int body;              ///< index into the case's bodies
+  int nodes_before, nodes_after;
+  double worst_quality_before, worst_quality_after;
+  double volume_change;  ///< relative
+  double strain_integral_change; ///< relative change of ∫ε̄ dV by the transfer
+  double strain_max_change;      ///< relative change of max ε̄ by the transfer
+  double seconds;        ///< wall time (remesh and transfer)
 };
 
 struct RunState {
   int increment = 0;
   double time = 0.0; ///< s
   mesh::TetMesh mesh;
+  std::vector<mesh::MeshRange> bodies; ///< where each body sits in `mesh` (changes with remeshing)
   fem::BodyUnknowns unknowns;
   std::vector<double> equivalent_strain; ///< ε̄ per element
   /// σ (MPa, Mandel, 6 per element) carried by the elements of elastic bodies
@@ -52,6 +66,7 @@ struct RunState {
   std::vector<LoadRecord> loads;
   VolumeBudget volume;
   int newton_iterations = 0; ///< total over the run
+  std::vector<RemeshRecord> remeshes;
   std::vector<io::VtkSeries::Entry> outputs;
 };
 
