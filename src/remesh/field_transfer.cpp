@@ -77,10 +77,50 @@ Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::Ve
   return out;
 }
 
-std::vector<double> inject_element(const std::vector<double>& values, const std::vector<Location>& centroids_at) {
+std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::vector<double>& values,
+                                     const std::vector<mesh::Point>& centres, const std::vector<Location>& centres_at) {
+  const std::vector<mesh::Point> old_centres = centroids(old_mesh);
+  // Elements around each node, and the range of the field there.
+  std::vector<std::vector<int>> around(old_mesh.nodes.size());
+  for (int e = 0; e < old_mesh.tet_count(); ++e)
+    for (int v : old_mesh.tets[e]) around[v].push_back(e);
+  std::vector<double> low(old_mesh.nodes.size()), high(old_mesh.nodes.size());
+  for (std::size_t v = 0; v < around.size(); ++v) {
+    low[v] = high[v] = values[around[v].front()];
+    for (int e : around[v]) low[v] = std::min(low[v], values[e]), high[v] = std::max(high[v], values[e]);
+  }
   std::vector<double> out;
-  out.reserve(centroids_at.size());
-  for (const Location& l : centroids_at) out.push_back(values[l.tet]);
+  out.reserve(centres.size());
+  std::vector<int> patch;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const int e = centres_at[i].tet;
+    const mesh::Point& c = old_centres[e];
+    // Gradient: least squares over the elements sharing a node with e,
+    // min Σ_n (f_n − f_e − g·(c_n − c_e))².
+    patch.clear();
+    for (int v : old_mesh.tets[e]) patch.insert(patch.end(), around[v].begin(), around[v].end());
+    std::sort(patch.begin(), patch.end());
+    patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    for (int n : patch) {
+      const Eigen::Vector3d d = old_centres[n] - c;
+      normal += d * d.transpose();
+      rhs += (values[n] - values[e]) * d;
+    }
+    Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
+    const Eigen::LDLT<Eigen::Matrix3d> fit(normal);
+    if (fit.info() == Eigen::Success && fit.vectorD().minCoeff() > 1e-9 * normal.trace()) gradient = fit.solve(rhs);
+    // Vertex-based limiter (Barth-Jespersen as in Kuzmin 2010): the value the
+    // gradient gives at each vertex stays within the range of the elements around it.
+    double limit = 1.0;
+    for (int v : old_mesh.tets[e]) {
+      const double rise = gradient.dot(old_mesh.nodes[v] - c);
+      if (rise > 0.0) limit = std::min(limit, (high[v] - values[e]) / rise);
+      else if (rise < 0.0) limit = std::min(limit, (low[v] - values[e]) / rise);
+    }
+    out.push_back(values[e] + limit * gradient.dot(centres[i] - c));
+  }
   return out;
 }
 

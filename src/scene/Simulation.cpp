@@ -817,10 +817,11 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     settings.feature_angle = spec.feature_angle;
     settings.iterations = spec.iterations;
     const mesh::TetMesh fresh = remesh::remesh_body(part, settings);
-    // Nodal v and p interpolated: the next Newton's first guess. ε̄ injected.
+    // Nodal v and p interpolated: the next Newton's first guess. ε̄ by limited linear reconstruction.
     nodal.push_back(remesh::interpolate_nodal(part, part_nodal, 4, remesh::locate(part, fresh.nodes)));
+    const std::vector<mesh::Point> centres = remesh::centroids(fresh);
     const std::vector<double> fresh_strain =
-        remesh::inject_element(part_strain, remesh::locate(part, remesh::centroids(fresh)));
+        remesh::transfer_element(part, part_strain, centres, remesh::locate(part, centres));
     strain.insert(strain.end(), fresh_strain.begin(), fresh_strain.end());
     if (!state_.elastic_stress.empty()) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // flowing body: none
     ranges.push_back(mesh::append(next, fresh));

@@ -29,10 +29,14 @@ std::vector<mesh::Point> centroids(const mesh::TetMesh& m);
 Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::VectorXd& values, int stride,
                                   const std::vector<Location>& at);
 
-/// Element field (one value per tet, e.g. ε̄), transferred by injection: a new
-/// element takes the value of the old element that holds its centroid. It
-/// keeps the range (no smoothing of a peak) and is first-order accurate.
-std::vector<double> inject_element(const std::vector<double>& values, const std::vector<Location>& centroids_at);
+/// Element field (one value per tet, e.g. ε̄) at the new elements' centroids
+/// `centres` (located by `centres_at`): a linear reconstruction in the old
+/// element that holds the centroid, its gradient fitted by least squares to
+/// the face neighbours' values and limited (Barth-Jespersen) so that it never
+/// leaves the range of the element and its neighbours. Exact for linear
+/// fields away from the limiter; a peak is neither smoothed nor overshot.
+std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::vector<double>& values,
+                                     const std::vector<mesh::Point>& centres, const std::vector<Location>& centres_at);
 
 /// ∫ f dV over `m` of a one-value-per-tet field (mm³ × unit of f).
 double integral(const mesh::TetMesh& m, const std::vector<double>& values);

@@ -4,9 +4,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 using namespace anvil;
 
-TEST_CASE("Linear nodal fields are interpolated exactly, element fields injected", "[unit][remesh]") {
+TEST_CASE("Linear nodal fields are interpolated exactly, element fields reconstructed", "[unit][remesh]") {
   const mesh::TetMesh old_mesh = mesh::make_box({0, 0, 0}, {4, 3, 2}, 1.0);
   mesh::TetMesh new_mesh = mesh::make_box({0, 0, 0}, {4, 3, 2}, 0.7);
   // A new boundary node a hair outside the old mesh still gets a location.
@@ -21,12 +23,25 @@ TEST_CASE("Linear nodal fields are interpolated exactly, element fields injected
     CHECK(values[2 * i] == Approx(expected[0]).margin(1e-6)); // 1e-7 outside, slope 2
     CHECK(values[2 * i + 1] == Approx(expected[1]).margin(1e-6));
   }
-  // Element field f = x at the centroids: injection is exact for constants
-  // and off by at most one old element's extent (1 mm) in x for a slope of 1.
+  // Element field f = x at the old centroids: the limited reconstruction is
+  // exact for a linear field wherever the limiter stays off (inside; at the
+  // boundary the elements around a vertex lie on one side of it and it clips),
+  // and never leaves the range.
   const std::vector<mesh::Point> old_centres = remesh::centroids(old_mesh), new_centres = remesh::centroids(new_mesh);
   std::vector<double> f;
   for (const mesh::Point& c : old_centres) f.push_back(c.x());
-  const std::vector<double> injected = remesh::inject_element(f, remesh::locate(old_mesh, new_centres));
-  for (std::size_t e = 0; e < injected.size(); ++e) CHECK(injected[e] == Approx(new_centres[e].x()).margin(1.0));
-  CHECK(remesh::integral(new_mesh, injected) == Approx(remesh::integral(old_mesh, f)).epsilon(0.02));
+  const std::vector<double> moved =
+      remesh::transfer_element(old_mesh, f, new_centres, remesh::locate(old_mesh, new_centres));
+  int exact = 0;
+  for (std::size_t e = 0; e < moved.size(); ++e) {
+    CHECK(moved[e] >= *std::min_element(f.begin(), f.end()) - 1e-12);
+    CHECK(moved[e] <= *std::max_element(f.begin(), f.end()) + 1e-12);
+    CHECK(moved[e] == Approx(new_centres[e].x()).margin(1.0)); // clipped: off by at most one old element
+    if (std::abs(moved[e] - new_centres[e].x()) < 1e-9) ++exact;
+  }
+  INFO("exact at " << exact << " of " << moved.size() << " elements");
+  CHECK(exact > static_cast<int>(moved.size()) / 2);
+  // Not conservative by construction: the clipped boundary layer (one element
+  // of 1 mm on a 4 mm box) shifts the integral; measured 0.2 %.
+  CHECK(remesh::integral(new_mesh, moved) == Approx(remesh::integral(old_mesh, f)).epsilon(0.01));
 }
