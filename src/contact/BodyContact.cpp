@@ -48,14 +48,10 @@ mesh::Point point_on(const mesh::TetMesh& mesh, const mesh::Triangle& f, const E
   return shape[0] * mesh.nodes[f[0]] + shape[1] * mesh.nodes[f[1]] + shape[2] * mesh.nodes[f[2]];
 }
 
-Eigen::Vector3d face_normal(const mesh::TetMesh& mesh, const mesh::Triangle& f) {
-  return (mesh.nodes[f[1]] - mesh.nodes[f[0]]).cross(mesh.nodes[f[2]] - mesh.nodes[f[0]]);
-}
-
 /// Outward unit normal of a body at a boundary node: the area-weighted mean of its boundary faces.
 Eigen::Vector3d own_normal(const mesh::TetMesh& mesh, const std::vector<int>& faces) {
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  for (int f : faces) n += face_normal(mesh, mesh.boundary_faces[f]);
+  for (int f : faces) n += mesh::area_vector(mesh, mesh.boundary_faces[f]);
   return n.normalized();
 }
 
@@ -102,18 +98,18 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
         const double hair = std::max(1e-9 * (1.0 + hit.point.norm()), 1e-3 * search_distance);
         const Eigen::Vector3d own = own_normal(mesh, node_faces[node]);
         int best = onto.first_face + hit.face;
-        double best_facing = face_normal(mesh, mesh.boundary_faces[best]).normalized().dot(own);
+        double best_facing = mesh::area_vector(mesh, mesh.boundary_faces[best]).normalized().dot(own);
         for (int vertex : faces[hit.face])
           for (int f : node_faces[vertex]) {
             if (f < onto.first_face || f >= onto.first_face + onto.face_count) continue;
             const mesh::Triangle& t = mesh.boundary_faces[f];
-            const double facing = face_normal(mesh, t).normalized().dot(own);
+            const double facing = mesh::area_vector(mesh, t).normalized().dot(own);
             const Eigen::Vector3d l = barycentric(hit.point, mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]);
             if (facing < best_facing && (point_on(mesh, t, l) - hit.point).norm() <= hair)
               best = f, best_facing = facing;
           }
         const mesh::Triangle& facet = mesh.boundary_faces[best];
-        const Eigen::Vector3d facet_normal = face_normal(mesh, facet).normalized();
+        const Eigen::Vector3d facet_normal = mesh::area_vector(mesh, facet).normalized();
         // Inside a facet (or off its edge by a hair: bodies pressed together
         // widen alike, to round-off) the offset is along its normal; off an
         // edge or a vertex the offset direction is the surface normal there.
@@ -134,8 +130,8 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
         // sides of a block, whose edge nodes would otherwise weigh double).
         double area = 0.0;
         for (int f : node_faces[node]) {
-          const Eigen::Vector3d n = face_normal(mesh, mesh.boundary_faces[f]);
-          if (n.dot(normal) < -0.3 * n.norm()) area += n.norm() / 6.0;
+          const Eigen::Vector3d n = mesh::area_vector(mesh, mesh.boundary_faces[f]);
+          if (n.dot(normal) < -0.3 * n.norm()) area += n.norm() / 3.0;
         }
         if (area == 0.0) continue; // no face looks at the other body: not on its contact surface
         ContactPoint p;

@@ -13,8 +13,7 @@ using fem::kDofsPerNode;
 std::vector<double> boundary_node_areas(const mesh::TetMesh& mesh) {
   std::vector<double> area(mesh.node_count(), 0.0);
   for (const mesh::Triangle& f : mesh.boundary_faces) {
-    const mesh::Point &a = mesh.nodes[f[0]], &b = mesh.nodes[f[1]], &c = mesh.nodes[f[2]];
-    const double third = (b - a).cross(c - a).norm() / 6.0;
+    const double third = mesh::area_vector(mesh, f).norm() / 3.0;
     for (int k = 0; k < 3; ++k) area[f[k]] += third;
   }
   return area;

@@ -34,8 +34,7 @@ std::set<int> curved_tags(const mesh::TetMesh& body, const std::vector<int>& pat
   std::vector<mesh::Point> first_normal(tag_of_patch.size(), mesh::Point::Zero());
   std::set<int> curved;
   for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
-    const mesh::Triangle& t = body.boundary_faces[f];
-    const mesh::Point n = (body.nodes[t[1]] - body.nodes[t[0]]).cross(body.nodes[t[2]] - body.nodes[t[0]]).normalized();
+    const mesh::Point n = mesh::area_vector(body, body.boundary_faces[f]).normalized();
     mesh::Point& first = first_normal[patch[f]];
     if (first.isZero()) first = n;
     else if (first.dot(n) < 1.0 - 1e-9) curved.insert(tag_of_patch[patch[f]]);
@@ -53,11 +52,10 @@ void restore_volume(mesh::TetMesh& mesh, double target, const std::set<int>& cur
   std::vector<mesh::Point> normal(n, mesh::Point::Zero()); // Σ face area vectors / 3: the node's share of the surface
   std::vector<char> movable(n, 0), fixed(n, 0);
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
-    const mesh::Triangle& t = mesh.boundary_faces[f];
-    const mesh::Point area = 0.5 * (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]);
+    const mesh::Point third = mesh::area_vector(mesh, mesh.boundary_faces[f]) / 3.0;
     const bool on_curved = curved.count(mesh.boundary_tags[f]) > 0;
-    for (int v : t) {
-      normal[v] += area / 3.0;
+    for (int v : mesh.boundary_faces[f]) {
+      normal[v] += third;
       (on_curved ? movable : fixed)[v] = 1;
     }
   }

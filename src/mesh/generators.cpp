@@ -24,9 +24,7 @@ template <class TagOfNormal>
 void tag_by_normal(TetMesh& mesh, TagOfNormal tag_of_normal) {
   build_boundary(mesh);
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
-    const Triangle& t = mesh.boundary_faces[f];
-    const Point n = (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]).normalized();
-    mesh.boundary_tags[f] = tag_of_normal(n);
+    mesh.boundary_tags[f] = tag_of_normal(area_vector(mesh, mesh.boundary_faces[f]).normalized());
   }
 }
 

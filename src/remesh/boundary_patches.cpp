@@ -12,7 +12,7 @@ std::vector<int> boundary_patches(const mesh::TetMesh& body, double feature_angl
   std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
   for (std::size_t f = 0; f < faces; ++f) {
     const mesh::Triangle& t = body.boundary_faces[f];
-    normal[f] = (body.nodes[t[1]] - body.nodes[t[0]]).cross(body.nodes[t[2]] - body.nodes[t[0]]).normalized();
+    normal[f] = mesh::area_vector(body, t).normalized();
     for (int k = 0; k < 3; ++k)
       faces_of_edge[std::minmax(t[k], t[(k + 1) % 3])].push_back(static_cast<int>(f));
   }

@@ -3,24 +3,27 @@
 #include "anvil/contact/SurfaceSearch.h"
 
 #include <algorithm>
+#include <memory>
 
 namespace anvil::remesh {
 
-double die_feature_depth(const mesh::TetMesh& body, const std::vector<mesh::Point>& die_vertices) {
-  mesh::Point low = body.nodes.front(), high = low;
-  for (const mesh::Point& x : body.nodes) low = low.cwiseMin(x), high = high.cwiseMax(x);
-  std::vector<mesh::Point> candidates;
-  for (const mesh::Point& x : die_vertices)
-    if ((x.array() > low.array()).all() && (x.array() < high.array()).all()) candidates.push_back(x);
-  if (candidates.empty()) return 0.0;
-  const contact::SurfaceSearch surface(body.nodes, body.boundary_faces);
-  double deepest = 0.0;
-  for (const mesh::Point& x : candidates) {
-    const contact::SurfaceSearch::Closest c = surface.closest(x);
-    const mesh::Triangle& f = body.boundary_faces[c.face];
-    const mesh::Point outward = (body.nodes[f[1]] - body.nodes[f[0]]).cross(body.nodes[f[2]] - body.nodes[f[0]]);
-    if ((x - c.point).dot(outward) < 0.0) deepest = std::max(deepest, (x - c.point).norm());
-  }
+std::vector<double> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
+                                       const std::vector<std::vector<mesh::Point>>& die_vertices) {
+  mesh::Point low = mesh.nodes[body.first_node], high = low;
+  for (int i = body.first_node; i < body.first_node + body.node_count; ++i)
+    low = low.cwiseMin(mesh.nodes[i]), high = high.cwiseMax(mesh.nodes[i]);
+  const std::vector<mesh::Triangle> faces(mesh.boundary_faces.begin() + body.first_face,
+                                          mesh.boundary_faces.begin() + body.first_face + body.face_count);
+  std::unique_ptr<contact::SurfaceSearch> surface; // built once, when a vertex is in the body's box
+  std::vector<double> deepest(die_vertices.size(), 0.0);
+  for (std::size_t d = 0; d < die_vertices.size(); ++d)
+    for (const mesh::Point& x : die_vertices[d]) {
+      if (!(x.array() > low.array()).all() || !(x.array() < high.array()).all()) continue;
+      if (!surface) surface = std::make_unique<contact::SurfaceSearch>(mesh.nodes, faces);
+      const contact::SurfaceSearch::Closest c = surface->closest(x);
+      if ((x - c.point).dot(mesh::area_vector(mesh, faces[c.face])) < 0.0)
+        deepest[d] = std::max(deepest[d], (x - c.point).norm());
+    }
   return deepest;
 }
 

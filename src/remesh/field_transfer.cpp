@@ -32,7 +32,13 @@ std::array<double, 4> barycentric(const mesh::TetMesh& m, int e, const mesh::Poi
 
 } // namespace
 
-std::vector<Location> locate(const mesh::TetMesh& old_mesh, const std::vector<mesh::Point>& points) {
+struct PointLocator::Vtk {
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkStaticCellLocator> locator;
+  vtkNew<vtkGenericCell> cell; ///< scratch for the queries
+};
+
+PointLocator::PointLocator(const mesh::TetMesh& old_mesh) : mesh_(old_mesh), vtk_(std::make_unique<Vtk>()) {
   vtkNew<vtkPoints> vertices;
   vertices->SetNumberOfPoints(old_mesh.node_count());
   for (int i = 0; i < old_mesh.node_count(); ++i) vertices->SetPoint(i, old_mesh.nodes[i].data());
@@ -41,22 +47,23 @@ std::vector<Location> locate(const mesh::TetMesh& old_mesh, const std::vector<me
     const vtkIdType ids[4] = {t[0], t[1], t[2], t[3]};
     cells->InsertNextCell(4, ids);
   }
-  vtkNew<vtkUnstructuredGrid> grid;
-  grid->SetPoints(vertices);
-  grid->SetCells(VTK_TETRA, cells);
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(grid);
-  locator->BuildLocator();
+  vtk_->grid->SetPoints(vertices);
+  vtk_->grid->SetCells(VTK_TETRA, cells);
+  vtk_->locator->SetDataSet(vtk_->grid);
+  vtk_->locator->BuildLocator();
+}
 
-  vtkNew<vtkGenericCell> cell;
+PointLocator::~PointLocator() = default;
+
+std::vector<Location> PointLocator::locate(const std::vector<mesh::Point>& points) const {
   std::vector<Location> out;
   out.reserve(points.size());
   for (const mesh::Point& p : points) {
     double x[3] = {p.x(), p.y(), p.z()}, pcoords[3], weights[4], closest[3], distance2;
     int sub = 0;
-    vtkIdType tet = locator->FindCell(x, 0.0, cell.GetPointer(), pcoords, weights);
-    if (tet < 0) locator->FindClosestPoint(x, closest, cell.GetPointer(), tet, sub, distance2);
-    out.push_back({static_cast<int>(tet), barycentric(old_mesh, static_cast<int>(tet), p)});
+    vtkIdType tet = vtk_->locator->FindCell(x, 0.0, vtk_->cell.GetPointer(), pcoords, weights);
+    if (tet < 0) vtk_->locator->FindClosestPoint(x, closest, vtk_->cell.GetPointer(), tet, sub, distance2);
+    out.push_back({static_cast<int>(tet), barycentric(mesh_, static_cast<int>(tet), p)});
   }
   return out;
 }
@@ -64,7 +71,7 @@ std::vector<Location> locate(const mesh::TetMesh& old_mesh, const std::vector<me
 std::vector<mesh::Point> centroids(const mesh::TetMesh& m) {
   std::vector<mesh::Point> out;
   out.reserve(m.tets.size());
-  for (const mesh::Tet& t : m.tets) out.push_back(0.25 * (m.nodes[t[0]] + m.nodes[t[1]] + m.nodes[t[2]] + m.nodes[t[3]]));
+  for (int e = 0; e < m.tet_count(); ++e) out.push_back(mesh::centroid(m, e));
   return out;
 }
 
@@ -89,14 +96,13 @@ std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::v
     low[v] = high[v] = values[around[v].front()];
     for (int e : around[v]) low[v] = std::min(low[v], values[e]), high[v] = std::max(high[v], values[e]);
   }
-  std::vector<double> out;
-  out.reserve(centres.size());
+  // The gradient of each old element and its limiter factor.
+  std::vector<Eigen::Vector3d> gradient(old_mesh.tets.size());
+  std::vector<double> limit(old_mesh.tets.size(), 1.0);
   std::vector<int> patch;
-  for (std::size_t i = 0; i < centres.size(); ++i) {
-    const int e = centres_at[i].tet;
+  for (int e = 0; e < old_mesh.tet_count(); ++e) {
     const mesh::Point& c = old_centres[e];
-    // Gradient: least squares over the elements sharing a node with e,
-    // min Σ_n (f_n − f_e − g·(c_n − c_e))².
+    // Least squares over the elements sharing a node with e: min Σ_n (f_n − f_e − g·(c_n − c_e))².
     patch.clear();
     for (int v : old_mesh.tets[e]) patch.insert(patch.end(), around[v].begin(), around[v].end());
     std::sort(patch.begin(), patch.end());
@@ -108,18 +114,23 @@ std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::v
       normal += d * d.transpose();
       rhs += (values[n] - values[e]) * d;
     }
-    Eigen::Vector3d gradient = Eigen::Vector3d::Zero();
+    Eigen::Vector3d& g = gradient[e];
+    g.setZero();
     const Eigen::LDLT<Eigen::Matrix3d> fit(normal);
-    if (fit.info() == Eigen::Success && fit.vectorD().minCoeff() > 1e-9 * normal.trace()) gradient = fit.solve(rhs);
+    if (fit.info() == Eigen::Success && fit.vectorD().minCoeff() > 1e-9 * normal.trace()) g = fit.solve(rhs);
     // Vertex-based limiter (Barth-Jespersen as in Kuzmin 2010): the value the
     // gradient gives at each vertex stays within the range of the elements around it.
-    double limit = 1.0;
     for (int v : old_mesh.tets[e]) {
-      const double rise = gradient.dot(old_mesh.nodes[v] - c);
-      if (rise > 0.0) limit = std::min(limit, (high[v] - values[e]) / rise);
-      else if (rise < 0.0) limit = std::min(limit, (low[v] - values[e]) / rise);
+      const double rise = g.dot(old_mesh.nodes[v] - c);
+      if (rise > 0.0) limit[e] = std::min(limit[e], (high[v] - values[e]) / rise);
+      else if (rise < 0.0) limit[e] = std::min(limit[e], (low[v] - values[e]) / rise);
     }
-    out.push_back(values[e] + limit * gradient.dot(centres[i] - c));
+  }
+  std::vector<double> out;
+  out.reserve(centres.size());
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    const int e = centres_at[i].tet;
+    out.push_back(values[e] + limit[e] * gradient[e].dot(centres[i] - old_centres[e]));
   }
   return out;
 }

@@ -2,6 +2,8 @@
 
 #include "anvil/mesh/tet_geometry.h"
 
+#include <algorithm>
+
 namespace anvil::remesh {
 
 QualityReport assess_quality(const mesh::TetMesh& mesh, const mesh::MeshRange& range, const Eigen::VectorXd& nodal,
@@ -12,15 +14,17 @@ QualityReport assess_quality(const mesh::TetMesh& mesh, const mesh::MeshRange& r
     const mesh::Tet& t = mesh.tets[e];
     const double q = mesh::quality(mesh, e);
     if (q < threshold) ++r.below;
-    if (q < r.worst) {
-      r.worst = q;
-      r.worst_tet = e - range.first_tet;
-      r.worst_at = 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
-    }
+    if (q < r.worst) r.worst = q, r.worst_tet = e - range.first_tet, r.worst_at = mesh::centroid(mesh, e);
     const double next = mesh::quality(moved(t[0]), moved(t[1]), moved(t[2]), moved(t[3]));
     if (next < r.predicted_worst) r.predicted_worst = next, r.predicted_tet = e - range.first_tet;
   }
   return r;
+}
+
+double worst_quality(const mesh::TetMesh& m) {
+  double worst = 1.0;
+  for (int e = 0; e < m.tet_count(); ++e) worst = std::min(worst, mesh::quality(m, e));
+  return worst;
 }
 
 } // namespace anvil::remesh

@@ -20,9 +20,7 @@ int axis_of(const mesh::Point& normal) {
 std::optional<mesh::Point> common_normal(const mesh::TetMesh& mesh, const std::vector<int>& faces) {
   std::optional<mesh::Point> normal;
   for (int f : faces) {
-    const auto& t = mesh.boundary_faces[f];
-    const mesh::Point n =
-        (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]).normalized();
+    const mesh::Point n = mesh::area_vector(mesh, mesh.boundary_faces[f]).normalized();
     if (!normal) normal = n;
     else if (normal->dot(n) < 1.0 - 1e-6) return std::nullopt;
   }
@@ -96,8 +94,7 @@ ImposedConditions impose(const mesh::TetMesh& mesh, const std::vector<BoundaryCo
       // Constant traction on a linear triangle: ∫ T N_a dA = T A / 3 per vertex.
       for (int f : faces) {
         const auto& t = mesh.boundary_faces[f];
-        const mesh::Point area_normal =
-            0.5 * (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]);
+        const mesh::Point area_normal = mesh::area_vector(mesh, t);
         const Eigen::Vector3d force =
             bc.kind == BoundaryKind::traction ? Eigen::Vector3d(bc.traction * area_normal.norm()) : Eigen::Vector3d(-bc.pressure * area_normal);
         for (int v : t) out.nodal_forces.segment<3>(kDofsPerNode * v) += force / 3.0;

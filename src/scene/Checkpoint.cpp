@@ -201,6 +201,16 @@ RunState read_checkpoint(const std::string& path) {
       s.equivalent_strain.size() != s.mesh.tets.size() ||
       (!s.elastic_stress.empty() && s.elastic_stress.size() != 6 * s.mesh.tets.size()) || s.mesh.boundary_tags.size() != s.mesh.boundary_faces.size())
     throw InputError(path + ": checkpoint arrays do not match the mesh");
+  // The bodies follow one another and make up the whole mesh.
+  mesh::MeshRange end;
+  for (const mesh::MeshRange& r : s.bodies) {
+    if (r.first_node != end.first_node || r.first_tet != end.first_tet || r.first_face != end.first_face)
+      throw InputError(path + ": checkpoint body ranges do not follow one another");
+    end = {r.first_node + r.node_count, 0, r.first_tet + r.tet_count, 0, r.first_face + r.face_count, 0};
+  }
+  if (end.first_node != s.mesh.node_count() || end.first_tet != s.mesh.tet_count() ||
+      end.first_face != static_cast<int>(s.mesh.boundary_faces.size()))
+    throw InputError(path + ": checkpoint body ranges do not cover the mesh");
   return s;
 }
 

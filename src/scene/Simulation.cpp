@@ -144,7 +144,7 @@ struct Body {
   ImposedConditions initial_imposed;
   mesh::MeshRange range;
   double initial_volume = 0.0; ///< mm³, of the mesh as built
-  double element_size = 0.0;   ///< mm, mean boundary edge of the mesh as built
+  double remesh_size = 0.0;    ///< mm, target edge of a remesh: the case's, else the mean boundary edge as built
 };
 
 /// The load surfaces of loads.csv: the dies, then the velocity conditions.
@@ -275,7 +275,7 @@ void Run::setup() {
       body.initial_imposed = impose(part, body.conditions);
     }
     body.initial_volume = mesh::volume(part);
-    body.element_size = mean_boundary_edge(part);
+    body.remesh_size = case_.remeshing.element_size > 0.0 ? case_.remeshing.element_size : mean_boundary_edge(part);
     body.range = mesh::append(initial, part);
     bodies_.push_back(std::move(body));
   }
@@ -315,11 +315,11 @@ void Run::setup() {
     if (state_.dies.size() != dies_.size())
       throw InputError("checkpoint: " + std::to_string(state_.dies.size()) + " dies, the case has " +
                        std::to_string(dies_.size()));
+    // Until a remesh the bodies keep the meshes the case builds.
     bool same_bodies = state_.bodies.size() == bodies_.size();
-    for (std::size_t b = 0; same_bodies && b < bodies_.size(); ++b)
-      same_bodies = state_.remeshes.empty() ? state_.bodies[b].node_count == bodies_[b].range.node_count &&
-                                                  state_.bodies[b].tet_count == bodies_[b].range.tet_count
-                                            : state_.bodies[b].first_node + state_.bodies[b].node_count <= state_.mesh.node_count();
+    for (std::size_t b = 0; same_bodies && state_.remeshes.empty() && b < bodies_.size(); ++b)
+      same_bodies = state_.bodies[b].node_count == bodies_[b].range.node_count &&
+                    state_.bodies[b].tet_count == bodies_[b].range.tet_count;
     if (!same_bodies) throw InputError("checkpoint: the bodies do not match the case's (was the case changed?)");
     if (carries_stress != !state_.elastic_stress.empty())
       throw InputError("checkpoint: elastic stresses do not match the case's bodies (was the case changed?)");
@@ -770,16 +770,16 @@ std::vector<std::pair<int, std::string>> Run::remesh_triggers(double dt) {
       std::snprintf(why, sizeof why, "element %d would invert in the next increment", q.predicted_tet + 1);
     else if (spec.every > 0 && state_.increment % spec.every == 0)
       std::snprintf(why, sizeof why, "every %d increments", spec.every);
-    else {
-      const double size = spec.element_size > 0.0 ? spec.element_size : body.element_size;
-      const mesh::TetMesh part = mesh::extract(state_.mesh, body.range);
-      for (std::size_t d = 0; d < dies_.size() && !why[0]; ++d) {
-        std::vector<mesh::Point> vertices = dies_[d].surface->triangles().vertices;
-        for (mesh::Point& x : vertices) x += state_.dies[d].displacement;
-        const double depth = remesh::die_feature_depth(part, vertices);
-        if (depth > spec.die_penetration * size)
-          std::snprintf(why, sizeof why, "a vertex of die '%s' is %.3g mm inside", dies_[d].name.c_str(), depth);
+    else if (!dies_.empty()) {
+      std::vector<std::vector<mesh::Point>> die_vertices;
+      for (std::size_t d = 0; d < dies_.size(); ++d) {
+        die_vertices.push_back(dies_[d].surface->triangles().vertices);
+        for (mesh::Point& x : die_vertices.back()) x += state_.dies[d].displacement;
       }
+      const std::vector<double> depth = remesh::die_feature_depths(state_.mesh, body.range, die_vertices);
+      for (std::size_t d = 0; d < dies_.size() && !why[0]; ++d)
+        if (depth[d] > spec.die_penetration * body.remesh_size)
+          std::snprintf(why, sizeof why, "a vertex of die '%s' is %.3g mm inside", dies_[d].name.c_str(), depth[d]);
     }
     if (why[0]) due.emplace_back(int(b), why);
   }
@@ -789,61 +789,58 @@ std::vector<std::pair<int, std::string>> Run::remesh_triggers(double dt) {
 void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
   Timers::Scope scope(timers_, "remeshing");
   const RemeshSpec& spec = case_.remeshing;
-  const mesh::TetMesh old_mesh = state_.mesh;
-  const fem::BodyUnknowns old_unknowns = state_.unknowns;
+  const bool carries_stress = !state_.elastic_stress.empty();
   mesh::TetMesh next;
   std::vector<mesh::MeshRange> ranges;
-  std::vector<Eigen::VectorXd> nodal;
-  std::vector<double> strain, stress;
+  std::vector<double> nodal, strain, stress;
+  auto append_values = [](std::vector<double>& to, const double* first, std::size_t count) {
+    to.insert(to.end(), first, first + count);
+  };
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Clock::time_point start = Clock::now();
     const mesh::MeshRange& range = state_.bodies[b];
-    const mesh::TetMesh part = mesh::extract(old_mesh, range);
-    const Eigen::VectorXd part_nodal = old_unknowns.nodal.segment(4 * range.first_node, 4 * range.node_count);
+    const mesh::TetMesh part = mesh::extract(state_.mesh, range);
+    const double* part_nodal = state_.unknowns.nodal.data() + 4 * range.first_node;
     const std::vector<double> part_strain(state_.equivalent_strain.begin() + range.first_tet,
                                           state_.equivalent_strain.begin() + range.first_tet + range.tet_count);
     const auto due = std::find_if(which.begin(), which.end(), [&](const auto& w) { return w.first == int(b); });
     if (due == which.end()) {
       ranges.push_back(mesh::append(next, part));
-      nodal.push_back(part_nodal);
-      strain.insert(strain.end(), part_strain.begin(), part_strain.end());
-      if (!state_.elastic_stress.empty())
-        stress.insert(stress.end(), state_.elastic_stress.begin() + 6 * range.first_tet,
-                      state_.elastic_stress.begin() + 6 * (range.first_tet + range.tet_count));
+      append_values(nodal, part_nodal, 4 * range.node_count);
+      append_values(strain, part_strain.data(), part_strain.size());
+      if (carries_stress) append_values(stress, &state_.elastic_stress[6 * range.first_tet], 6 * range.tet_count);
       continue;
     }
     remesh::RemeshSettings settings;
-    settings.edge_length = spec.element_size > 0.0 ? spec.element_size : bodies_[b].element_size;
+    settings.edge_length = bodies_[b].remesh_size;
     settings.feature_angle = spec.feature_angle;
     settings.iterations = spec.iterations;
     const mesh::TetMesh fresh = remesh::remesh_body(part, settings);
     // Nodal v and p interpolated: the next Newton's first guess. ε̄ by limited linear reconstruction.
-    nodal.push_back(remesh::interpolate_nodal(part, part_nodal, 4, remesh::locate(part, fresh.nodes)));
+    const remesh::PointLocator in_old(part);
+    const Eigen::VectorXd fresh_nodal = remesh::interpolate_nodal(
+        part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count), 4, in_old.locate(fresh.nodes));
     const std::vector<mesh::Point> centres = remesh::centroids(fresh);
-    const std::vector<double> fresh_strain =
-        remesh::transfer_element(part, part_strain, centres, remesh::locate(part, centres));
-    strain.insert(strain.end(), fresh_strain.begin(), fresh_strain.end());
-    if (!state_.elastic_stress.empty()) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // flowing body: none
+    const std::vector<double> fresh_strain = remesh::transfer_element(part, part_strain, centres, in_old.locate(centres));
     ranges.push_back(mesh::append(next, fresh));
+    append_values(nodal, fresh_nodal.data(), fresh_nodal.size());
+    append_values(strain, fresh_strain.data(), fresh_strain.size());
+    if (carries_stress) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // a flowing body carries none
 
     auto relative = [](double after, double before) { return before != 0.0 ? after / before - 1.0 : after - before; };
-    auto worst = [](const mesh::TetMesh& m) {
-      double q = 1.0;
-      for (int e = 0; e < m.tet_count(); ++e) q = std::min(q, mesh::quality(m, e));
-      return q;
-    };
+    const double volume_before = mesh::volume(part), volume_after = mesh::volume(fresh);
     const RemeshRecord record{state_.increment,
                               int(b),
                               part.node_count(),
                               fresh.node_count(),
-                              worst(part),
-                              worst(fresh),
-                              relative(mesh::volume(fresh), mesh::volume(part)),
+                              remesh::worst_quality(part),
+                              remesh::worst_quality(fresh),
+                              relative(volume_after, volume_before),
                               relative(remesh::integral(fresh, fresh_strain), remesh::integral(part, part_strain)),
                               relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
                                        *std::max_element(part_strain.begin(), part_strain.end())),
                               seconds_since(start)};
-    state_.volume.remeshing += mesh::volume(fresh) - mesh::volume(part);
+    state_.volume.remeshing += volume_after - volume_before;
     state_.remeshes.push_back(record);
     log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm; worst quality %.3f -> %.3f; "
               "volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
@@ -852,14 +849,10 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
               100.0 * record.volume_change, 100.0 * record.strain_integral_change, 100.0 * record.strain_max_change,
               record.seconds);
   }
-  Eigen::Index size = 0;
-  for (const Eigen::VectorXd& v : nodal) size += v.size();
-  state_.unknowns.nodal.resize(size);
-  size = 0;
-  for (const Eigen::VectorXd& v : nodal) state_.unknowns.nodal.segment(size, v.size()) = v, size += v.size();
+  state_.unknowns.nodal = Eigen::Map<const Eigen::VectorXd>(nodal.data(), static_cast<Eigen::Index>(nodal.size()));
   state_.unknowns.bubble = Eigen::VectorXd::Zero(3 * next.tet_count()); // condensed per element: a zero guess
   state_.mesh = std::move(next);
-  state_.bodies = ranges;
+  state_.bodies = std::move(ranges);
   state_.equivalent_strain = std::move(strain);
   state_.elastic_stress = std::move(stress);
   adopt_mesh();

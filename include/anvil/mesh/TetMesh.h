@@ -28,6 +28,12 @@ struct TetMesh {
   int tet_count() const { return static_cast<int>(tets.size()); }
 };
 
+/// Area vector of a face: ½ (x1−x0)×(x2−x0), along the outward normal of a
+/// boundary face, of length its area (mm²).
+inline Point area_vector(const TetMesh& mesh, const Triangle& face) {
+  return 0.5 * (mesh.nodes[face[1]] - mesh.nodes[face[0]]).cross(mesh.nodes[face[2]] - mesh.nodes[face[0]]);
+}
+
 /// Fills mesh.boundary_faces from the tets (outward orientation) and gives each
 /// face the tag of the matching triangle in `tagged` (any vertex order), else 0.
 /// Triangles of `tagged` that are not on the boundary (internal surfaces) are ignored.

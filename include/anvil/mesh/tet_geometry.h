@@ -14,6 +14,11 @@ inline double signed_volume(const TetMesh& mesh, int tet) {
   return signed_volume(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]);
 }
 
+inline Point centroid(const TetMesh& mesh, int tet) {
+  const Tet& t = mesh.tets[tet];
+  return 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
+}
+
 /// Volume-edge ratio 6√2 V / l_rms³: 1 for the regular tet, → 0 when flat,
 /// negative when inverted. Scale invariant. This is the quality measure Anvil reports.
 double quality(const Point& x0, const Point& x1, const Point& x2, const Point& x3);

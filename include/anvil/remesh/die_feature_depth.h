@@ -9,9 +9,10 @@
 
 namespace anvil::remesh {
 
-/// Deepest penetration (mm, ≥ 0) of the points `die_vertices` into the body
-/// `body` (one body's mesh): the distance to its surface of those inside it.
-/// 0 when none is inside.
-double die_feature_depth(const mesh::TetMesh& body, const std::vector<mesh::Point>& die_vertices);
+/// For each die (its vertices, in place), the deepest penetration (mm, ≥ 0)
+/// of its vertices into the body `body` of `mesh`: the distance to the
+/// body's surface of those inside it; 0 when none is inside.
+std::vector<double> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
+                                       const std::vector<std::vector<mesh::Point>>& die_vertices);
 
 } // namespace anvil::remesh

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace anvil::remesh {
@@ -18,8 +19,21 @@ struct Location {
   std::array<double, 4> weights;
 };
 
-/// Locates every point of `points` in `old_mesh` (a VTK static cell locator).
-std::vector<Location> locate(const mesh::TetMesh& old_mesh, const std::vector<mesh::Point>& points);
+/// Finds points in an old mesh: a VTK static cell locator built once.
+class PointLocator {
+public:
+  explicit PointLocator(const mesh::TetMesh& old_mesh); ///< keeps a reference: `old_mesh` must outlive it
+  ~PointLocator();
+  PointLocator(const PointLocator&) = delete;
+  PointLocator& operator=(const PointLocator&) = delete;
+
+  std::vector<Location> locate(const std::vector<mesh::Point>& points) const;
+
+private:
+  struct Vtk;
+  const mesh::TetMesh& mesh_;
+  std::unique_ptr<Vtk> vtk_;
+};
 
 /// Centroids of the tets of `m`.
 std::vector<mesh::Point> centroids(const mesh::TetMesh& m);

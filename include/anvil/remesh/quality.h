@@ -23,4 +23,7 @@ struct QualityReport {
 QualityReport assess_quality(const mesh::TetMesh& mesh, const mesh::MeshRange& range, const Eigen::VectorXd& nodal,
                              double time_step, double threshold);
 
+/// Smallest quality over all tets of `m`.
+double worst_quality(const mesh::TetMesh& m);
+
 } // namespace anvil::remesh

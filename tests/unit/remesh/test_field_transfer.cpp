@@ -16,7 +16,8 @@ TEST_CASE("Linear nodal fields are interpolated exactly, element fields reconstr
   const auto linear = [](const mesh::Point& x) { return Eigen::Vector2d(1.0 + 2.0 * x.x() - x.y(), 3.0 * x.z()); };
   Eigen::VectorXd old_values(2 * old_mesh.node_count());
   for (int i = 0; i < old_mesh.node_count(); ++i) old_values.segment<2>(2 * i) = linear(old_mesh.nodes[i]);
-  const std::vector<remesh::Location> at = remesh::locate(old_mesh, new_mesh.nodes);
+  const remesh::PointLocator in_old(old_mesh);
+  const std::vector<remesh::Location> at = in_old.locate(new_mesh.nodes);
   const Eigen::VectorXd values = remesh::interpolate_nodal(old_mesh, old_values, 2, at);
   for (int i = 0; i < new_mesh.node_count(); ++i) {
     const Eigen::Vector2d expected = linear(new_mesh.nodes[i]);
@@ -31,7 +32,7 @@ TEST_CASE("Linear nodal fields are interpolated exactly, element fields reconstr
   std::vector<double> f;
   for (const mesh::Point& c : old_centres) f.push_back(c.x());
   const std::vector<double> moved =
-      remesh::transfer_element(old_mesh, f, new_centres, remesh::locate(old_mesh, new_centres));
+      remesh::transfer_element(old_mesh, f, new_centres, in_old.locate(new_centres));
   int exact = 0;
   for (std::size_t e = 0; e < moved.size(); ++e) {
     CHECK(moved[e] >= *std::min_element(f.begin(), f.end()) - 1e-12);
