@@ -26,6 +26,7 @@ namespace {
 namespace PMP = CGAL::Polygon_mesh_processing;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point3 = Kernel::Point_3;
+using Vector3 = Kernel::Vector_3;
 using Mesh = CGAL::Surface_mesh<Point3>;
 using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
@@ -80,13 +81,16 @@ private:
 
 } // namespace
 
-std::unique_ptr<DieSurface> read_stl_surface(const std::string& path, const std::string& source) {
+std::unique_ptr<DieSurface> read_stl_surface(const std::string& path, const std::string& source,
+                                             const Eigen::Vector3d& offset) {
   const std::string at = source + ": STL die '" + path + "'";
   if (!std::filesystem::exists(path)) throw InputError(at + ": file not found");
   std::vector<Point3> points;
   std::vector<std::array<std::size_t, 3>> triangles;
   if (!CGAL::IO::read_polygon_soup(path, points, triangles) || triangles.empty())
     throw InputError(at + ": not a readable STL surface (ASCII or binary) with at least one facet");
+  const Vector3 shift(offset.x(), offset.y(), offset.z());
+  for (Point3& p : points) p = p + shift;
   const std::size_t read = triangles.size();
   // Degenerate (zero-area, repeated-vertex) and duplicate facets are dropped and reported.
   std::vector<std::array<std::size_t, 3>> kept;

@@ -1,29 +1,38 @@
 #include "anvil/remesh/die_feature_depth.h"
 
 #include "anvil/contact/SurfaceSearch.h"
+#include "anvil/remesh/field_transfer.h"
 
 #include <algorithm>
-#include <memory>
 
 namespace anvil::remesh {
 
-std::vector<double> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
-                                       const std::vector<std::vector<mesh::Point>>& die_vertices) {
+std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
+                                           const std::vector<std::vector<mesh::Point>>& die_vertices) {
   mesh::Point low = mesh.nodes[body.first_node], high = low;
   for (int i = body.first_node; i < body.first_node + body.node_count; ++i)
     low = low.cwiseMin(mesh.nodes[i]), high = high.cwiseMax(mesh.nodes[i]);
+  // The vertices in the body's box, then those in one of its tets. The side
+  // of the closest surface facet is no inside test: next to an edge of the
+  // body the closest point is on two facets, and the wrong one says inside.
+  std::vector<mesh::Point> candidates;
+  std::vector<int> die_of;
+  for (std::size_t d = 0; d < die_vertices.size(); ++d)
+    for (const mesh::Point& x : die_vertices[d])
+      if ((x.array() > low.array()).all() && (x.array() < high.array()).all())
+        candidates.push_back(x), die_of.push_back(static_cast<int>(d));
+  std::vector<DieFeature> deepest(die_vertices.size());
+  if (candidates.empty()) return deepest;
+  const std::vector<Location> located = PointLocator(mesh).locate(candidates);
   const std::vector<mesh::Triangle> faces(mesh.boundary_faces.begin() + body.first_face,
                                           mesh.boundary_faces.begin() + body.first_face + body.face_count);
-  std::unique_ptr<contact::SurfaceSearch> surface; // built once, when a vertex is in the body's box
-  std::vector<double> deepest(die_vertices.size(), 0.0);
-  for (std::size_t d = 0; d < die_vertices.size(); ++d)
-    for (const mesh::Point& x : die_vertices[d]) {
-      if (!(x.array() > low.array()).all() || !(x.array() < high.array()).all()) continue;
-      if (!surface) surface = std::make_unique<contact::SurfaceSearch>(mesh.nodes, faces);
-      const contact::SurfaceSearch::Closest c = surface->closest(x);
-      if ((x - c.point).dot(mesh::area_vector(mesh, faces[c.face])) < 0.0)
-        deepest[d] = std::max(deepest[d], (x - c.point).norm());
-    }
+  const contact::SurfaceSearch surface(mesh.nodes, faces);
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const Location& at = located[k];
+    if (!at.inside || at.tet < body.first_tet || at.tet >= body.first_tet + body.tet_count) continue;
+    const double depth = (candidates[k] - surface.closest(candidates[k]).point).norm();
+    if (depth > deepest[die_of[k]].depth) deepest[die_of[k]] = {depth, candidates[k]};
+  }
   return deepest;
 }
 

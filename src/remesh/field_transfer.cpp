@@ -62,8 +62,9 @@ std::vector<Location> PointLocator::locate(const std::vector<mesh::Point>& point
     double x[3] = {p.x(), p.y(), p.z()}, pcoords[3], weights[4], closest[3], distance2;
     int sub = 0;
     vtkIdType tet = vtk_->locator->FindCell(x, 0.0, vtk_->cell.GetPointer(), pcoords, weights);
-    if (tet < 0) vtk_->locator->FindClosestPoint(x, closest, vtk_->cell.GetPointer(), tet, sub, distance2);
-    out.push_back({static_cast<int>(tet), barycentric(mesh_, static_cast<int>(tet), p)});
+    const bool inside = tet >= 0;
+    if (!inside) vtk_->locator->FindClosestPoint(x, closest, vtk_->cell.GetPointer(), tet, sub, distance2);
+    out.push_back({static_cast<int>(tet), barycentric(mesh_, static_cast<int>(tet), p), inside});
   }
   return out;
 }

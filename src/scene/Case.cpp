@@ -118,8 +118,11 @@ void read_dies(const CheckedYaml& doc, Case& c) {
     check_unique_name(doc, c.dies, n, shown, "die");
     if (static_cast<bool>(n["stl"]) == static_cast<bool>(n["plane"]))
       doc.fail(n, shown, "give exactly one surface: 'stl' (a file) or 'plane'");
-    if (n["stl"]) d.stl_file = relative_to(doc.path(), n["stl"].Scalar());
-    else {
+    if (n["stl"]) {
+      d.stl_file = relative_to(doc.path(), n["stl"].Scalar());
+      if (n["offset"]) d.stl_offset = doc.vector(n, "offset", "dies[].offset");
+    } else {
+      doc.forbid(n, "offset", shown, "a plane die (its 'point' places it)");
       const YAML::Node plane = n["plane"];
       std::tie(d.plane_point, d.plane_normal) = read_plane(doc, plane, "dies[].plane", shown + ".plane");
       d.plane_normal.normalize();

@@ -35,7 +35,7 @@ Die build_die(const DieSpec& spec, double body_size) {
   Die d;
   d.name = spec.name;
   d.friction = spec.friction;
-  if (!spec.stl_file.empty()) d.surface = die::read_stl_surface(spec.stl_file, spec.source);
+  if (!spec.stl_file.empty()) d.surface = die::read_stl_surface(spec.stl_file, spec.source, spec.stl_offset);
   else
     d.surface = std::make_unique<die::PlaneSurface>(
         spec.plane_point, spec.plane_normal, spec.plane_half_size > 0.0 ? spec.plane_half_size : body_size);

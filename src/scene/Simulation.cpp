@@ -778,10 +778,13 @@ std::vector<std::pair<int, std::string>> Run::remesh_triggers(double dt) {
         die_vertices.push_back(dies_[d].surface->triangles().vertices);
         for (mesh::Point& x : die_vertices.back()) x += state_.dies[d].displacement;
       }
-      const std::vector<double> depth = remesh::die_feature_depths(state_.mesh, body.range, die_vertices);
+      const std::vector<remesh::DieFeature> inside = remesh::die_feature_depths(state_.mesh, body.range, die_vertices);
       for (std::size_t d = 0; d < dies_.size() && !why[0]; ++d)
-        if (depth[d] > spec.die_penetration * body.remesh_size)
-          std::snprintf(why, sizeof why, "a vertex of die '%s' is %.3g mm inside", dies_[d].name.c_str(), depth[d]);
+        if (inside[d].depth > spec.die_penetration * body.remesh_size) {
+          const mesh::Point& x = inside[d].vertex;
+          std::snprintf(why, sizeof why, "the vertex of die '%s' at %.3g, %.3g, %.3g mm is %.3g mm inside",
+                        dies_[d].name.c_str(), x.x(), x.y(), x.z(), inside[d].depth);
+        }
     }
     if (why[0]) due.emplace_back(int(b), why);
   }

@@ -126,6 +126,8 @@ const std::vector<KeySpec>& case_schema() {
       key("dies", T::list, "rigid dies: a surface, a press motion, friction with the body"),
       required(key("dies[].name", T::string, "name shown in loads.csv, the log and the VTK series")),
       key("dies[].stl", T::string, "die surface (STL, ASCII or binary), relative to the case file; normals out of the die"),
+      with_default(key("dies[].offset", T::vector3, "STL dies: moves the surface from the file's coordinates to the "
+                       "die's start position", "mm"), "[0, 0, 0]"),
       key("dies[].plane", T::map, "an analytic flat die instead of an STL surface"),
       required(key("dies[].plane.point", T::vector3, "a point of the die face", "mm")),
       required(key("dies[].plane.normal", T::vector3, "normal out of the die, towards the body (need not be unit)")),

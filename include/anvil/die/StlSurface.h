@@ -9,11 +9,13 @@
 
 namespace anvil::die {
 
-/// Reads `path`; `source` ("case.yaml:12") names the referring line in errors.
-/// Closed surfaces are oriented outwards; open ones keep their facet order
+/// Reads `path` and moves it by `offset` (mm: the die's start position when
+/// the file holds it at another); `source` ("case.yaml:12") names the
+/// referring line in errors. Closed surfaces are oriented outwards; open ones keep their facet order
 /// (normals must point out of the die). Degenerate facets are reported in the
 /// log and dropped; a surface that is not a consistent triangle mesh is an
 /// InputError.
-std::unique_ptr<DieSurface> read_stl_surface(const std::string& path, const std::string& source);
+std::unique_ptr<DieSurface> read_stl_surface(const std::string& path, const std::string& source,
+                                             const Eigen::Vector3d& offset = Eigen::Vector3d::Zero());
 
 } // namespace anvil::die

@@ -17,6 +17,7 @@ namespace anvil::remesh {
 struct Location {
   int tet;
   std::array<double, 4> weights;
+  bool inside; ///< the point is in the tet (not the closest tet to a point outside the mesh)
 };
 
 /// Finds points in an old mesh: a VTK static cell locator built once.

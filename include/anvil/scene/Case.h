@@ -33,6 +33,7 @@ struct BodySpec {
 struct DieSpec {
   std::string name;
   std::string stl_file;            ///< STL surface (die frame = file coordinates), or empty for a plane
+  Eigen::Vector3d stl_offset = Eigen::Vector3d::Zero(); ///< mm, moves the STL surface to its start position
   mesh::Point plane_point = mesh::Point::Zero();
   Eigen::Vector3d plane_normal = Eigen::Vector3d::UnitZ(); ///< out of the die, towards the body
   double plane_half_size = 0.0;    ///< mm, display only; 0 = twice the body size
