@@ -183,6 +183,11 @@ private:
   std::vector<std::pair<int, std::string>> remesh_triggers(double dt);
   /// Remeshes the bodies of `which`, transfers the fields, adopts the new mesh.
   void remesh(const std::vector<std::pair<int, std::string>>& which);
+  /// Boundary nodes of a new body mesh that lie inside a die, put onto its
+  /// surface; returns how many and the deepest (mm). Nodes on a symmetry
+  /// plane of `body` (as it lies in `old`, its mesh before) stay on it.
+  std::pair<int, double> put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body,
+                                       double element_size) const;
   void log_header() const;
   double choose_time_step(double nominal);
   bool try_increment(double time_step, solver::NewtonReport& report);
@@ -358,6 +363,10 @@ void Run::adopt_mesh() {
     append(imposed_, remeshed ? impose(mesh::extract(state_.mesh, body.range), body.conditions) : body.initial_imposed,
            body.range.first_node);
   }
+  // Die contact candidates name nodes of the mesh they were found on: after
+  // a remesh they are forgotten (the next increment searches again), or the
+  // output would mark, and write past, nodes of the old numbering.
+  contact_ = contact::RigidContact{};
   if (!case_.contact_pairs.empty()) {
     std::vector<contact::BodyPair> pairs;
     for (const ContactPairSpec& p : case_.contact_pairs)
@@ -820,7 +829,10 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     settings.edge_length = bodies_[b].remesh_size;
     settings.feature_angle = spec.feature_angle;
     settings.iterations = spec.iterations;
-    const mesh::TetMesh fresh = remesh::remesh_body(part, settings);
+    mesh::TetMesh fresh = remesh::remesh_body(part, settings);
+    const double volume_before = mesh::volume(part), volume_remeshed = mesh::volume(fresh);
+    const auto [put_back, deepest] = put_onto_dies(fresh, part, int(b), settings.edge_length);
+    const double volume_after = mesh::volume(fresh);
     // Nodal v and p interpolated: the next Newton's first guess. ε̄ by limited linear reconstruction.
     const remesh::PointLocator in_old(part);
     const Eigen::VectorXd fresh_nodal = remesh::interpolate_nodal(
@@ -833,19 +845,21 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     if (carries_stress) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // a flowing body carries none
 
     auto relative = [](double after, double before) { return before != 0.0 ? after / before - 1.0 : after - before; };
-    const double volume_before = mesh::volume(part), volume_after = mesh::volume(fresh);
     const RemeshRecord record{state_.increment,
                               int(b),
                               part.node_count(),
                               fresh.node_count(),
                               remesh::worst_quality(part),
                               remesh::worst_quality(fresh),
-                              relative(volume_after, volume_before),
+                              relative(volume_remeshed, volume_before),
                               relative(remesh::integral(fresh, fresh_strain), remesh::integral(part, part_strain)),
                               relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
                                        *std::max_element(part_strain.begin(), part_strain.end())),
                               seconds_since(start)};
-    state_.volume.remeshing += volume_after - volume_before;
+    // What the remesh changed, and apart, the die overlap taken off: a
+    // contact projection, as after an increment.
+    state_.volume.remeshing += volume_remeshed - volume_before;
+    state_.volume.projection += volume_after - volume_remeshed;
     state_.remeshes.push_back(record);
     log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm; worst quality %.3f -> %.3f; "
               "volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
@@ -853,6 +867,9 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
               fresh.tet_count(), settings.edge_length, record.worst_quality_before, record.worst_quality_after,
               100.0 * record.volume_change, 100.0 * record.strain_integral_change, 100.0 * record.strain_max_change,
               record.seconds);
+    if (put_back > 0)
+      log::info("    %d new boundary nodes were inside a die (deepest %.3g mm), put onto its surface: volume %+.4f%% "
+                "(contact projection)", put_back, deepest, 100.0 * relative(volume_after, volume_remeshed));
   }
   state_.unknowns.nodal = Eigen::Map<const Eigen::VectorXd>(nodal.data(), static_cast<Eigen::Index>(nodal.size()));
   state_.unknowns.bubble = Eigen::VectorXd::Zero(3 * next.tet_count()); // condensed per element: a zero guess
@@ -861,6 +878,49 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
   state_.equivalent_strain = std::move(strain);
   state_.elastic_stress = std::move(stress);
   adopt_mesh();
+}
+
+std::pair<int, double> Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body,
+                                          double element_size) const {
+  // The new boundary lies on the old one, and nodal contact lets a die
+  // corner sink between nodes: new nodes there start inside the die, and the
+  // next increment would have to push them out at once (a jump of the
+  // active set and of the load). They are put onto the die now, as the
+  // update puts contact nodes. Deeper than an element is not this body's
+  // contact (the far side of an open die surface).
+  std::vector<char> on_boundary(fresh.nodes.size(), 0);
+  for (const mesh::Triangle& f : fresh.boundary_faces)
+    for (int node : f) on_boundary[node] = 1;
+  // The body's symmetry planes, axis-aligned (BoundaryCondition): the axis
+  // and the coordinate, from the old mesh, whose faces were checked planar.
+  std::vector<std::pair<int, double>> symmetry_planes;
+  for (const BoundaryCondition& bc : bodies_[body].conditions) {
+    if (bc.kind != BoundaryKind::symmetry) continue;
+    const std::vector<int> faces = select_faces(old, bc.faces);
+    if (faces.empty()) continue;
+    const mesh::Triangle& face = old.boundary_faces[faces.front()];
+    int axis = 0;
+    mesh::area_vector(old, face).cwiseAbs().maxCoeff(&axis);
+    symmetry_planes.emplace_back(axis, old.nodes[face[0]][axis]);
+  }
+  const double on_plane = 1e-6 * element_size;
+  int moved = 0;
+  double deepest = 0.0;
+  for (std::size_t i = 0; i < fresh.nodes.size(); ++i) {
+    if (!on_boundary[i]) continue;
+    for (std::size_t d = 0; d < dies_.size(); ++d) {
+      const Eigen::Vector3d& shift = state_.dies[d].displacement;
+      const die::SurfaceProjection p = dies_[d].surface->project(fresh.nodes[i] - shift);
+      if (p.distance >= 0.0 || p.distance < -element_size) continue;
+      mesh::Point onto = p.point + shift;
+      for (const auto& [axis, coordinate] : symmetry_planes)
+        if (std::abs(fresh.nodes[i][axis] - coordinate) <= on_plane) onto[axis] = coordinate;
+      fresh.nodes[i] = onto;
+      ++moved;
+      deepest = std::max(deepest, -p.distance);
+    }
+  }
+  return {moved, deepest};
 }
 
 void Run::execute() {
