@@ -42,6 +42,26 @@ std::set<int> curved_tags(const mesh::TetMesh& body, const std::vector<int>& pat
   return curved;
 }
 
+/// Tags whose faces all lie in one plane (a symmetry plane, an undeformed
+/// end face): the plane's unit normal and offset n·x.
+std::map<int, std::pair<mesh::Point, double>> flat_tags(const mesh::TetMesh& body) {
+  std::map<int, std::pair<mesh::Point, double>> plane;
+  std::set<int> not_flat;
+  for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
+    const int tag = body.boundary_tags[f];
+    const mesh::Triangle& t = body.boundary_faces[f];
+    const mesh::Point n = mesh::area_vector(body, t).normalized();
+    const auto [it, first] = plane.try_emplace(tag, n, n.dot(body.nodes[t[0]]));
+    if (first) continue;
+    const auto& [normal, offset] = it->second;
+    for (int v : t)
+      if (normal.dot(n) < 1.0 - 1e-9 || std::abs(normal.dot(body.nodes[v]) - offset) > 1e-9 * (1.0 + std::abs(offset)))
+        not_flat.insert(tag);
+  }
+  for (int tag : not_flat) plane.erase(tag);
+  return plane;
+}
+
 /// Moves the nodes inside curved patches (every face around them on one)
 /// along their normal by the one distance that gives `mesh` the volume
 /// `target`: the chords of a re-triangulated curved surface cut the old
@@ -128,6 +148,16 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
     for (int n : f) on_boundary[n] = 1;
   for (std::size_t n = 0; n < out.nodes.size(); ++n)
     if (on_boundary[n]) out.nodes[n] = old_surface.closest(out.nodes[n]).point;
+  // A node on the border of a flat patch may land on the curved face next
+  // to it (off a symmetry plane by 0.4 µm in the flash case, enough to make
+  // the plane's faces no longer coplanar): flat patches keep their nodes.
+  const auto planes = flat_tags(body);
+  for (std::size_t f = 0; f < out.boundary_faces.size(); ++f) {
+    const auto plane = planes.find(out.boundary_tags[f]);
+    if (plane == planes.end()) continue;
+    const auto& [normal, offset] = plane->second;
+    for (int v : out.boundary_faces[f]) out.nodes[v] -= (normal.dot(out.nodes[v]) - offset) * normal;
+  }
   restore_volume(out, mesh::volume(body), curved_tags(body, patch, tag_of_patch));
   mesh::validate(out, "remeshed body");
   return out;

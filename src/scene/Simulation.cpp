@@ -747,7 +747,8 @@ bool Run::update_geometry(double dt, std::string& failure) {
     const Eigen::Vector3d& shift = state_.dies[c.die].displacement;
     const die::SurfaceProjection p = dies_[c.die].surface->project(state_.mesh.nodes[c.node] - shift);
     if (contact_.pressure(int(i), state_.unknowns.nodal) > 0.0 || p.distance < 0.0)
-      state_.mesh.nodes[c.node] = p.point + shift;
+      for (int k = 0; k < 3; ++k) // along free directions only: a node on a symmetry plane stays on it
+        if (!imposed_.prescribed[4 * c.node + k]) state_.mesh.nodes[c.node][k] = p.point[k] + shift[k];
   }
   for (int e = 0; e < state_.mesh.tet_count(); ++e)
     if (mesh::signed_volume(state_.mesh, e) <= 0.0) {
