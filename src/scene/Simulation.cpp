@@ -888,10 +888,20 @@ std::pair<int, double> Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetM
   // next increment would have to push them out at once (a jump of the
   // active set and of the load). They are put onto the die now, as the
   // update puts contact nodes. Deeper than an element is not this body's
-  // contact (the far side of an open die surface).
+  // contact (the far side of an open die surface). A move that would leave an
+  // element around the node worse than the remeshing threshold (or than it
+  // was) is not made: that node is left to the next increment's contact.
   std::vector<char> on_boundary(fresh.nodes.size(), 0);
   for (const mesh::Triangle& f : fresh.boundary_faces)
     for (int node : f) on_boundary[node] = 1;
+  std::vector<std::vector<int>> tets_of(fresh.nodes.size());
+  for (int e = 0; e < fresh.tet_count(); ++e)
+    for (int v : fresh.tets[e]) tets_of[v].push_back(e);
+  auto worst_around = [&](std::size_t node) {
+    double worst = 1.0;
+    for (int e : tets_of[node]) worst = std::min(worst, mesh::quality(fresh, e));
+    return worst;
+  };
   // The body's symmetry planes, axis-aligned (BoundaryCondition): the axis
   // and the coordinate, from the old mesh, whose faces were checked planar.
   std::vector<std::pair<int, double>> symmetry_planes;
@@ -916,7 +926,13 @@ std::pair<int, double> Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetM
       mesh::Point onto = p.point + shift;
       for (const auto& [axis, coordinate] : symmetry_planes)
         if (std::abs(fresh.nodes[i][axis] - coordinate) <= on_plane) onto[axis] = coordinate;
+      const mesh::Point was = fresh.nodes[i];
+      const double floor = std::min(worst_around(i), case_.remeshing.quality);
       fresh.nodes[i] = onto;
+      if (worst_around(i) < floor) {
+        fresh.nodes[i] = was;
+        continue;
+      }
       ++moved;
       deepest = std::max(deepest, -p.distance);
     }
