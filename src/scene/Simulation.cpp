@@ -745,10 +745,23 @@ bool Run::update_geometry(double dt, std::string& failure) {
   for (std::size_t i = 0; i < contact_.candidates().size(); ++i) {
     const contact::ContactCandidate& c = contact_.candidates()[i];
     const Eigen::Vector3d& shift = state_.dies[c.die].displacement;
-    const die::SurfaceProjection p = dies_[c.die].surface->project(state_.mesh.nodes[c.node] - shift);
-    if (contact_.pressure(int(i), state_.unknowns.nodal) > 0.0 || p.distance < 0.0)
-      for (int k = 0; k < 3; ++k) // along free directions only: a node on a symmetry plane stays on it
-        if (!imposed_.prescribed[4 * c.node + k]) state_.mesh.nodes[c.node][k] = p.point[k] + shift[k];
+    die::SurfaceProjection p = dies_[c.die].surface->project(state_.mesh.nodes[c.node] - shift);
+    if (contact_.pressure(int(i), state_.unknowns.nodal) <= 0.0 && p.distance >= 0.0) continue;
+    // Along the node's free directions only (a node on a symmetry plane stays
+    // on it): the closest point, restricted, then again from there, which
+    // converges onto the surface within the plane or along the axis (a node
+    // on the axis under a cone's apex: by cos²α a pass).
+    mesh::Point& x = state_.mesh.nodes[c.node];
+    for (int pass = 0; pass < 20; ++pass) {
+      double moved = 0.0;
+      for (int k = 0; k < 3; ++k)
+        if (!imposed_.prescribed[4 * c.node + k]) {
+          moved = std::max(moved, std::abs(p.point[k] + shift[k] - x[k]));
+          x[k] = p.point[k] + shift[k];
+        }
+      if (moved <= 1e-9 * reference_length_) break;
+      p = dies_[c.die].surface->project(x - shift);
+    }
   }
   for (int e = 0; e < state_.mesh.tet_count(); ++e)
     if (mesh::signed_volume(state_.mesh, e) <= 0.0) {
