@@ -28,16 +28,6 @@ RemeshedRun run_remeshed(const std::string& case_file, const std::string& name) 
   return RemeshedRun{std::move(c), std::move(out), std::move(end)};
 }
 
-/// Each case runs once for both of its test cases below.
-const RemeshedRun& upsetting_75() {
-  static const RemeshedRun run = run_remeshed("cases/upsetting_75.yaml", "anvil_hard_upsetting_75"); // 50 s
-  return run;
-}
-const RemeshedRun& closed_die_flash() {
-  static const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash"); // 10 min
-  return run;
-}
-
 /// To the final stroke without an inverted element; every remesh keeps the
 /// volume (issue 5: below 0.1 % per remesh) and ∫ε̄ dV (within 2 %); a
 /// remesh for quality improves it.
@@ -54,14 +44,20 @@ void check_remeshes_keep_volume_and_strain(const RemeshedRun& run) {
 }
 
 /// Issue 5: the volume changes by less than 1 % over the run.
-void check_run_volume(const RemeshedRun& run) { CHECK(std::abs(run.out.summary_number("relative_change")) < 0.01); }
+void check_run_volume(const RemeshedRun& run, bool known_shortfall) {
+  const double change = std::abs(run.out.summary_number("relative_change"));
+  INFO("volume change over the run " << 100.0 * change << " %");
+  if (known_shortfall) CHECK_NOFAIL(change < 0.01);
+  else CHECK(change < 0.01);
+}
 
 /// Max ε̄ within 2 % across each remesh, and the load on `surface` just
 /// after it within 3 % of the straight line through the two loads before.
+/// Reported, not failing (CHECK_NOFAIL): no case meets them yet.
 void check_max_strain_and_load_continuity(const RemeshedRun& run, const std::string& surface) {
   for (const scene::RemeshRecord& r : run.end.remeshes) {
     INFO("remesh after increment " << r.increment);
-    CHECK(std::abs(r.strain_max_change) < 0.02);
+    CHECK_NOFAIL(std::abs(r.strain_max_change) < 0.02);
   }
   const std::vector<LoadRow> load = run.out.loads(surface);
   for (const scene::RemeshRecord& r : run.end.remeshes) {
@@ -70,38 +66,34 @@ void check_max_strain_and_load_continuity(const RemeshedRun& run, const std::str
     const LoadRow &a = load[k - 1], &b = load[k], &after = load[k + 1];
     const double predicted = b.force.z() + (b.force.z() - a.force.z()) / (b.stroke - a.stroke) * (after.stroke - b.stroke);
     INFO("remesh after increment " << r.increment << ": load " << after.force.z() << " N, trend " << predicted << " N");
-    CHECK(std::abs(after.force.z() / predicted - 1.0) < 0.03);
+    CHECK_NOFAIL(std::abs(after.force.z() / predicted - 1.0) < 0.03);
   }
 }
 
 } // namespace
 
+// Each case runs once (one test case: ctest runs every test case in its own
+// process). Known shortfalls, reported by every run (CHECK_NOFAIL) with the
+// issue's thresholds: max ε̄ −6.0 % and −7.7 % at h = 1.5 mm (the peak sits
+// in the flattened elements under the die, thinner than the new mesh's),
+// load after the second remesh 3.02 % off trend.
 TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[hard][remesh]") {
-  check_remeshes_keep_volume_and_strain(upsetting_75());
-  check_run_volume(upsetting_75());
-}
-
-// Known shortfalls, run and reported on every test run but not failing the
-// suite (Catch2 [!mayfail]); tolerances are the issue's. Measured at h = 1.5 mm:
-// max ε̄ −6.0 % and −7.7 % (the peak sits in the flattened elements under the
-// die, finer than the new mesh), load after the second remesh 3.02 % off trend.
-TEST_CASE("Upsetting to 75 %: max strain and load continuous across remeshes", "[hard][remesh][!mayfail]") {
-  check_max_strain_and_load_continuity(upsetting_75(), "top");
-}
-
-TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshes keep volume and strain integral",
-          "[hard][remesh]") {
-  check_remeshes_keep_volume_and_strain(closed_die_flash());
+  const RemeshedRun run = run_remeshed("cases/upsetting_75.yaml", "anvil_hard_upsetting_75"); // 50 s
+  check_remeshes_keep_volume_and_strain(run);
+  check_run_volume(run, false);
+  check_max_strain_and_load_continuity(run, "top");
 }
 
 // Known shortfalls, as above. Measured: max ε̄ down by up to 25 % at a
 // remesh (isotropic 1.05 mm elements replace the thin sheared layer at the
 // die fillets), the load just after a remesh up to 4.9 % off trend (8.7 %
 // at increments without a remesh, where contact events shorten increments),
-// and the volume −1.4 % at closure: the flash, one element thick, is
+// and the volume 0.7-1.4 % low at closure: the flash, one element thick, is
 // projected onto both dies faster than the compensation restores it.
-TEST_CASE("Closed-die forging with flash: volume over the run, max strain and load continuous across remeshes",
-          "[hard][remesh][!mayfail]") {
-  check_run_volume(closed_die_flash());
-  check_max_strain_and_load_continuity(closed_die_flash(), "upper");
+TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshes keep volume and strain integral",
+          "[hard][remesh]") {
+  const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash"); // 10 min
+  check_remeshes_keep_volume_and_strain(run);
+  check_run_volume(run, true);
+  check_max_strain_and_load_continuity(run, "upper");
 }
