@@ -781,6 +781,7 @@ bool Run::update_geometry(double dt, std::string& failure) {
 std::vector<std::pair<int, std::string>> Run::remesh_triggers(double dt) {
   const RemeshSpec& spec = case_.remeshing;
   std::vector<std::pair<int, std::string>> due;
+  std::vector<std::vector<mesh::Point>> die_vertices; // in place, gathered once when a body needs them
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
     if (body.law->is_elastic()) continue; // an elastic die keeps its mesh
@@ -796,8 +797,7 @@ std::vector<std::pair<int, std::string>> Run::remesh_triggers(double dt) {
     else if (spec.every > 0 && state_.increment % spec.every == 0)
       std::snprintf(why, sizeof why, "every %d increments", spec.every);
     else if (!dies_.empty()) {
-      std::vector<std::vector<mesh::Point>> die_vertices;
-      for (std::size_t d = 0; d < dies_.size(); ++d) {
+      for (std::size_t d = die_vertices.size(); d < dies_.size(); ++d) {
         die_vertices.push_back(dies_[d].surface->triangles().vertices);
         for (mesh::Point& x : die_vertices.back()) x += state_.dies[d].displacement;
       }

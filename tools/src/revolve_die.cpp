@@ -58,13 +58,12 @@ std::vector<Point2> rounded(const std::vector<Point2>& profile, double fillet) {
 }
 
 /// Volume between the lower die and its mirror, inside radius r_k of the
-/// profile (full revolution): 2π ∫ r (−2 z) dr, trapezoidal in r·z (exact
-/// for the polyline up to the r² z' term).
+/// profile (full revolution): 2π ∫ r (−2 z) dr, exact on each straight
+/// segment (r·z is quadratic there, Simpson's rule integrates it exactly).
 std::vector<double> enclosed_volumes(const std::vector<Point2>& profile) {
   std::vector<double> volume{0.0};
   for (std::size_t k = 1; k < profile.size(); ++k) {
     const Point2 a = profile[k - 1], b = profile[k];
-    // ∫ r z dr over a linear segment, exactly (Simpson is exact for cubics).
     const Point2 m = 0.5 * (a + b);
     const double integral = (b.x() - a.x()) / 6.0 * (a.x() * a.y() + 4 * m.x() * m.y() + b.x() * b.y());
     volume.push_back(volume.back() + 2 * pi * (-2.0 * integral));
