@@ -55,17 +55,19 @@ PointLocator::PointLocator(const mesh::TetMesh& old_mesh) : mesh_(old_mesh), vtk
 
 PointLocator::~PointLocator() = default;
 
+Location PointLocator::locate(const mesh::Point& p) const {
+  double x[3] = {p.x(), p.y(), p.z()}, pcoords[3], weights[4], closest[3], distance2;
+  int sub = 0;
+  vtkIdType tet = vtk_->locator->FindCell(x, 0.0, vtk_->cell.GetPointer(), pcoords, weights);
+  const bool inside = tet >= 0;
+  if (!inside) vtk_->locator->FindClosestPoint(x, closest, vtk_->cell.GetPointer(), tet, sub, distance2);
+  return {static_cast<int>(tet), barycentric(mesh_, static_cast<int>(tet), p), inside};
+}
+
 std::vector<Location> PointLocator::locate(const std::vector<mesh::Point>& points) const {
   std::vector<Location> out;
   out.reserve(points.size());
-  for (const mesh::Point& p : points) {
-    double x[3] = {p.x(), p.y(), p.z()}, pcoords[3], weights[4], closest[3], distance2;
-    int sub = 0;
-    vtkIdType tet = vtk_->locator->FindCell(x, 0.0, vtk_->cell.GetPointer(), pcoords, weights);
-    const bool inside = tet >= 0;
-    if (!inside) vtk_->locator->FindClosestPoint(x, closest, vtk_->cell.GetPointer(), tet, sub, distance2);
-    out.push_back({static_cast<int>(tet), barycentric(mesh_, static_cast<int>(tet), p), inside});
-  }
+  for (const mesh::Point& p : points) out.push_back(locate(p));
   return out;
 }
 

@@ -333,6 +333,8 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     if (r["element_size"]) m.element_size = doc.number(r, "element_size", "remeshing.element_size");
     m.feature_angle = doc.number(r, "feature_angle", "remeshing.feature_angle");
     m.iterations = doc.integer(r, "iterations", "remeshing.iterations");
+    m.adaptive = doc.text(r, "size", "remeshing.size") == "adaptive";
+    if (r["smallest_size"]) m.smallest_size = doc.number(r, "smallest_size", "remeshing.smallest_size");
   }
   if (!c.dies.empty() && !c.time.enabled)
     doc.fail(root["dies"], "dies", "dies need a 'time' section (stroke increment and stop criteria)");

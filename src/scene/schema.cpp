@@ -195,6 +195,14 @@ const std::vector<KeySpec>& case_schema() {
       with_default(range(key("remeshing.feature_angle", T::number,
                              "boundary edges where the surface turns more than this stay sharp", "deg"), 0, 180, true), "40"),
       with_default(range(key("remeshing.iterations", T::integer, "CGAL remeshing passes"), 1, 20), "3"),
+      with_default(choices(key("remeshing.size", T::string,
+                               "size field: 'uniform' (element_size everywhere) or 'adaptive' (down to smallest_size "
+                               "near the dies and where the strain rate is high)"),
+                           {"uniform", "adaptive"}),
+                   "uniform"),
+      range(key("remeshing.smallest_size", T::number,
+                "adaptive size field: the edge length at a die and where the strain rate is 4x the body's mean; "
+                "default half the element size", "mm"), 0, kInf, true),
     };
     for (const auto& [owner, between] : {std::pair{"dies[]", "die and body"}, std::pair{"contact_pairs[]", "the two bodies"}}) {
       const std::vector<KeySpec> friction = friction_keys(owner, between);

@@ -28,6 +28,7 @@ public:
   PointLocator(const PointLocator&) = delete;
   PointLocator& operator=(const PointLocator&) = delete;
 
+  Location locate(const mesh::Point& point) const;
   std::vector<Location> locate(const std::vector<mesh::Point>& points) const;
 
 private:

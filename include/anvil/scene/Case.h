@@ -83,6 +83,8 @@ struct RemeshSpec {
   double element_size = 0.0;    ///< mm, target edge length; 0 = the body's initial mean boundary edge
   double feature_angle = 40.0;  ///< degrees
   int iterations = 3;           ///< CGAL passes
+  bool adaptive = false;        ///< size field: finer near the dies and where ε̄̇ is high (else uniform)
+  double smallest_size = 0.0;   ///< mm, adaptive: edge length at a die surface; 0 = half the element size
 };
 
 struct ContactSpec {
