@@ -13,7 +13,6 @@
 #include <CGAL/tetrahedral_remeshing.h>
 
 #include <map>
-
 #include <set>
 #include <unordered_map>
 
@@ -165,9 +164,10 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   // CGAL smooths the vertices of a curved patch in its tangent plane, which
   // lets them sink below the old surface (0.34 % of a quarter cylinder's
   // volume at h = R/10). Put boundary nodes back on the old surface; what is
-  // left is the chord error of the new facets. Not where that would spoil an
-  // element (in a die fillet's groove it took one from 0.20 to 0.16):
-  // restore_volume makes up what such a node leaves.
+  // left is the chord error of the new facets. Not where that would leave an
+  // element below quality_floor (in a die fillet's groove this move took the
+  // flash case's worst element from 0.20 to 0.16): restore_volume makes up
+  // the volume such a node leaves.
   const contact::SurfaceSearch old_surface(body.nodes, body.boundary_faces);
   std::vector<char> on_boundary(out.nodes.size(), 0);
   for (const mesh::Triangle& f : out.boundary_faces)
