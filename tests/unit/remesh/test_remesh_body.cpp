@@ -77,7 +77,7 @@ TEST_CASE("An adaptive size field refines where it asks and keeps the volume", "
   CHECK(coarse / coarse_count == Approx(1.05).epsilon(0.15));
   CHECK(mesh::volume(out) == Approx(mesh::volume(body)).epsilon(1e-9));
   CHECK(tags_of(out) == tags_of(body));
-  // Between levels the size steps by ¾; measured worst 0.16 (0.27 uniform).
-  // A single step of ½ gave 0.08: this catches a return to it.
-  CHECK(remesh::worst_quality(out) > 0.12);
+  // Measured worst 0.26 (uniform: 0.27). Without the last pass over poor
+  // cells 0.16, with one step of ½ instead of ¾ steps 0.08.
+  CHECK(remesh::worst_quality(out) > 0.2);
 }
