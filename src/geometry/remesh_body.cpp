@@ -92,6 +92,24 @@ void restore_volume(mesh::TetMesh& mesh, double target, const std::set<int>& cur
       if (movable[v] && !fixed[v]) mesh.nodes[v] += shift * normal[v].normalized();
   }
 }
+
+/// The four corners of a CGAL cell.
+std::array<mesh::Point, 4> corners(Triangulation::Cell_handle c) {
+  std::array<mesh::Point, 4> x;
+  for (int i = 0; i < 4; ++i) x[i] = mesh::Point(c->vertex(i)->point().x(), c->vertex(i)->point().y(), c->vertex(i)->point().z());
+  return x;
+}
+
+/// One CGAL isotropic remeshing at `length` of the cells `selected` picks
+/// (boundaries remeshed too, patch borders kept where they are).
+template <class Selector>
+void remesh_pass(Triangulation& tr, double length, int iterations, Selector selected) {
+  CGAL::tetrahedral_isotropic_remeshing(tr, length,
+                                        CGAL::parameters::number_of_iterations(iterations)
+                                            .remesh_boundaries(true)
+                                            .smooth_constrained_edges(false)
+                                            .cell_is_selected_map(selected));
+}
 } // namespace
 
 mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {
@@ -115,48 +133,31 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
     throw RunError("remeshing: CGAL cannot build a triangulation from the body's tets (is the body one "
                    "piece without holes?)");
 
-  CGAL::tetrahedral_isotropic_remeshing(
-      tr, settings.edge_length,
-      CGAL::parameters::number_of_iterations(settings.iterations).remesh_boundaries(true).smooth_constrained_edges(false));
+  auto in_body = [](Triangulation::Cell_handle c) { return c->subdomain_index() != 0; }; // CGAL's own default
+  remesh_pass(tr, settings.edge_length, settings.iterations, in_body);
   // CGAL 5.5 asks a selector about each cell it may change, new cells
   // included: a cell of the body is selected where the size wanted at its
   // centroid is below the previous level.
   double previous_level = settings.edge_length;
   while (settings.size && previous_level > settings.smallest_edge_length * (1.0 + 1e-9)) {
     const double level = std::max(0.75 * previous_level, settings.smallest_edge_length);
-    auto selected = [&](Triangulation::Cell_handle c) {
-      if (c->subdomain_index() == 0) return false;
-      mesh::Point centre = mesh::Point::Zero();
-      for (int i = 0; i < 4; ++i) {
-        const Triangulation::Point& x = c->vertex(i)->point();
-        centre += mesh::Point(x.x(), x.y(), x.z());
-      }
-      return settings.size(0.25 * centre) < previous_level;
-    };
-    CGAL::tetrahedral_isotropic_remeshing(tr, level,
-                                          CGAL::parameters::number_of_iterations(settings.iterations)
-                                              .remesh_boundaries(true)
-                                              .smooth_constrained_edges(false)
-                                              .cell_is_selected_map(selected));
+    remesh_pass(tr, level, settings.iterations, [&](Triangulation::Cell_handle c) {
+      if (!in_body(c)) return false;
+      const std::array<mesh::Point, 4> x = corners(c);
+      return settings.size(0.25 * (x[0] + x[1] + x[2] + x[3])) < previous_level;
+    });
     previous_level = level;
   }
   // The passes change cells on one side of a level's border only, and leave
   // slivers on the other (q 0.05 in the 75 % upsetting). A last pass takes
   // the poor cells (q < 0.25) at the coarse length: its collapses and flips
   // remove them (worst 0.20 there, 0.26 on the unit test's billet).
-  if (settings.size) {
-    auto poor = [](Triangulation::Cell_handle c) {
-      if (c->subdomain_index() == 0) return false;
-      std::array<mesh::Point, 4> x;
-      for (int i = 0; i < 4; ++i) x[i] = mesh::Point(c->vertex(i)->point().x(), c->vertex(i)->point().y(), c->vertex(i)->point().z());
+  if (settings.size)
+    remesh_pass(tr, settings.edge_length, settings.iterations, [&](Triangulation::Cell_handle c) {
+      if (!in_body(c)) return false;
+      const std::array<mesh::Point, 4> x = corners(c);
       return mesh::quality(x[0], x[1], x[2], x[3]) < 0.25;
-    };
-    CGAL::tetrahedral_isotropic_remeshing(tr, settings.edge_length,
-                                          CGAL::parameters::number_of_iterations(settings.iterations)
-                                              .remesh_boundaries(true)
-                                              .smooth_constrained_edges(false)
-                                              .cell_is_selected_map(poor));
-  }
+    });
 
   // Back to our mesh: the cells of the body (subdomain ≠ 0), their vertices numbered in order of first use.
   mesh::TetMesh out;
@@ -187,9 +188,7 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   // flash case's worst element from 0.20 to 0.16): restore_volume makes up
   // the volume such a node leaves.
   const contact::SurfaceSearch old_surface(body.nodes, body.boundary_faces);
-  std::vector<char> on_boundary(out.nodes.size(), 0);
-  for (const mesh::Triangle& f : out.boundary_faces)
-    for (int n : f) on_boundary[n] = 1;
+  const std::vector<char> on_boundary = mesh::boundary_node_flags(out);
   mesh::QualityGuard guard(out);
   for (std::size_t n = 0; n < out.nodes.size(); ++n)
     if (on_boundary[n]) guard.move(int(n), old_surface.closest(out.nodes[n]).point, settings.quality_floor);

@@ -82,6 +82,13 @@ double volume(const TetMesh& mesh) {
   return v;
 }
 
+std::vector<char> boundary_node_flags(const TetMesh& mesh) {
+  std::vector<char> on_boundary(mesh.nodes.size(), 0);
+  for (const Triangle& f : mesh.boundary_faces)
+    for (int node : f) on_boundary[node] = 1;
+  return on_boundary;
+}
+
 MeshRange append(TetMesh& mesh, const TetMesh& part) {
   const MeshRange range{mesh.node_count(), part.node_count(), mesh.tet_count(), part.tet_count(),
                         static_cast<int>(mesh.boundary_faces.size()), static_cast<int>(part.boundary_faces.size())};

@@ -191,11 +191,12 @@ private:
   std::pair<int, double> put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body,
                                        double element_size) const;
   /// Adaptive size field for remeshing body `body` (issue 5 point 3): the
-  /// edge length wanted at a point, between `smallest` and `coarse` (mm).
-  /// `in_old` locates points in the body's mesh before the remesh.
-  std::function<double(const mesh::Point&)> adaptive_size(int body, const mesh::TetMesh& old,
-                                                          const remesh::PointLocator& in_old, double coarse,
-                                                          double smallest) const;
+  /// edge length wanted at a point for a remesh at `scale` times the body's
+  /// size, between scale × `smallest` and scale × `coarse` (mm). `old` is the
+  /// body's mesh before the remesh, `in_old` locates points in it.
+  std::function<double(const mesh::Point&, double scale)> adaptive_size(int body, const mesh::TetMesh& old,
+                                                                        const remesh::PointLocator& in_old,
+                                                                        double coarse, double smallest) const;
   void log_header() const;
   double choose_time_step(double nominal);
   bool try_increment(double time_step, solver::NewtonReport& report);
@@ -853,11 +854,14 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     // result is remade with edges 5 % and then 10 % shorter, which changes
     // where CGAL splits; the best of the tries is kept.
     const remesh::PointLocator in_old(part);
+    const double smallest = spec.smallest_size > 0.0 ? spec.smallest_size : 0.5 * bodies_[b].remesh_size;
+    const auto size_field = spec.adaptive ? adaptive_size(int(b), part, in_old, bodies_[b].remesh_size, smallest)
+                                          : nullptr;
     struct Try {
       mesh::TetMesh mesh;
-      double edge_length, volume_remeshed, worst;
-      int put_back;
-      double deepest;
+      double edge_length = 0.0, volume_remeshed = 0.0, worst = 0.0;
+      int put_back = 0;
+      double deepest = 0.0;
     };
     auto make = [&](double scale) {
       remesh::RemeshSettings settings;
@@ -865,11 +869,11 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
       settings.feature_angle = spec.feature_angle;
       settings.iterations = spec.iterations;
       settings.quality_floor = spec.quality;
-      if (spec.adaptive) {
-        settings.smallest_edge_length = scale * (spec.smallest_size > 0.0 ? spec.smallest_size : 0.5 * bodies_[b].remesh_size);
-        settings.size = adaptive_size(int(b), part, in_old, settings.edge_length, settings.smallest_edge_length);
+      if (size_field) {
+        settings.smallest_edge_length = scale * smallest;
+        settings.size = [&size_field, scale](const mesh::Point& x) { return size_field(x, scale); };
       }
-      Try t{remesh::remesh_body(part, settings), settings.edge_length, 0.0, 0.0, 0, 0.0};
+      Try t{remesh::remesh_body(part, settings), settings.edge_length};
       t.volume_remeshed = mesh::volume(t.mesh);
       std::tie(t.put_back, t.deepest) = put_onto_dies(t.mesh, part, int(b), settings.edge_length);
       t.worst = remesh::worst_quality(t.mesh);
@@ -932,25 +936,24 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
   adopt_mesh();
 }
 
-std::function<double(const mesh::Point&)> Run::adaptive_size(int body, const mesh::TetMesh& old,
-                                                             const remesh::PointLocator& in_old, double coarse,
-                                                             double smallest) const {
+std::function<double(const mesh::Point&, double)> Run::adaptive_size(int body, const mesh::TetMesh& old,
+                                                                     const remesh::PointLocator& in_old,
+                                                                     double coarse, double smallest) const {
   // Near a die the wanted edge is the distance to it: contact is nodal, so
   // what the die's shape puts on the body is resolved by the nodes there.
   // Where the body flows fast, coarse·√(mean ε̄̇ / ε̄̇): a rate 4 times the
   // body's mean (volume-weighted) gets half the edge length.
-  const mesh::MeshRange& range = bodies_[body].range;
-  std::vector<double> rate(solved_.rate.begin() + range.first_tet, solved_.rate.begin() + range.first_tet + range.tet_count);
+  const double* rate = solved_.rate.data() + bodies_[body].range.first_tet; // of the increment just solved, on `old`
   double mean_rate = 0.0;
   for (int e = 0; e < old.tet_count(); ++e) mean_rate += rate[e] * mesh::signed_volume(old, e);
   mean_rate /= mesh::volume(old);
-  return [this, &in_old, rate = std::move(rate), mean_rate, coarse, smallest](const mesh::Point& x) {
-    double wanted = coarse;
+  return [this, &in_old, rate, mean_rate, coarse, smallest](const mesh::Point& x, double scale) {
+    double wanted = scale * coarse;
     for (std::size_t d = 0; d < dies_.size(); ++d)
       wanted = std::min(wanted, std::max(0.0, dies_[d].surface->project(x - state_.dies[d].displacement).distance));
     const double here = rate[in_old.locate(x).tet];
-    if (here > 0.0) wanted = std::min(wanted, coarse * std::sqrt(mean_rate / here));
-    return std::max(wanted, smallest);
+    if (here > 0.0) wanted = std::min(wanted, scale * coarse * std::sqrt(mean_rate / here));
+    return std::max(wanted, scale * smallest);
   };
 }
 
@@ -964,9 +967,7 @@ std::pair<int, double> Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetM
   // contact (the far side of an open die surface). A move that would leave an
   // element around the node worse than the remeshing threshold (or than it
   // was) is not made: that node is left to the next increment's contact.
-  std::vector<char> on_boundary(fresh.nodes.size(), 0);
-  for (const mesh::Triangle& f : fresh.boundary_faces)
-    for (int node : f) on_boundary[node] = 1;
+  const std::vector<char> on_boundary = mesh::boundary_node_flags(fresh);
   mesh::QualityGuard guard(fresh);
   // The body's symmetry planes, axis-aligned (BoundaryCondition): the axis
   // and the coordinate, from the old mesh, whose faces were checked planar.

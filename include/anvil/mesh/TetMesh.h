@@ -48,6 +48,9 @@ void validate(const TetMesh& mesh, const std::string& source);
 /// Sum of tet volumes (mm³).
 double volume(const TetMesh& mesh);
 
+/// 1 for each node on a boundary face of `mesh`, else 0.
+std::vector<char> boundary_node_flags(const TetMesh& mesh);
+
 /// Where one body's entities sit in a mesh that holds several (see append).
 struct MeshRange {
   int first_node = 0, node_count = 0;

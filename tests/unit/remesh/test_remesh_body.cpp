@@ -61,7 +61,7 @@ TEST_CASE("An adaptive size field refines where it asks and keeps the volume", "
   settings.smallest_edge_length = 0.525;
   settings.size = [](const mesh::Point& x) { return std::clamp(0.525 + 0.5 * (x.z() - 4.0), 0.525, 1.05); };
   const mesh::TetMesh out = remesh::remesh_body(body, settings);
-  // Mean edge length of the elements wholly below z = 3 and wholly above z = 7.
+  // Mean length of the element edges wholly below z = 3 and wholly above z = 7.
   double fine = 0.0, coarse = 0.0;
   int fine_count = 0, coarse_count = 0;
   for (const mesh::Tet& t : out.tets)
