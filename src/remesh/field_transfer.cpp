@@ -11,6 +11,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
+#include <memory>
 
 namespace anvil::remesh {
 namespace {
@@ -88,7 +89,7 @@ Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::Ve
 }
 
 std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::vector<double>& values,
-                                     const std::vector<mesh::Point>& centres, const std::vector<Location>& centres_at) {
+                                     const PointLocator& in_old, const mesh::TetMesh& new_mesh) {
   const std::vector<mesh::Point> old_centres = centroids(old_mesh);
   // Elements around each node, and the range of the field there.
   std::vector<std::vector<int>> around(old_mesh.nodes.size());
@@ -129,11 +130,26 @@ std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::v
       else if (rise < 0.0) limit[e] = std::min(limit[e], (low[v] - values[e]) / rise);
     }
   }
+  const std::vector<mesh::Point> centres = centroids(new_mesh);
+  const std::vector<Location> centres_at = in_old.locate(centres);
   std::vector<double> out;
   out.reserve(centres.size());
+  std::vector<char> holds_new_centroid(old_mesh.tets.size(), 0);
   for (std::size_t i = 0; i < centres.size(); ++i) {
     const int e = centres_at[i].tet;
     out.push_back(values[e] + limit[e] * gradient[e].dot(centres[i] - old_centres[e]));
+    holds_new_centroid[e] = 1;
+  }
+  // Peaks no new centroid fell in go to the new element around them.
+  std::unique_ptr<PointLocator> in_new;
+  for (int e = 0; e < old_mesh.tet_count(); ++e) {
+    if (holds_new_centroid[e]) continue;
+    bool peak = true, flat = true;
+    for (int v : old_mesh.tets[e]) peak = peak && values[e] >= high[v], flat = flat && low[v] == high[v];
+    if (!peak || flat) continue;
+    if (!in_new) in_new = std::make_unique<PointLocator>(new_mesh);
+    double& value = out[in_new->locate(old_centres[e]).tet];
+    value = std::max(value, values[e]);
   }
   return out;
 }

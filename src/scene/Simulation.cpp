@@ -890,11 +890,11 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     mesh::TetMesh& fresh = best.mesh;
     const double volume_before = mesh::volume(part), volume_remeshed = best.volume_remeshed;
     const double volume_after = mesh::volume(fresh);
-    // Nodal v and p interpolated: the next Newton's first guess. ε̄ by limited linear reconstruction.
+    // Nodal v and p interpolated: the next Newton's first guess. ε̄ by limited linear
+    // reconstruction, its peaks kept.
     const Eigen::VectorXd fresh_nodal = remesh::interpolate_nodal(
         part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count), 4, in_old.locate(fresh.nodes));
-    const std::vector<mesh::Point> centres = remesh::centroids(fresh);
-    const std::vector<double> fresh_strain = remesh::transfer_element(part, part_strain, centres, in_old.locate(centres));
+    const std::vector<double> fresh_strain = remesh::transfer_element(part, part_strain, in_old, fresh);
     ranges.push_back(mesh::append(next, fresh));
     append_values(nodal, fresh_nodal.data(), fresh_nodal.size());
     append_values(strain, fresh_strain.data(), fresh_strain.size());

@@ -51,14 +51,18 @@ void check_run_volume(const RemeshedRun& run, bool known_shortfall) {
   else CHECK(change < 0.01);
 }
 
-/// Max ε̄ within 2 % across each remesh, and the load on `surface` just
-/// after it within 3 % of the straight line through the two loads before.
-/// Reported, not failing (CHECK_NOFAIL): no case meets them yet.
-void check_max_strain_and_load_continuity(const RemeshedRun& run, const std::string& surface) {
+/// Max ε̄ within 2 % across each remesh. The transfer keeps old peaks in the
+/// new element that holds them, so the change is 0 unless that rule breaks.
+void check_max_strain(const RemeshedRun& run) {
   for (const scene::RemeshRecord& r : run.end.remeshes) {
     INFO("remesh after increment " << r.increment);
-    CHECK_NOFAIL(std::abs(r.strain_max_change) < 0.02);
+    CHECK(std::abs(r.strain_max_change) < 0.02);
   }
+}
+
+/// The load on `surface` just after each remesh within 3 % of the straight
+/// line through the two loads before.
+void check_load_continuity(const RemeshedRun& run, const std::string& surface, bool known_shortfall) {
   const std::vector<LoadRow> load = run.out.loads(surface);
   for (const scene::RemeshRecord& r : run.end.remeshes) {
     const std::size_t k = static_cast<std::size_t>(r.increment) - 1; // row of the remesh increment
@@ -66,22 +70,22 @@ void check_max_strain_and_load_continuity(const RemeshedRun& run, const std::str
     const LoadRow &a = load[k - 1], &b = load[k], &after = load[k + 1];
     const double predicted = b.force.z() + (b.force.z() - a.force.z()) / (b.stroke - a.stroke) * (after.stroke - b.stroke);
     INFO("remesh after increment " << r.increment << ": load " << after.force.z() << " N, trend " << predicted << " N");
-    CHECK_NOFAIL(std::abs(after.force.z() / predicted - 1.0) < 0.03);
+    const bool on_trend = std::abs(after.force.z() / predicted - 1.0) < 0.03;
+    if (known_shortfall) CHECK_NOFAIL(on_trend);
+    else CHECK(on_trend);
   }
 }
 
 } // namespace
 
 // Each case runs once (one test case: ctest runs every test case in its own
-// process). Known shortfalls, reported by every run (CHECK_NOFAIL) with the
-// issue's thresholds: max ε̄ −6.0 % and −7.7 % at h = 1.5 mm (the peak sits
-// in the flattened elements under the die, thinner than the new mesh's);
-// the load after the remeshes 1.8 % and 2.9 % off trend (within 3 %).
+// process). Measured: the load after the remeshes 1.7 % and 0.1 % off trend.
 TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/upsetting_75.yaml", "anvil_hard_upsetting_75"); // 50 s
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume(run, false);
-  check_max_strain_and_load_continuity(run, "top");
+  check_max_strain(run);
+  check_load_continuity(run, "top", false);
 }
 
 // Known shortfalls, as above. Measured from scratch: max ε̄ down by up to
@@ -101,5 +105,6 @@ TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshe
   const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash"); // 10 min
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume(run, true);
-  check_max_strain_and_load_continuity(run, "upper");
+  check_max_strain(run);
+  check_load_continuity(run, "upper", true);
 }

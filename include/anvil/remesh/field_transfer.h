@@ -45,14 +45,22 @@ std::vector<mesh::Point> centroids(const mesh::TetMesh& m);
 Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::VectorXd& values, int stride,
                                   const std::vector<Location>& at);
 
-/// Element field (one value per tet, e.g. ε̄) at the new elements' centroids
-/// `centres` (located by `centres_at`): a linear reconstruction in the old
-/// element that holds the centroid, its gradient fitted by least squares to
-/// the face neighbours' values and limited (Barth-Jespersen) so that it never
-/// leaves the range of the element and its neighbours. Exact for linear
-/// fields away from the limiter; a peak is neither smoothed nor overshot.
+/// Element field (one value per tet, e.g. ε̄) onto the elements of
+/// `new_mesh`, at their centroids: a linear reconstruction in the old element
+/// that holds the centroid, its gradient fitted by least squares to the
+/// neighbours' values and limited (Barth-Jespersen) so that it never leaves
+/// the range of the element and its neighbours. Exact for linear fields away
+/// from the limiter; never overshoots.
+///
+/// A peak (an old element above every element sharing a node with it) that
+/// holds no new centroid, being smaller than the new elements around it,
+/// would be shaved by the reconstruction: the new element that holds the
+/// peak's centroid takes the peak's value. ε̄ peaks (a fold, a die corner)
+/// are what hardening and damage read; shaved at every remesh they would
+/// wear away. This costs conservation: the peak now covers a larger element
+/// (the integral's change is logged with each remesh).
 std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::vector<double>& values,
-                                     const std::vector<mesh::Point>& centres, const std::vector<Location>& centres_at);
+                                     const PointLocator& in_old, const mesh::TetMesh& new_mesh);
 
 /// ∫ f dV over `m` of a one-value-per-tet field (mm³ × unit of f).
 double integral(const mesh::TetMesh& m, const std::vector<double>& values);
