@@ -30,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 #include <tuple>
 
@@ -440,18 +441,24 @@ double Run::choose_time_step(double nominal) {
     const double speed = state_.unknowns.nodal.segment<3>(4 * i).norm();
     if (speed > 0.0) dt = std::min(dt, t.max_displacement * size[i] / speed);
   }
-  // Stop criteria are met exactly rather than overshot.
-  if (std::isfinite(t.end_time)) dt = std::min(dt, t.end_time - state_.time);
+  // Stop criteria are met exactly rather than overshot, and without a sliver
+  // of an increment at the end (Δt ≪ nominal makes gap/Δt in the contact
+  // terms and the volume compensation stiff): a stop less than 1¼ steps away
+  // is reached in two equal steps.
+  double to_stop = std::numeric_limits<double>::infinity();
+  if (std::isfinite(t.end_time)) to_stop = t.end_time - state_.time;
   if (std::isfinite(t.final_stroke)) {
     const double speed = dies_[t.stroke_die].velocity(state_.dies[t.stroke_die], dt).norm();
-    if (speed > 0.0) dt = std::min(dt, (t.final_stroke - state_.dies[t.stroke_die].stroke) / speed);
+    if (speed > 0.0) to_stop = std::min(to_stop, (t.final_stroke - state_.dies[t.stroke_die].stroke) / speed);
   }
   if (t.final_gap > 0.0) {
     const int lower = 1 - upper_die_;
     const double closing = dies_[lower].velocity(state_.dies[lower], dt).z() -
                            dies_[upper_die_].velocity(state_.dies[upper_die_], dt).z();
-    if (closing > 0.0) dt = std::min(dt, (die_gap() - t.final_gap) / closing);
+    if (closing > 0.0) to_stop = std::min(to_stop, (die_gap() - t.final_gap) / closing);
   }
+  if (to_stop <= dt) dt = to_stop;
+  else if (to_stop < 1.25 * dt) dt = 0.5 * to_stop;
   return dt;
 }
 
@@ -1055,10 +1062,13 @@ void Run::execute() {
     int cuts = 0;
     for (;;) {
       bool ok = try_increment(dt, report);
-      // A free node reaching a die inside the increment ends it there (contact event).
+      // A free node reaching a die inside the increment ends it there (contact
+      // event), unless that leaves a sliver of the step to a next increment:
+      // the overshoot in it is then below min_step_fraction of a nominal
+      // step's travel, and the update projects it.
       if (ok && !dies_.empty()) {
         const double touch = contact_.first_contact_time(state_.unknowns.nodal, 1e-3 * reference_length_);
-        if (touch < dt && touch > t.min_step_fraction * nominal) {
+        if (touch > t.min_step_fraction * nominal && touch < dt - t.min_step_fraction * nominal) {
           dt = touch;
           state_.unknowns = saved.unknowns;
           ok = try_increment(dt, report);

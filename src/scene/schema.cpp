@@ -170,7 +170,8 @@ const std::vector<KeySpec>& case_schema() {
                              "largest nodal displacement per increment, relative to the local element size"), 0, 1, true),
                    "0.2"),
       with_default(range(key("time.min_step_fraction", T::number,
-                             "a node reaching a die shortens the increment, down to this fraction"), 0, 1), "0.1"),
+                             "a node reaching a die shortens the increment, down to this fraction of the "
+                             "nominal one and not by less"), 0, 1), "0.1"),
       with_default(range(key("time.max_cuts", T::integer, "time-step halvings after a Newton failure"), 0, 30), "5"),
       with_default(range(key("time.max_increments", T::integer, "safety stop"), 1, kInf), "100000"),
       with_default(key("time.volume_compensation", T::boolean,

@@ -61,7 +61,7 @@ struct TimeSpec {
   bool enabled = false;
   double stroke_increment = 0.0;   ///< mm of travel of the fastest die per increment
   double max_displacement = 0.2;   ///< largest nodal displacement per increment / local element size
-  double min_step_fraction = 0.1;  ///< contact events shorten Δt down to this fraction of the nominal one
+  double min_step_fraction = 0.1;  ///< contact events shorten Δt down to this fraction of the nominal one, and not by less
   int max_cuts = 5;                ///< Δt halvings after a Newton failure
   int max_increments = 100000;
   bool volume_compensation = true; ///< incompressible bodies: restore lost volume each increment
