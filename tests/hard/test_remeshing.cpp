@@ -89,7 +89,7 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
   check_load_continuity(run, "top", false);
 }
 
-// Known shortfalls. Four from-scratch runs of the current code reached
+// Known shortfalls. Five from-scratch runs since remeshes are remade reached
 // full stroke; in them the load just after a remesh was up to 5.8-7.8 % off
 // trend in the flash stage (15-19 % at increments without a remesh, where
 // contact events shorten increments), ∫ε̄ fell by up to 2.13 % at one remesh
