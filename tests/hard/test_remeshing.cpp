@@ -90,8 +90,8 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
 }
 
 // Known shortfalls. Five from-scratch runs since remeshes are remade reached
-// full stroke; in them the load just after a remesh was up to 5.8-7.8 % off
-// trend in the flash stage (15-19 % at increments without a remesh, where
+// full stroke; in them the load just after a remesh was up to 2.9-7.8 % off
+// trend in the flash stage (9-19 % at increments without a remesh, where
 // contact events shorten increments), ∫ε̄ fell by up to 2.13 % at one remesh
 // (the limited reconstruction clips at the boundary; the flash is one or
 // two elements thick), and the volume ended at −0.39 to −1.26 % (the last
