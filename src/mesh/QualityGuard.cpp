@@ -6,10 +6,7 @@
 
 namespace anvil::mesh {
 
-QualityGuard::QualityGuard(TetMesh& mesh) : mesh_(mesh), tets_of_(mesh.nodes.size()) {
-  for (int e = 0; e < mesh.tet_count(); ++e)
-    for (int v : mesh.tets[e]) tets_of_[v].push_back(e);
-}
+QualityGuard::QualityGuard(TetMesh& mesh) : mesh_(mesh), tets_of_(tets_around_nodes(mesh)) {}
 
 double QualityGuard::worst_around(int node) const {
   double worst = 1.0;

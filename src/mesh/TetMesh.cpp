@@ -89,6 +89,13 @@ std::vector<char> boundary_node_flags(const TetMesh& mesh) {
   return on_boundary;
 }
 
+std::vector<std::vector<int>> tets_around_nodes(const TetMesh& mesh) {
+  std::vector<std::vector<int>> around(mesh.nodes.size());
+  for (int e = 0; e < mesh.tet_count(); ++e)
+    for (int v : mesh.tets[e]) around[v].push_back(e);
+  return around;
+}
+
 MeshRange append(TetMesh& mesh, const TetMesh& part) {
   const MeshRange range{mesh.node_count(), part.node_count(), mesh.tet_count(), part.tet_count(),
                         static_cast<int>(mesh.boundary_faces.size()), static_cast<int>(part.boundary_faces.size())};

@@ -92,9 +92,7 @@ std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::v
                                      const PointLocator& in_old, const mesh::TetMesh& new_mesh) {
   const std::vector<mesh::Point> old_centres = centroids(old_mesh);
   // Elements around each node, and the range of the field there.
-  std::vector<std::vector<int>> around(old_mesh.nodes.size());
-  for (int e = 0; e < old_mesh.tet_count(); ++e)
-    for (int v : old_mesh.tets[e]) around[v].push_back(e);
+  const std::vector<std::vector<int>> around = mesh::tets_around_nodes(old_mesh);
   std::vector<double> low(old_mesh.nodes.size()), high(old_mesh.nodes.size());
   for (std::size_t v = 0; v < around.size(); ++v) {
     low[v] = high[v] = values[around[v].front()];

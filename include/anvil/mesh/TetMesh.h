@@ -51,6 +51,9 @@ double volume(const TetMesh& mesh);
 /// 1 for each node on a boundary face of `mesh`, else 0.
 std::vector<char> boundary_node_flags(const TetMesh& mesh);
 
+/// For each node, the tets that have it as a vertex (in increasing order).
+std::vector<std::vector<int>> tets_around_nodes(const TetMesh& mesh);
+
 /// Where one body's entities sit in a mesh that holds several (see append).
 struct MeshRange {
   int first_node = 0, node_count = 0;
