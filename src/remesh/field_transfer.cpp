@@ -1,10 +1,12 @@
 #include "anvil/remesh/field_transfer.h"
 
 #include "anvil/mesh/tet_geometry.h"
+#include "anvil/mesh/tet_overlap.h"
 
 #include <Eigen/Dense>
 #include <vtkCellArray.h>
 #include <vtkGenericCell.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkStaticCellLocator.h>
@@ -37,6 +39,7 @@ struct PointLocator::Vtk {
   vtkNew<vtkUnstructuredGrid> grid;
   vtkNew<vtkStaticCellLocator> locator;
   vtkNew<vtkGenericCell> cell; ///< scratch for the queries
+  vtkNew<vtkIdList> found;     ///< scratch for the box queries
 };
 
 PointLocator::PointLocator(const mesh::TetMesh& old_mesh) : mesh_(old_mesh), vtk_(std::make_unique<Vtk>()) {
@@ -72,6 +75,13 @@ std::vector<Location> PointLocator::locate(const std::vector<mesh::Point>& point
   return out;
 }
 
+void PointLocator::tets_in_box(const mesh::Point& low, const mesh::Point& high, std::vector<int>& tets) const {
+  double box[6] = {low.x(), high.x(), low.y(), high.y(), low.z(), high.z()};
+  vtk_->locator->FindCellsWithinBounds(box, vtk_->found);
+  tets.resize(vtk_->found->GetNumberOfIds());
+  for (vtkIdType k = 0; k < vtk_->found->GetNumberOfIds(); ++k) tets[k] = static_cast<int>(vtk_->found->GetId(k));
+}
+
 std::vector<mesh::Point> centroids(const mesh::TetMesh& m) {
   std::vector<mesh::Point> out;
   out.reserve(m.tets.size());
@@ -88,16 +98,29 @@ Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::Ve
   return out;
 }
 
-std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::vector<double>& values,
-                                     const PointLocator& in_old, const mesh::TetMesh& new_mesh) {
-  const std::vector<mesh::Point> old_centres = centroids(old_mesh);
-  // Elements around each node, and the range of the field there.
-  const std::vector<std::vector<int>> around = mesh::tets_around_nodes(old_mesh);
-  std::vector<double> low(old_mesh.nodes.size()), high(old_mesh.nodes.size());
+namespace {
+
+/// The lowest and highest value of an element field over the elements around each node.
+struct NodeRange {
+  std::vector<double> low, high;
+};
+
+NodeRange range_around_nodes(const std::vector<std::vector<int>>& around, const std::vector<double>& values) {
+  NodeRange r{std::vector<double>(around.size()), std::vector<double>(around.size())};
   for (std::size_t v = 0; v < around.size(); ++v) {
-    low[v] = high[v] = values[around[v].front()];
-    for (int e : around[v]) low[v] = std::min(low[v], values[e]), high[v] = std::max(high[v], values[e]);
+    r.low[v] = r.high[v] = values[around[v].front()];
+    for (int e : around[v]) r.low[v] = std::min(r.low[v], values[e]), r.high[v] = std::max(r.high[v], values[e]);
   }
+  return r;
+}
+
+} // namespace
+
+std::vector<double> remap_element(const mesh::TetMesh& old_mesh, const std::vector<double>& values,
+                                  const PointLocator& in_old, const mesh::TetMesh& new_mesh) {
+  const std::vector<mesh::Point> old_centres = centroids(old_mesh);
+  const std::vector<std::vector<int>> around = mesh::tets_around_nodes(old_mesh);
+  const NodeRange range = range_around_nodes(around, values);
   // The gradient of each old element and its limiter factor.
   std::vector<Eigen::Vector3d> gradient(old_mesh.tets.size());
   std::vector<double> limit(old_mesh.tets.size(), 1.0);
@@ -124,31 +147,59 @@ std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::v
     // gradient gives at each vertex stays within the range of the elements around it.
     for (int v : old_mesh.tets[e]) {
       const double rise = g.dot(old_mesh.nodes[v] - c);
-      if (rise > 0.0) limit[e] = std::min(limit[e], (high[v] - values[e]) / rise);
-      else if (rise < 0.0) limit[e] = std::min(limit[e], (low[v] - values[e]) / rise);
+      if (rise > 0.0) limit[e] = std::min(limit[e], (range.high[v] - values[e]) / rise);
+      else if (rise < 0.0) limit[e] = std::min(limit[e], (range.low[v] - values[e]) / rise);
     }
   }
-  const std::vector<mesh::Point> centres = centroids(new_mesh);
-  const std::vector<Location> centres_at = in_old.locate(centres);
-  std::vector<double> out;
-  out.reserve(centres.size());
-  std::vector<char> holds_new_centroid(old_mesh.tets.size(), 0);
-  for (std::size_t i = 0; i < centres.size(); ++i) {
-    const int e = centres_at[i].tet;
-    out.push_back(values[e] + limit[e] * gradient[e].dot(centres[i] - old_centres[e]));
-    holds_new_centroid[e] = 1;
+  // Each new element takes the mean of the reconstruction over it: over the
+  // old elements it overlaps, the reconstruction's integral on the common
+  // part (a linear function's: its value at the part's centroid times the
+  // part's volume), summed and divided by the volume covered.
+  std::vector<double> out(new_mesh.tets.size());
+  std::vector<int> candidates;
+  mesh::TetCorners corners, old_corners;
+  for (int n = 0; n < new_mesh.tet_count(); ++n) {
+    for (int k = 0; k < 4; ++k) corners[k] = new_mesh.nodes[new_mesh.tets[n][k]];
+    mesh::Point box_low = corners[0], box_high = corners[0];
+    for (const mesh::Point& x : corners) box_low = box_low.cwiseMin(x), box_high = box_high.cwiseMax(x);
+    in_old.tets_in_box(box_low, box_high, candidates);
+    double covered = 0.0, sum = 0.0;
+    for (int e : candidates) {
+      for (int k = 0; k < 4; ++k) old_corners[k] = old_mesh.nodes[old_mesh.tets[e][k]];
+      const mesh::Overlap common = mesh::tet_overlap(corners, old_corners);
+      if (common.volume <= 0.0) continue;
+      covered += common.volume;
+      sum += common.volume * (values[e] + limit[e] * gradient[e].dot(common.centroid - old_centres[e]));
+    }
+    if (covered > 0.0) {
+      out[n] = sum / covered;
+    } else { // wholly off the old mesh (not met in practice): the closest old element's reconstruction
+      const mesh::Point centre = mesh::centroid(new_mesh, n);
+      const int e = in_old.locate(centre).tet;
+      out[n] = values[e] + limit[e] * gradient[e].dot(centre - old_centres[e]);
+    }
   }
-  // Peaks no new centroid fell in go to the new element around them.
-  std::unique_ptr<PointLocator> in_new;
+  return out;
+}
+
+void keep_peaks(const mesh::TetMesh& old_mesh, const std::vector<double>& values, const mesh::TetMesh& new_mesh,
+                std::vector<double>& new_values) {
+  const NodeRange range = range_around_nodes(mesh::tets_around_nodes(old_mesh), values);
+  std::unique_ptr<PointLocator> in_new; // built at the first peak
   for (int e = 0; e < old_mesh.tet_count(); ++e) {
-    if (holds_new_centroid[e]) continue;
     bool peak = true, flat = true;
-    for (int v : old_mesh.tets[e]) peak = peak && values[e] >= high[v], flat = flat && low[v] == high[v];
+    for (int v : old_mesh.tets[e]) peak = peak && values[e] >= range.high[v], flat = flat && range.low[v] == range.high[v];
     if (!peak || flat) continue;
     if (!in_new) in_new = std::make_unique<PointLocator>(new_mesh);
-    double& value = out[in_new->locate(old_centres[e]).tet];
+    double& value = new_values[in_new->locate(mesh::centroid(old_mesh, e)).tet];
     value = std::max(value, values[e]);
   }
+}
+
+std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::vector<double>& values,
+                                     const PointLocator& in_old, const mesh::TetMesh& new_mesh) {
+  std::vector<double> out = remap_element(old_mesh, values, in_old, new_mesh);
+  keep_peaks(old_mesh, values, new_mesh, out);
   return out;
 }
 

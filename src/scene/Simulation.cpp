@@ -865,7 +865,8 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     const auto size_field = spec.adaptive ? adaptive_size(int(b), part, in_old, bodies_[b].remesh_size, smallest)
                                           : nullptr;
     struct Try {
-      mesh::TetMesh mesh;
+      mesh::TetMesh remeshed; ///< CGAL's mesh of the old body: the fields are transferred onto it
+      mesh::TetMesh mesh;     ///< the same with its new boundary nodes put onto the dies
       double edge_length = 0.0, volume_remeshed = 0.0, worst = 0.0;
       int put_back = 0;
       double deepest = 0.0;
@@ -880,7 +881,10 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
         settings.smallest_edge_length = scale * smallest;
         settings.size = [&size_field, scale](const mesh::Point& x) { return size_field(x, scale); };
       }
-      Try t{remesh::remesh_body(part, settings), settings.edge_length};
+      Try t;
+      t.remeshed = remesh::remesh_body(part, settings);
+      t.mesh = t.remeshed;
+      t.edge_length = settings.edge_length;
       t.volume_remeshed = mesh::volume(t.mesh);
       std::tie(t.put_back, t.deepest) = put_onto_dies(t.mesh, part, int(b), settings.edge_length);
       t.worst = remesh::worst_quality(t.mesh);
@@ -897,11 +901,13 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     mesh::TetMesh& fresh = best.mesh;
     const double volume_before = mesh::volume(part), volume_remeshed = best.volume_remeshed;
     const double volume_after = mesh::volume(fresh);
-    // Nodal v and p interpolated: the next Newton's first guess. ε̄ by limited linear
-    // reconstruction, its peaks kept.
+    // Nodal v and p interpolated: the next Newton's first guess. ε̄ by a
+    // conservative remap onto the mesh CGAL made of the old body (the same
+    // domain), its peaks kept; putting nodes onto the dies then moves the
+    // elements with their values, as an increment's update does.
     const Eigen::VectorXd fresh_nodal = remesh::interpolate_nodal(
         part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count), 4, in_old.locate(fresh.nodes));
-    const std::vector<double> fresh_strain = remesh::transfer_element(part, part_strain, in_old, fresh);
+    const std::vector<double> fresh_strain = remesh::transfer_element(part, part_strain, in_old, best.remeshed);
     ranges.push_back(mesh::append(next, fresh));
     append_values(nodal, fresh_nodal.data(), fresh_nodal.size());
     append_values(strain, fresh_strain.data(), fresh_strain.size());
@@ -915,7 +921,7 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
                               remesh::worst_quality(part),
                               best.worst,
                               relative(volume_remeshed, volume_before),
-                              relative(remesh::integral(fresh, fresh_strain), remesh::integral(part, part_strain)),
+                              relative(remesh::integral(best.remeshed, fresh_strain), remesh::integral(part, part_strain)),
                               relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
                                        *std::max_element(part_strain.begin(), part_strain.end())),
                               seconds_since(start)};
@@ -931,8 +937,10 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
               100.0 * record.volume_change, 100.0 * record.strain_integral_change, 100.0 * record.strain_max_change,
               record.seconds);
     if (best.put_back > 0)
-      log::info("    %d new boundary nodes were inside a die (deepest %.3g mm), put onto its surface: volume %+.4f%% "
-                "(contact projection)", best.put_back, best.deepest, 100.0 * relative(volume_after, volume_remeshed));
+      log::info("    %d new boundary nodes were inside a die (deepest %.3g mm), put onto its surface: volume %+.4f%%, "
+                "integral of strain %+.3f%% (contact projection)", best.put_back, best.deepest,
+                100.0 * relative(volume_after, volume_remeshed),
+                100.0 * relative(remesh::integral(fresh, fresh_strain), remesh::integral(best.remeshed, fresh_strain)));
   }
   state_.unknowns.nodal = Eigen::Map<const Eigen::VectorXd>(nodal.data(), static_cast<Eigen::Index>(nodal.size()));
   state_.unknowns.bubble = Eigen::VectorXd::Zero(3 * next.tet_count()); // condensed per element: a zero guess

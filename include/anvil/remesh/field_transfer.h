@@ -30,6 +30,8 @@ public:
 
   Location locate(const mesh::Point& point) const;
   std::vector<Location> locate(const std::vector<mesh::Point>& points) const;
+  /// The tets whose bounding boxes meet the box [low, high] (some may not meet it), into `tets`.
+  void tets_in_box(const mesh::Point& low, const mesh::Point& high, std::vector<int>& tets) const;
 
 private:
   struct Vtk;
@@ -46,19 +48,28 @@ Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::Ve
                                   const std::vector<Location>& at);
 
 /// Element field (one value per tet, e.g. ε̄) onto the elements of
-/// `new_mesh`, at their centroids: a linear reconstruction in the old element
-/// that holds the centroid, its gradient fitted by least squares to the
-/// neighbours' values and limited (Barth-Jespersen) so that it never leaves
-/// the range of the element and its neighbours. Exact for linear fields away
-/// from the limiter; never overshoots.
-///
-/// A peak (an old element above every element sharing a node with it) that
-/// holds no new centroid, being smaller than the new elements around it,
-/// would be shaved by the reconstruction: the new element that holds the
-/// peak's centroid takes the peak's value. ε̄ peaks (a fold, a die corner)
-/// are what hardening and damage read; shaved at every remesh they would
-/// wear away. This costs conservation: the peak now covers a larger element
-/// (the integral's change is logged with each remesh).
+/// `new_mesh` by a conservative remap (Dukowicz and Kodis 1987; Farrell et
+/// al. 2009): in each old element a linear reconstruction, its gradient
+/// fitted by least squares to the neighbours' values and limited
+/// (Barth-Jespersen) so that it never leaves the range of the element and its
+/// neighbours; each new element takes the mean of the reconstruction over it,
+/// integrated exactly over its intersections with the old elements. The
+/// reconstruction keeps each old element's mean, so ∫ f dV is conserved up to
+/// where the two meshes' boundaries differ; exact for a linear field where the
+/// limiter is off; never overshoots.
+std::vector<double> remap_element(const mesh::TetMesh& old_mesh, const std::vector<double>& values,
+                                  const PointLocator& in_old, const mesh::TetMesh& new_mesh);
+
+/// A peak (an old element at or above every element sharing a node with it,
+/// the field not flat there) raises the new element that holds its centroid
+/// to its value. ε̄ peaks (a fold, a die corner) are what hardening and damage
+/// read; averaged over larger new elements at every remesh they would wear
+/// away. The cost is conservation: each peak's excess over the remapped mean
+/// times the new element's volume (logged with each remesh).
+void keep_peaks(const mesh::TetMesh& old_mesh, const std::vector<double>& values, const mesh::TetMesh& new_mesh,
+                std::vector<double>& new_values);
+
+/// Anvil's transfer of element fields: remap_element, then keep_peaks.
 std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::vector<double>& values,
                                      const PointLocator& in_old, const mesh::TetMesh& new_mesh);
 

@@ -1,5 +1,6 @@
 // Field transfer between two meshes of the same box.
 #include "anvil/mesh/generators.h"
+#include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/field_transfer.h"
 
 #include <catch2/catch.hpp>
@@ -8,7 +9,7 @@
 
 using namespace anvil;
 
-TEST_CASE("Linear nodal fields are interpolated exactly, element fields reconstructed", "[unit][remesh]") {
+TEST_CASE("Linear nodal fields are interpolated exactly", "[unit][remesh]") {
   const mesh::TetMesh old_mesh = mesh::make_box({0, 0, 0}, {4, 3, 2}, 1.0);
   mesh::TetMesh new_mesh = mesh::make_box({0, 0, 0}, {4, 3, 2}, 0.7);
   // A new boundary node a hair outside the old mesh still gets a location.
@@ -24,47 +25,66 @@ TEST_CASE("Linear nodal fields are interpolated exactly, element fields reconstr
     CHECK(values[2 * i] == Approx(expected[0]).margin(1e-6)); // 1e-7 outside, slope 2
     CHECK(values[2 * i + 1] == Approx(expected[1]).margin(1e-6));
   }
-  // Element field f = x at the old centroids: the limited reconstruction is
-  // exact for a linear field wherever the limiter stays off (inside; at the
-  // boundary the elements around a vertex lie on one side of it and it clips),
-  // and never leaves the range.
+}
+
+TEST_CASE("Element fields are remapped conservatively, exactly for a linear field inside", "[unit][remesh]") {
+  // f = x at the old centroids (0.5 mm), onto a 0.625 mm mesh of the same box.
+  const mesh::TetMesh old_mesh = mesh::make_box({0, 0, 0}, {5, 5, 5}, 0.5);
+  const mesh::TetMesh new_mesh = mesh::make_box({0, 0, 0}, {5, 5, 5}, 0.625);
   const std::vector<mesh::Point> old_centres = remesh::centroids(old_mesh), new_centres = remesh::centroids(new_mesh);
   std::vector<double> f;
   for (const mesh::Point& c : old_centres) f.push_back(c.x());
-  const std::vector<double> moved = remesh::transfer_element(old_mesh, f, in_old, new_mesh);
-  int exact = 0;
-  for (std::size_t e = 0; e < moved.size(); ++e) {
-    CHECK(moved[e] >= *std::min_element(f.begin(), f.end()) - 1e-12);
-    CHECK(moved[e] <= *std::max_element(f.begin(), f.end()) + 1e-12);
-    CHECK(moved[e] == Approx(new_centres[e].x()).margin(1.0)); // clipped: off by at most one old element
-    if (std::abs(moved[e] - new_centres[e].x()) < 1e-9) ++exact;
+  const remesh::PointLocator in_old(old_mesh);
+  const std::vector<double> moved = remesh::remap_element(old_mesh, f, in_old, new_mesh);
+  // Same domain: ∫ f dV is kept to rounding.
+  CHECK(remesh::integral(new_mesh, moved) == Approx(remesh::integral(old_mesh, f)).epsilon(1e-12));
+  // Never outside the old range (the limiter; at the boundary it clips).
+  for (double v : moved) {
+    CHECK(v >= *std::min_element(f.begin(), f.end()) - 1e-12);
+    CHECK(v <= *std::max_element(f.begin(), f.end()) + 1e-12);
   }
-  INFO("exact at " << exact << " of " << moved.size() << " elements");
-  CHECK(exact > static_cast<int>(moved.size()) / 2);
-  // Not conservative by construction: the clipped boundary layer (one element
-  // of 1 mm on a 4 mm box) shifts the integral; measured 0.2 %.
-  CHECK(remesh::integral(new_mesh, moved) == Approx(remesh::integral(old_mesh, f)).epsilon(0.01));
+  // Exact (the mean of x is x at the centroid) for a new element more than
+  // one old element's diameter (0.87 mm) from the boundary: the old elements
+  // it overlaps have no boundary node, so their limiter stays off.
+  int inside = 0;
+  for (int n = 0; n < new_mesh.tet_count(); ++n) {
+    bool deep = true;
+    for (int v : new_mesh.tets[n])
+      deep = deep && new_mesh.nodes[v].minCoeff() > 0.9 && new_mesh.nodes[v].maxCoeff() < 4.1;
+    if (!deep) continue;
+    ++inside;
+    CHECK(moved[n] == Approx(new_centres[n].x()).margin(1e-12));
+  }
+  CHECK(inside == 4 * 4 * 4 * 6); // the inner 4×4×4 cells, six tets each
 }
 
 TEST_CASE("A peak smaller than the new elements keeps its value", "[unit][remesh]") {
-  // One element of a 0.5 mm mesh at ε̄ 2, the rest at 1 + 0.01 x, onto a
-  // 1.3 mm mesh: no new centroid need fall in the peak element, and the
-  // reconstruction alone would give at most its neighbours' value.
+  // One element of a 0.5 mm mesh at ε̄ 2, the rest at 1, onto a 1.3 mm mesh.
   const mesh::TetMesh old_mesh = mesh::make_box({0, 0, 0}, {4, 3, 2}, 0.5);
   const mesh::TetMesh new_mesh = mesh::make_box({0, 0, 0}, {4, 3, 2}, 1.3);
   const std::vector<mesh::Point> old_centres = remesh::centroids(old_mesh);
-  std::vector<double> strain;
-  for (const mesh::Point& c : old_centres) strain.push_back(1.0 + 0.01 * c.x());
+  std::vector<double> strain(old_centres.size(), 1.0);
   const mesh::Point inside(2.1, 1.6, 1.1); // away from the boundary and from the new mesh's nodes
   const auto peak = std::min_element(old_centres.begin(), old_centres.end(), [&](const mesh::Point& a, const mesh::Point& b) {
     return (a - inside).norm() < (b - inside).norm();
   });
   strain[peak - old_centres.begin()] = 2.0;
   const remesh::PointLocator in_old(old_mesh);
+  const std::vector<double> remapped = remesh::remap_element(old_mesh, strain, in_old, new_mesh);
   const std::vector<double> moved = remesh::transfer_element(old_mesh, strain, in_old, new_mesh);
+  // The remap alone averages the peak over larger elements.
+  CHECK(*std::max_element(remapped.begin(), remapped.end()) < 1.2);
+  // With the peak kept: in exactly one new element, the only one changed;
+  // ∫ε̄ gains that element's rise times its volume and nothing else.
   CHECK(*std::max_element(moved.begin(), moved.end()) == 2.0);
-  // The peak is in one new element only; everywhere else the field is met
-  // within the limiter's clip (the neighbours of the peak see its range).
-  CHECK(std::count(moved.begin(), moved.end(), 2.0) == 1);
-  CHECK(std::count_if(moved.begin(), moved.end(), [](double v) { return v > 1.05 && v < 2.0; }) == 0);
+  int changed = -1;
+  for (int n = 0; n < new_mesh.tet_count(); ++n) {
+    if (moved[n] == remapped[n]) continue;
+    CHECK(changed == -1);
+    changed = n;
+  }
+  REQUIRE(changed >= 0);
+  CHECK(moved[changed] == 2.0);
+  CHECK(remesh::integral(new_mesh, moved) - remesh::integral(old_mesh, strain) ==
+        Approx((2.0 - remapped[changed]) * mesh::signed_volume(new_mesh, changed)).epsilon(1e-9));
 }
