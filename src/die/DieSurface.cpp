@@ -1,9 +1,23 @@
 #include "anvil/die/DieSurface.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace anvil::die {
+
+mesh::Point project_keeping(const DieSurface& surface, mesh::Point x, const std::array<bool, 3>& free,
+                            double tolerance) {
+  for (int pass = 0; pass < 20; ++pass) {
+    const mesh::Point closest = surface.project(x).point;
+    double moved = 0.0;
+    for (int k = 0; k < 3; ++k)
+      if (free[k]) moved = std::max(moved, std::abs(closest[k] - x[k])), x[k] = closest[k];
+    if (moved <= tolerance) break;
+  }
+  return x;
+}
 
 PlaneSurface::PlaneSurface(const mesh::Point& point, const Eigen::Vector3d& normal, double half_size)
     : point_(point), normal_(normal.normalized()) {

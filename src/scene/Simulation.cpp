@@ -762,23 +762,13 @@ bool Run::update_geometry(double dt, std::string& failure) {
   for (std::size_t i = 0; i < contact_.candidates().size(); ++i) {
     const contact::ContactCandidate& c = contact_.candidates()[i];
     const Eigen::Vector3d& shift = state_.dies[c.die].displacement;
-    die::SurfaceProjection p = dies_[c.die].surface->project(state_.mesh.nodes[c.node] - shift);
+    const die::SurfaceProjection p = dies_[c.die].surface->project(state_.mesh.nodes[c.node] - shift);
     if (contact_.pressure(int(i), state_.unknowns.nodal) <= 0.0 && p.distance >= 0.0) continue;
-    // Along the node's free directions only (a node on a symmetry plane stays
-    // on it): the closest point, restricted, then again from there, which
-    // converges onto the surface within the plane or along the axis (a node
-    // on the axis under a cone's apex: by cos²α a pass).
+    // Along the node's free directions only: a node on a symmetry plane stays on it.
+    const std::array<bool, 3> free{!imposed_.prescribed[4 * c.node], !imposed_.prescribed[4 * c.node + 1],
+                                   !imposed_.prescribed[4 * c.node + 2]};
     mesh::Point& x = state_.mesh.nodes[c.node];
-    for (int pass = 0; pass < 20; ++pass) {
-      double moved = 0.0;
-      for (int k = 0; k < 3; ++k)
-        if (!imposed_.prescribed[4 * c.node + k]) {
-          moved = std::max(moved, std::abs(p.point[k] + shift[k] - x[k]));
-          x[k] = p.point[k] + shift[k];
-        }
-      if (moved <= 1e-9 * reference_length_) break;
-      p = dies_[c.die].surface->project(x - shift);
-    }
+    x = shift + die::project_keeping(*dies_[c.die].surface, x - shift, free, 1e-9 * reference_length_);
   }
   for (int e = 0; e < state_.mesh.tet_count(); ++e)
     if (mesh::signed_volume(state_.mesh, e) <= 0.0) {
@@ -1017,9 +1007,12 @@ std::pair<int, double> Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetM
       const Eigen::Vector3d& shift = state_.dies[d].displacement;
       const die::SurfaceProjection p = dies_[d].surface->project(fresh.nodes[i] - shift);
       if (p.distance >= 0.0 || p.distance < -element_size) continue;
-      mesh::Point onto = p.point + shift;
+      // As after an increment: a node on a symmetry plane moves within it.
+      mesh::Point x = fresh.nodes[i];
+      std::array<bool, 3> free{true, true, true};
       for (const auto& [axis, coordinate] : symmetry_planes)
-        if (std::abs(fresh.nodes[i][axis] - coordinate) <= on_plane) onto[axis] = coordinate;
+        if (std::abs(x[axis] - coordinate) <= on_plane) x[axis] = coordinate, free[axis] = false;
+      const mesh::Point onto = shift + die::project_keeping(*dies_[d].surface, x - shift, free, 1e-9 * element_size);
       if (!guard.move(int(i), onto, case_.remeshing.quality)) continue;
       ++moved;
       deepest = std::max(deepest, -p.distance);

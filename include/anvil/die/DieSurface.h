@@ -36,6 +36,16 @@ public:
   virtual std::string describe() const = 0;
 };
 
+/// The point of `surface` nearest `x` that moves only the free coordinates
+/// of x (`free[k]` false: coordinate k stays, as on a symmetry plane): the
+/// closest point, restricted, then again from there, which converges onto
+/// the surface within the plane or along the axis (a node on the axis under
+/// a cone's apex: by cos²α a pass). Passes end when one moves the point less
+/// than `tolerance` (mm), or after 20. What puts a node onto a die, after an
+/// increment and after a remesh.
+mesh::Point project_keeping(const DieSurface& surface, mesh::Point x, const std::array<bool, 3>& free,
+                            double tolerance);
+
 /// An analytic flat die: the plane through `point` with outward normal
 /// `normal`; shown in the output as a square of side 2 × `half_size`.
 class PlaneSurface final : public DieSurface {
