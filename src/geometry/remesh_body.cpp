@@ -6,6 +6,7 @@
 #include "anvil/contact/SurfaceSearch.h"
 #include "anvil/core/error.h"
 #include "anvil/mesh/QualityGuard.h"
+#include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/tet_geometry.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -64,33 +65,15 @@ std::map<int, std::pair<mesh::Point, double>> flat_tags(const mesh::TetMesh& bod
   return plane;
 }
 
-/// Moves the nodes inside curved patches (every face around them on one)
-/// along their normal by the one distance that gives `mesh` the volume
-/// `target`: the chords of a re-triangulated curved surface cut the old
-/// surface by about h²/8R, a volume loss that must not accumulate over remeshes.
-void restore_volume(mesh::TetMesh& mesh, double target, const std::set<int>& curved) {
-  if (curved.empty()) return;
-  const std::size_t n = mesh.nodes.size();
-  std::vector<mesh::Point> normal(n, mesh::Point::Zero()); // Σ face area vectors / 3: the node's share of the surface
-  std::vector<char> movable(n, 0), fixed(n, 0);
-  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
-    const mesh::Point third = mesh::area_vector(mesh, mesh.boundary_faces[f]) / 3.0;
-    const bool on_curved = curved.count(mesh.boundary_tags[f]) > 0;
-    for (int v : mesh.boundary_faces[f]) {
-      normal[v] += third;
-      (on_curved ? movable : fixed)[v] = 1;
-    }
-  }
-  // dV = Σ (A_i · n_i) δ over the movable nodes, to first order.
-  double area = 0.0;
-  for (std::size_t v = 0; v < n; ++v)
-    if (movable[v] && !fixed[v]) area += normal[v].norm();
-  if (area <= 0.0) return;
-  for (int pass = 0; pass < 2; ++pass) { // the second pass removes the second-order rest
-    const double shift = (target - mesh::volume(mesh)) / area;
-    for (std::size_t v = 0; v < n; ++v)
-      if (movable[v] && !fixed[v]) mesh.nodes[v] += shift * normal[v].normalized();
-  }
+/// The nodes inside curved patches (every face around them on one): where
+/// the chords of a re-triangulated curved surface cut the old surface by
+/// about h²/8R, a volume loss that must not accumulate over remeshes.
+std::vector<char> inside_curved_patches(const mesh::TetMesh& mesh, const std::set<int>& curved) {
+  std::vector<char> movable(mesh.nodes.size(), 0), fixed(mesh.nodes.size(), 0);
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
+    for (int v : mesh.boundary_faces[f]) (curved.count(mesh.boundary_tags[f]) > 0 ? movable : fixed)[v] = 1;
+  for (std::size_t v = 0; v < movable.size(); ++v) movable[v] = movable[v] && !fixed[v];
+  return movable;
 }
 
 /// The four corners of a CGAL cell.
@@ -202,7 +185,7 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
     const auto& [normal, offset] = plane->second;
     for (int v : out.boundary_faces[f]) out.nodes[v] -= (normal.dot(out.nodes[v]) - offset) * normal;
   }
-  restore_volume(out, mesh::volume(body), curved_tags(body, patch, tag_of_patch));
+  mesh::restore_volume(out, mesh::volume(body), inside_curved_patches(out, curved_tags(body, patch, tag_of_patch)));
   mesh::validate(out, "remeshed body");
   return out;
 }
