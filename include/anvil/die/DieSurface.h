@@ -41,8 +41,8 @@ public:
 /// closest point, restricted, then again from there, which converges onto
 /// the surface within the plane or along the axis (a node on the axis under
 /// a cone's apex: by cos²α a pass). Passes end when one moves the point less
-/// than `tolerance` (mm), or after 20. What puts a node onto a die, after an
-/// increment and after a remesh.
+/// than `tolerance` (mm), or after 20 (an infinite tolerance: one pass).
+/// What puts a node onto a die, after an increment and after a remesh.
 mesh::Point project_keeping(const DieSurface& surface, mesh::Point x, const std::array<bool, 3>& free,
                             double tolerance);
 
