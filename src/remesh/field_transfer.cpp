@@ -151,6 +151,9 @@ std::vector<double> remap_element(const mesh::TetMesh& old_mesh, const std::vect
       else if (rise < 0.0) limit[e] = std::min(limit[e], (range.low[v] - values[e]) / rise);
     }
   }
+  auto reconstruction = [&](int e, const mesh::Point& x) {
+    return values[e] + limit[e] * gradient[e].dot(x - old_centres[e]);
+  };
   // Each new element takes the mean of the reconstruction over it: over the
   // old elements it overlaps, the reconstruction's integral on the common
   // part (a linear function's: its value at the part's centroid times the
@@ -169,14 +172,13 @@ std::vector<double> remap_element(const mesh::TetMesh& old_mesh, const std::vect
       const mesh::Overlap common = mesh::tet_overlap(corners, old_corners);
       if (common.volume <= 0.0) continue;
       covered += common.volume;
-      sum += common.volume * (values[e] + limit[e] * gradient[e].dot(common.centroid - old_centres[e]));
+      sum += common.volume * reconstruction(e, common.centroid);
     }
     if (covered > 0.0) {
       out[n] = sum / covered;
     } else { // wholly off the old mesh (not met in practice): the closest old element's reconstruction
       const mesh::Point centre = mesh::centroid(new_mesh, n);
-      const int e = in_old.locate(centre).tet;
-      out[n] = values[e] + limit[e] * gradient[e].dot(centre - old_centres[e]);
+      out[n] = reconstruction(in_old.locate(centre).tet, centre);
     }
   }
   return out;

@@ -862,7 +862,7 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     struct Try {
       mesh::TetMesh remeshed; ///< CGAL's mesh of the old body: the fields are transferred onto it
       mesh::TetMesh mesh;     ///< the same with its new boundary nodes put onto the dies
-      double edge_length = 0.0, volume_remeshed = 0.0, worst = 0.0;
+      double edge_length = 0.0, worst = 0.0;
       PutBack put_back;
     };
     auto make = [&](double scale) {
@@ -879,7 +879,6 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
       t.remeshed = remesh::remesh_body(part, settings);
       t.mesh = t.remeshed;
       t.edge_length = settings.edge_length;
-      t.volume_remeshed = mesh::volume(t.mesh);
       t.put_back = put_onto_dies(t.mesh, part, int(b), settings.edge_length);
       t.worst = remesh::worst_quality(t.mesh);
       return t;
@@ -893,7 +892,7 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
       if (again.worst > best.worst) best = std::move(again);
     }
     mesh::TetMesh& fresh = best.mesh;
-    const double volume_before = mesh::volume(part), volume_remeshed = best.volume_remeshed;
+    const double volume_before = mesh::volume(part), volume_remeshed = mesh::volume(best.remeshed);
     const double volume_after = mesh::volume(fresh);
     // Nodal v and p interpolated: the next Newton's first guess. ε̄ by a
     // conservative remap onto the mesh CGAL made of the old body (the same

@@ -1,5 +1,5 @@
-// Giving a mesh back a volume it lost at its surface (chords of a remeshed
-// curve; overlap with a die taken off after a remesh).
+// Giving a mesh back a volume it lost at its surface (the chords of a
+// remeshed curved patch cut into it).
 #pragma once
 #include "anvil/mesh/TetMesh.h"
 
