@@ -228,7 +228,7 @@ void BodyContact::set_increment(const ContactIncrement& increment) {
 
 double BodyContact::mean_gap_velocity(std::size_t index, const Eigen::VectorXd& nodal) const {
   const Multiplier& m = multipliers_[index];
-  double c = -m.gap_sum / increment_.time_step;
+  double c = -m.gap_sum / increment_.closing_time(m.gap_sum);
   for (int s = m.first; s < m.first + m.count; ++s)
     c += support_[s].normal.dot(nodal.segment<3>(kDofsPerNode * support_[s].node));
   return c / m.node_weight;

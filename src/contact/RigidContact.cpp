@@ -42,7 +42,7 @@ void RigidContact::search(const mesh::TetMesh& mesh, const std::vector<DieView>&
 
 double RigidContact::gap_velocity(const ContactCandidate& c, const Eigen::VectorXd& nodal) const {
   const Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * c.node) - dies_[c.die].velocity;
-  return -relative.dot(c.normal) - c.gap / increment_.time_step;
+  return -relative.dot(c.normal) - c.gap / increment_.closing_time(c.gap);
 }
 
 double RigidContact::pressure(int i, const Eigen::VectorXd& nodal) const {

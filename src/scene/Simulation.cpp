@@ -267,6 +267,7 @@ private:
   contact::RigidContact contact_;
   std::unique_ptr<contact::BodyContact> pair_contact_; ///< built only when the case has contact pairs
   std::vector<double> node_flow_stress_, node_consistency_;
+  std::unique_ptr<mesh::QualityGuard> projection_guard_; ///< on state_.mesh, rebuilt when its elements change
   ElementFields solved_; ///< ε̄̇ and σ per element of the last converged increment
   std::unique_ptr<io::VtkSeries> series_;
   solver::NewtonReport last_report_;
@@ -399,6 +400,7 @@ void Run::adopt_mesh() {
     if (imposed_.prescribed[k]) state_.unknowns.nodal[k] = imposed_.values[k];
   node_flow_stress_.assign(state_.mesh.nodes.size(), 0.0);
   node_consistency_.assign(state_.mesh.nodes.size(), 0.0);
+  projection_guard_ = std::make_unique<mesh::QualityGuard>(state_.mesh);
   if (solver_) solver_ = std::make_unique<solver::IncrementSolver>(state_.mesh, imposed_.prescribed, case_.linear_solver, timers_);
 }
 
@@ -491,7 +493,8 @@ bool Run::try_increment(double dt, solver::NewtonReport& report) {
   // Gap tolerance: a penetration velocity of 1e-4 of the reference speed is
   // 1e-4 of the stroke over the run, and projection removes it anyway.
   const contact::ContactIncrement increment{dt, penalty_, case_.contact.regularisation * reference_velocity_,
-                                            1e-4 * reference_velocity_, &node_flow_stress_, &node_consistency_};
+                                            1e-4 * reference_velocity_, nominal_step_, &node_flow_stress_,
+                                            &node_consistency_};
   {
     Timers::Scope scope(timers_, "search");
     if (!dies_.empty()) contact_.search(state_.mesh, views, reach);
@@ -771,8 +774,12 @@ bool Run::update_geometry(double dt, std::string& failure) {
     // Along the node's free directions only: a node on a symmetry plane stays on it.
     const std::array<bool, 3> free{!imposed_.prescribed[4 * c.node], !imposed_.prescribed[4 * c.node + 1],
                                    !imposed_.prescribed[4 * c.node + 2]};
-    mesh::Point& x = state_.mesh.nodes[c.node];
-    x = shift + die::project_keeping(*dies_[c.die].surface, x - shift, free, 1e-9 * reference_length_);
+    // Not where the move would invert an element: a node left inside by a
+    // remesh's put-back, where the die corner needs an element flattened,
+    // stays in until the next remesh, rather than ending the run.
+    const mesh::Point& x = state_.mesh.nodes[c.node];
+    projection_guard_->move(c.node, shift + die::project_keeping(*dies_[c.die].surface, x - shift, free,
+                                                                 1e-9 * reference_length_), 0.0);
   }
   for (int e = 0; e < state_.mesh.tet_count(); ++e)
     if (mesh::signed_volume(state_.mesh, e) <= 0.0) {

@@ -2,6 +2,7 @@
 // is solved in: Δt, the penalty, the friction regularisation, the active-set
 // hysteresis, and the per-node material scales of friction.
 #pragma once
+#include <algorithm>
 #include <vector>
 
 namespace anvil::contact {
@@ -12,8 +13,17 @@ struct ContactIncrement {
   double penalty;         ///< ρ (MPa·s/mm)
   double regularisation;  ///< friction w₀ (mm/s)
   double gap_tolerance;   ///< mm/s: the active set changes at convergence only beyond ±this
+  double recovery_time;   ///< s: a penetration present at the start is removed over at least this (the nominal Δt)
   const std::vector<double>* flow_stress = nullptr; ///< σ₀ per node (MPa), for Tresca
   const std::vector<double>* consistency = nullptr; ///< K per node, for Norton friction
+
+  /// The time t over which a gap δ₀ (mm) is closed in the condition
+  /// δ₀ + t (v − v_die)·n ≥ 0 (paper eq. 4, linearised): Δt for an open gap,
+  /// at least the nominal step for a penetration. A node left inside a die
+  /// (by a remesh's put-back) is otherwise pushed out by |δ₀| in one
+  /// increment at any Δt, so no time-step cut could save an element that
+  /// push inverts.
+  double closing_time(double gap) const { return gap < 0.0 ? std::max(time_step, recovery_time) : time_step; }
 };
 
 } // namespace anvil::contact
