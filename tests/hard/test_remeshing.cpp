@@ -94,7 +94,7 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
 }
 
 // Known shortfalls, reported but not failing. In the flash stage the load
-// just after a remesh is 3.7-8.0 % off trend at 1-2 of 16-21 remeshes per
+// just after a remesh is 3.7-8.0 % off trend at 2-3 of 16-21 remeshes per
 // run (up to 8.6 % at increments without a remesh, where contact events
 // shorten increments), and the volume ends at −0.26 to −1.26 % over the run:
 // each remesh there puts 100-300 new boundary nodes onto the dies, up to
