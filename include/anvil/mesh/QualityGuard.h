@@ -1,6 +1,7 @@
 // Moving single nodes of a finished mesh (a new boundary node back onto the
-// old surface or onto a die, after a remesh) without spoiling the elements
-// around them: a move is judged by the worst element it leaves behind.
+// old surface or onto a die after a remesh, a contact node onto its die after
+// an increment) without spoiling the elements around them: a move is judged
+// by the worst element it leaves behind.
 #pragma once
 #include "anvil/mesh/TetMesh.h"
 
