@@ -914,6 +914,7 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     if (carries_stress) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // a flowing body carries none
 
     auto relative = [](double after, double before) { return before != 0.0 ? after / before - 1.0 : after - before; };
+    const double strain_remeshed = remesh::integral(best.remeshed, fresh_strain); // ∫ε̄ dV before the put-back
     const RemeshRecord record{state_.increment,
                               int(b),
                               part.node_count(),
@@ -921,7 +922,7 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
                               remesh::worst_quality(part),
                               best.worst,
                               relative(volume_remeshed, volume_before),
-                              relative(remesh::integral(best.remeshed, fresh_strain), remesh::integral(part, part_strain)),
+                              relative(strain_remeshed, remesh::integral(part, part_strain)),
                               relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
                                        *std::max_element(part_strain.begin(), part_strain.end())),
                               seconds_since(start)};
@@ -940,7 +941,7 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
       log::info("    %d new boundary nodes were inside a die (deepest %.3g mm), put onto its surface: volume %+.4f%%, "
                 "integral of strain %+.3f%% (contact projection)", best.put_back.nodes, best.put_back.deepest,
                 100.0 * relative(volume_after, volume_remeshed),
-                100.0 * relative(remesh::integral(fresh, fresh_strain), remesh::integral(best.remeshed, fresh_strain)));
+                100.0 * relative(remesh::integral(fresh, fresh_strain), strain_remeshed));
   }
   state_.unknowns.nodal = Eigen::Map<const Eigen::VectorXd>(nodal.data(), static_cast<Eigen::Index>(nodal.size()));
   state_.unknowns.bubble = Eigen::VectorXd::Zero(3 * next.tet_count()); // condensed per element: a zero guess
