@@ -514,6 +514,10 @@ bool Run::try_increment(double dt, solver::NewtonReport& report) {
       const double volume = mesh::volume(state_.mesh, body.range);
       // Restored over at least the nominal increment, so a short increment
       // (a stop criterion, a cut) does not get a large dilatation.
+      // Over two nominal increments (tried, flash case) the load was smoother
+      // in the last millimetre but the run took 24 remeshes instead of 16-21
+      // and ended at -1.56 % volume; over half of one, the load jumped 8-9 %
+      // after the last remeshes.
       const double g = (body.initial_volume - volume) / (volume * std::max(dt, nominal_step_));
       for (int e = body.range.first_tet; e < body.range.first_tet + body.range.tet_count; ++e) {
         const double quarter = 0.25 * mesh::signed_volume(state_.mesh, e);
@@ -1003,6 +1007,8 @@ Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, 
   // Giving the volume taken off back on the free surface at once (tried)
   // kept the run's volume within 0.05 % but moved the flash edge by up to
   // 0.6 mm in the last remeshes, and the load jumped by up to 10 %.
+  // Without the put-back (tried, flash case, full stroke) the load after a
+  // remesh was up to 13 % off its trend, and 24 % at other increments.
   const std::vector<char> on_boundary = mesh::boundary_node_flags(fresh);
   mesh::QualityGuard guard(fresh);
   // The body's symmetry planes, axis-aligned (BoundaryCondition): the axis
