@@ -492,9 +492,13 @@ bool Run::try_increment(double dt, solver::NewtonReport& report) {
   const double reach = 2.0 * (die_speed + std::max(body_speed, die_speed)) * dt + 0.05 * reference_length_;
   // Gap tolerance: a penetration velocity of 1e-4 of the reference speed is
   // 1e-4 of the stroke over the run, and projection removes it anyway.
-  const contact::ContactIncrement increment{dt, penalty_, case_.contact.regularisation * reference_velocity_,
-                                            1e-4 * reference_velocity_, nominal_step_, &node_flow_stress_,
-                                            &node_consistency_};
+  const contact::ContactIncrement increment{.time_step = dt,
+                                            .penalty = penalty_,
+                                            .regularisation = case_.contact.regularisation * reference_velocity_,
+                                            .gap_tolerance = 1e-4 * reference_velocity_,
+                                            .recovery_time = nominal_step_,
+                                            .flow_stress = &node_flow_stress_,
+                                            .consistency = &node_consistency_};
   {
     Timers::Scope scope(timers_, "search");
     if (!dies_.empty()) contact_.search(state_.mesh, views, reach);
@@ -1038,6 +1042,7 @@ Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, 
       if (p.distance >= 0.0 || p.distance < -element_size) continue;
       const mesh::Point onto = shift + die::project_keeping(*dies_[d].surface, x - shift, free, one_pass);
       if (!guard.move(int(i), onto, case_.remeshing.quality)) continue;
+      x = onto; // a later die projects the node from where it now is
       ++done.nodes;
       done.deepest = std::max(done.deepest, -p.distance);
     }

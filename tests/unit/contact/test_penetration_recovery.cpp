@@ -17,7 +17,11 @@ double pressure(const mesh::TetMesh& block, const die::DieSurface& die, int node
   contact::RigidContact contact;
   contact.search(block, {{&die, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), {}}}, 1.0);
   const double penalty = 10.0, nominal_step = 1.0;
-  contact.set_increment({time_step, penalty, 1e-3, 1e-9, nominal_step});
+  contact.set_increment({.time_step = time_step,
+                         .penalty = penalty,
+                         .regularisation = 1e-3,
+                         .gap_tolerance = 1e-9,
+                         .recovery_time = nominal_step});
   Eigen::VectorXd nodal = Eigen::VectorXd::Zero(fem::kDofsPerNode * block.node_count());
   nodal[fem::kDofsPerNode * node + 2] = velocity_z;
   for (std::size_t i = 0; i < contact.candidates().size(); ++i)
