@@ -6,14 +6,17 @@
 
 #include "anvil/contact/BodyContact.h"
 #include "anvil/contact/RigidContact.h"
+#include "anvil/contact/SurfaceSearch.h"
 #include "anvil/core/Timers.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/die/overlap_volume.h"
 #include "anvil/fem/mini_element.h"
 #include "anvil/io/VtkSeries.h"
 #include "anvil/io/atomic_file.h"
 #include "anvil/mesh/QualityGuard.h"
 #include "anvil/mesh/generators.h"
+#include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/mesh_io.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/die_feature_depth.h"
@@ -31,6 +34,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <tuple>
 
@@ -184,17 +188,32 @@ private:
   /// Quality watch after an increment of length `dt`: the bodies to remesh,
   /// each with why (empty when none).
   std::vector<std::pair<int, std::string>> remesh_triggers(double dt);
+  /// Volume (mm³) of body `b`'s mesh inside the dies (die::overlap_volume);
+  /// `range` is where that mesh sits in `mesh`.
+  double die_overlap(const mesh::TetMesh& mesh, const mesh::MeshRange& range, int b) const;
+  /// inside_dies_ for the mesh and dies as they are now.
+  void measure_inside_dies();
   /// Remeshes the bodies of `which`, transfers the fields, adopts the new mesh.
   void remesh(const std::vector<std::pair<int, std::string>>& which);
   /// What put_onto_dies did.
   struct PutBack {
-    int nodes = 0;        ///< boundary nodes put onto a die
+    int nodes = 0;        ///< boundary nodes put onto a die from inside it
     double deepest = 0.0; ///< the deepest of them was (mm)
+    int closed = 0;       ///< boundary nodes put onto a die across a gap, where the old surface touched it
+    double widest = 0.0;  ///< the widest such gap (mm)
+    double given_back = 0.0; ///< mm³ of material then given back on the free surface (give_back_material)
   };
-  /// Boundary nodes of a new body mesh that lie inside a die, put onto its
-  /// surface. Nodes on a symmetry plane of `body` (as it lies in `old`, its
-  /// mesh before) stay on it.
+  /// Boundary nodes of a new body mesh that lie inside a die, or where the
+  /// old mesh touched it, put onto its surface. Nodes on a symmetry plane of
+  /// `body` (as it lies in `old`, its mesh before) stay on it.
   PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body, double element_size) const;
+  /// The material volume (mesh less die overlap) the remesh and put-back of
+  /// body `body` lost, from `old` to `fresh`, given back on `fresh`'s free
+  /// surface (not on a die, not on a symmetry plane). Returns it (mm³).
+  double give_back_material(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body, double element_size) const;
+  /// Body `body`'s symmetry planes, axis-aligned (BoundaryCondition): the
+  /// axis and the coordinate, read on its mesh `mesh`.
+  std::vector<std::pair<int, double>> symmetry_planes(const mesh::TetMesh& mesh, int body) const;
   /// Adaptive size field for remeshing body `body` (issue 5 point 3): the
   /// edge length wanted at a point for a remesh at `scale` times the body's
   /// size, between scale × `smallest` and scale × `coarse` (mm). `old` is the
@@ -258,6 +277,8 @@ private:
   double penalty_ = 0.0;            ///< MPa·s/mm
   double reference_force_ = 0.0;    ///< N, mean flow stress × body area
   bool compensate_volume_ = false;
+  std::vector<double> inside_dies_; ///< mm³ per body, of its mesh inside the dies (measure_inside_dies)
+  double compensation_asked_ = 0.0; ///< mm³, Σ g V Δt of the increment tried last (try_increment)
   double nominal_step_ = 0.0;       ///< s, Δt from the stroke increment alone
   Eigen::VectorXd external_;        ///< external vector of the increment (forces, compensation)
 
@@ -402,6 +423,7 @@ void Run::adopt_mesh() {
   node_consistency_.assign(state_.mesh.nodes.size(), 0.0);
   projection_guard_ = std::make_unique<mesh::QualityGuard>(state_.mesh);
   if (solver_) solver_ = std::make_unique<solver::IncrementSolver>(state_.mesh, imposed_.prescribed, case_.linear_solver, timers_);
+  measure_inside_dies();
 }
 
 void Run::log_header() const {
@@ -509,20 +531,27 @@ bool Run::try_increment(double dt, solver::NewtonReport& report) {
   // Volume compensation: the flow of this increment is asked to restore the
   // volume each incompressible body lost so far (explicit update error, O(Δt)
   // over a run, and contact projection): ∫ q div v = ∫ q g with
-  // g = (V₀ − V)/(V Δt), entered as the pressure rows of the external vector
-  // (r_p = −∫N (div v − g)).
+  // g = (V₀ − V_m)/(V Δt), entered as the pressure rows of the external
+  // vector (r_p = −∫N (div v − g)). V_m is the material: the mesh less what
+  // overlaps the dies (die::overlap_volume). Counting the overlap (0.5-1 %
+  // in the flash) as volume, the material was short by as much, and each
+  // remesh's put-back uncovered it at once: restored over one step, the load
+  // jumped by up to 8 %.
   external_ = imposed_.nodal_forces;
+  compensation_asked_ = 0.0;
   if (compensate_volume_)
     for (const Body& body : bodies_) {
       if (std::isfinite(body.law->bulk_modulus())) continue;
       const double volume = mesh::volume(state_.mesh, body.range);
+      const double material = volume - inside_dies_[&body - bodies_.data()];
       // Restored over at least the nominal increment, so a short increment
       // (a stop criterion, a cut) does not get a large dilatation.
       // Over two nominal increments (tried, flash case) the load was smoother
       // in the last millimetre but the run took 24 remeshes instead of 16-21
       // and ended at -1.56 % volume; over half of one, the load jumped 8-9 %
       // after the last remeshes.
-      const double g = (body.initial_volume - volume) / (volume * std::max(dt, nominal_step_));
+      const double g = (body.initial_volume - material) / (volume * std::max(dt, nominal_step_));
+      compensation_asked_ += g * volume * dt;
       for (int e = body.range.first_tet; e < body.range.first_tet + body.range.tet_count; ++e) {
         const double quarter = 0.25 * mesh::signed_volume(state_.mesh, e);
         for (int node : state_.mesh.tets[e]) external_[4 * node + 3] -= g * quarter;
@@ -767,9 +796,6 @@ bool Run::update_geometry(double dt, std::string& failure) {
   solved_ = element_fields(state_.mesh, element_laws_, states_, state_.unknowns);
   // x ← x + Δt v; contact nodes back onto the die at its new position.
   const double volume_before = mesh::volume(state_.mesh);
-  double volume_missing = 0.0; // what the compensation asked the incompressible bodies to restore
-  for (const Body& body : bodies_)
-    if (!std::isfinite(body.law->bulk_modulus())) volume_missing += body.initial_volume - mesh::volume(state_.mesh, body.range);
   for (int i = 0; i < state_.mesh.node_count(); ++i) state_.mesh.nodes[i] += dt * state_.unknowns.nodal.segment<3>(4 * i);
   for (std::size_t d = 0; d < dies_.size(); ++d) dies_[d].advance(state_.dies[d], dt);
   record_loads(state_.increment + 1, state_.time + dt);
@@ -796,11 +822,11 @@ bool Run::update_geometry(double dt, std::string& failure) {
     }
   const double volume_after = mesh::volume(state_.mesh);
   state_.volume.solver += volume_flow - volume_before;
-  if (compensate_volume_) // g V Δt, with g as set in try_increment()
-    state_.volume.compensation += volume_missing * std::min(1.0, dt / nominal_step_);
+  state_.volume.compensation += compensation_asked_;
   state_.volume.projection += volume_after - volume_flow;
   state_.volume.largest_increment =
       std::max(state_.volume.largest_increment, std::abs(volume_after - volume_before) / volume_before);
+  measure_inside_dies();
   return true;
 }
 
@@ -895,6 +921,7 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
       t.mesh = t.remeshed;
       t.edge_length = settings.edge_length;
       t.put_back = put_onto_dies(t.mesh, part, int(b), settings.edge_length);
+      t.put_back.given_back = give_back_material(t.mesh, part, int(b), settings.edge_length);
       t.worst = remesh::worst_quality(t.mesh);
       return t;
     };
@@ -934,10 +961,12 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
                               relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
                                        *std::max_element(part_strain.begin(), part_strain.end())),
                               seconds_since(start)};
-    // What the remesh changed, and apart, the die overlap taken off: a
-    // contact projection, as after an increment.
-    state_.volume.remeshing += volume_remeshed - volume_before;
-    state_.volume.projection += volume_after - volume_remeshed;
+    // What the remesh changed, with the material it gave back, and apart,
+    // the die overlap the put-back took off: a contact projection, as after
+    // an increment.
+    const double given_back = best.put_back.given_back;
+    state_.volume.remeshing += volume_remeshed - volume_before + given_back;
+    state_.volume.projection += volume_after - given_back - volume_remeshed;
     state_.remeshes.push_back(record);
     log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm; worst quality %.3f -> %.3f; "
               "volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
@@ -945,11 +974,16 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
               fresh.tet_count(), best.edge_length, record.worst_quality_before, record.worst_quality_after,
               100.0 * record.volume_change, 100.0 * record.strain_integral_change, 100.0 * record.strain_max_change,
               record.seconds);
-    if (best.put_back.nodes > 0)
-      log::info("    %d new boundary nodes were inside a die (deepest %.3g mm), put onto its surface: volume %+.4f%%, "
-                "integral of strain %+.3f%% (contact projection)", best.put_back.nodes, best.put_back.deepest,
-                100.0 * relative(volume_after, volume_remeshed),
-                100.0 * relative(remesh::integral(fresh, fresh_strain), strain_remeshed));
+    if (best.put_back.nodes + best.put_back.closed > 0)
+      log::info("    put onto the dies: %d new boundary nodes inside them (deepest %.3g mm), %d off them where the old "
+                "surface touched (widest gap %.3g mm): volume %+.4f%%, integral of strain %+.3f%% (contact "
+                "projection); material given back on the free surface %+.4f%%; inside the dies %.3f%% of the "
+                "volume (%.3f%% before the remesh)",
+                best.put_back.nodes, best.put_back.deepest, best.put_back.closed, best.put_back.widest,
+                100.0 * (volume_after - given_back - volume_remeshed) / volume_before,
+                100.0 * relative(remesh::integral(fresh, fresh_strain), strain_remeshed), 100.0 * given_back / volume_before,
+                100.0 * die_overlap(fresh, mesh::whole_range(fresh), int(b)) / volume_before,
+                100.0 * die_overlap(part, mesh::whole_range(part), int(b)) / volume_before);
   }
   state_.unknowns.nodal = Eigen::Map<const Eigen::VectorXd>(nodal.data(), static_cast<Eigen::Index>(nodal.size()));
   state_.unknowns.bubble = Eigen::VectorXd::Zero(3 * next.tet_count()); // condensed per element: a zero guess
@@ -992,6 +1026,19 @@ std::function<double(const mesh::Point&, double)> Run::adaptive_size(int body, c
   };
 }
 
+void Run::measure_inside_dies() {
+  Timers::Scope scope(timers_, "die overlap");
+  inside_dies_.assign(bodies_.size(), 0.0);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) inside_dies_[b] = die_overlap(state_.mesh, state_.bodies[b], int(b));
+}
+
+double Run::die_overlap(const mesh::TetMesh& mesh, const mesh::MeshRange& range, int b) const {
+  double overlap = 0.0;
+  for (std::size_t d = 0; d < dies_.size(); ++d)
+    overlap += die::overlap_volume(mesh, range, *dies_[d].surface, state_.dies[d].displacement, bodies_[b].remesh_size);
+  return overlap;
+}
+
 Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body,
                                 double element_size) const {
   // The new boundary lies on the old one, and nodal contact lets a die
@@ -1008,46 +1055,95 @@ Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, 
   // often; the next increment's contact closes what is left. Moved in full
   // and refused by the guard, such a node was pushed out by the contact in
   // one increment, at any time step, and inverted an element (flash case).
-  // Giving the volume taken off back on the free surface at once (tried)
-  // kept the run's volume within 0.05 % but moved the flash edge by up to
-  // 0.6 mm in the last remeshes, and the load jumped by up to 10 %.
+  // A node on an old face whose three nodes were in contact with a die is
+  // put onto it from outside too (up to a quarter element away): what
+  // touched the die still does, rather than leave a gap the next increment
+  // must close.
   // Without the put-back (tried, flash case, full stroke) the load after a
   // remesh was up to 13 % off its trend, and 24 % at other increments.
   const std::vector<char> on_boundary = mesh::boundary_node_flags(fresh);
   mesh::QualityGuard guard(fresh);
-  // The body's symmetry planes, axis-aligned (BoundaryCondition): the axis
-  // and the coordinate, from the old mesh, whose faces were checked planar.
-  std::vector<std::pair<int, double>> symmetry_planes;
-  for (const BoundaryCondition& bc : bodies_[body].conditions) {
-    if (bc.kind != BoundaryKind::symmetry) continue;
-    const std::vector<int> faces = select_faces(old, bc.faces);
-    if (faces.empty()) continue;
-    const mesh::Triangle& face = old.boundary_faces[faces.front()];
-    int axis = 0;
-    mesh::area_vector(old, face).cwiseAbs().maxCoeff(&axis);
-    symmetry_planes.emplace_back(axis, old.nodes[face[0]][axis]);
-  }
+  const std::vector<std::pair<int, double>> planes = symmetry_planes(old, body);
   const double on_plane = 1e-6 * element_size;
+  // The old nodes in contact after the increment just solved, by die.
+  std::vector<int> contact_die(old.nodes.size(), -1);
+  const mesh::MeshRange& range = state_.bodies[body];
+  for (std::size_t c = 0; c < contact_.candidates().size(); ++c) {
+    const contact::ContactCandidate& candidate = contact_.candidates()[c];
+    if (range.has_node(candidate.node) && contact_.pressure(int(c), state_.unknowns.nodal) > 0.0)
+      contact_die[candidate.node - range.first_node] = candidate.die;
+  }
+  const contact::SurfaceSearch old_surface(old.nodes, old.boundary_faces);
+  const double widest_gap = 0.25 * element_size;
   PutBack done;
   const double one_pass = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < fresh.nodes.size(); ++i) {
     if (!on_boundary[i]) continue;
     mesh::Point x = fresh.nodes[i];
     std::array<bool, 3> free{true, true, true};
-    for (const auto& [axis, coordinate] : symmetry_planes)
+    for (const auto& [axis, coordinate] : planes)
       if (std::abs(x[axis] - coordinate) <= on_plane) x[axis] = coordinate, free[axis] = false;
+    const mesh::Triangle& old_face = old.boundary_faces[old_surface.closest(x).face];
+    const int touched = contact_die[old_face[0]];
+    const bool on_contact_face = touched >= 0 && contact_die[old_face[1]] == touched && contact_die[old_face[2]] == touched;
     for (std::size_t d = 0; d < dies_.size(); ++d) {
       const Eigen::Vector3d& shift = state_.dies[d].displacement;
       const die::SurfaceProjection p = dies_[d].surface->project(fresh.nodes[i] - shift);
-      if (p.distance >= 0.0 || p.distance < -element_size) continue;
+      const bool inside = p.distance < 0.0 && p.distance >= -element_size;
+      const bool across_gap = !inside && on_contact_face && touched == int(d) && p.distance <= widest_gap;
+      if (!inside && !across_gap) continue;
       const mesh::Point onto = shift + die::project_keeping(*dies_[d].surface, x - shift, free, one_pass);
       if (!guard.move(int(i), onto, case_.remeshing.quality)) continue;
       x = onto; // a later die projects the node from where it now is
-      ++done.nodes;
-      done.deepest = std::max(done.deepest, -p.distance);
+      if (inside) ++done.nodes, done.deepest = std::max(done.deepest, -p.distance);
+      else ++done.closed, done.widest = std::max(done.widest, p.distance);
     }
   }
   return done;
+}
+
+std::vector<std::pair<int, double>> Run::symmetry_planes(const mesh::TetMesh& mesh, int body) const {
+  std::vector<std::pair<int, double>> planes;
+  for (const BoundaryCondition& bc : bodies_[body].conditions) {
+    if (bc.kind != BoundaryKind::symmetry) continue;
+    const std::vector<int> faces = select_faces(mesh, bc.faces); // checked planar
+    if (faces.empty()) continue;
+    const mesh::Triangle& face = mesh.boundary_faces[faces.front()];
+    int axis = 0;
+    mesh::area_vector(mesh, face).cwiseAbs().maxCoeff(&axis);
+    planes.emplace_back(axis, mesh.nodes[face[0]][axis]);
+  }
+  return planes;
+}
+
+double Run::give_back_material(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body,
+                               double element_size) const {
+  // The new boundary's chords cut into the old surface, and the put-back
+  // takes off more than the overlap in places: in the flash stage 0.2-0.6 %
+  // of the material per remesh. The volume compensation would restore it by
+  // pushing flow into the closing die, which shows as a jump of the load
+  // (up to 8 % after a remesh, flash case). Given back at once where the
+  // material is free, the flash edge and the unfilled corners move out by
+  // 0.003-0.13 mm. Giving back the whole put-back, overlap included (tried),
+  // moved the flash edge by up to 0.6 mm and the load jumped by up to 10 %.
+  if (dies_.empty()) return 0.0;
+  const double material_before = mesh::volume(old) - die_overlap(old, mesh::whole_range(old), body);
+  const double overlap = die_overlap(fresh, mesh::whole_range(fresh), body);
+  const double volume = mesh::volume(fresh);
+  // Free: farther than a tenth of an element from every die (their moves
+  // leave the overlap as it is), and off the symmetry planes.
+  std::vector<char> free = mesh::boundary_node_flags(fresh);
+  const std::vector<std::pair<int, double>> planes = symmetry_planes(old, body);
+  for (std::size_t i = 0; i < free.size(); ++i) {
+    if (!free[i]) continue;
+    const mesh::Point& x = fresh.nodes[i];
+    for (const auto& [axis, coordinate] : planes)
+      if (std::abs(x[axis] - coordinate) <= 1e-6 * element_size) free[i] = 0;
+    for (std::size_t d = 0; d < dies_.size() && free[i]; ++d)
+      if (dies_[d].surface->project(x - state_.dies[d].displacement).distance < 0.1 * element_size) free[i] = 0;
+  }
+  mesh::restore_volume(fresh, material_before + overlap, free);
+  return mesh::volume(fresh) - volume;
 }
 
 void Run::execute() {
@@ -1163,12 +1259,14 @@ void Run::execute() {
     // Time left: this run's pace over the progress made in it (stop criteria fraction).
     const double done = progress(), elapsed = seconds_since(start_) - resumed_time_;
     const double eta = done > progress_at_start ? elapsed / (done - progress_at_start) * (1.0 - done) : 0.0;
-    log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN  newton %zu  contact %d  volume %+.3f%%  "
-              "left ~%s",
+    log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN  newton %zu  contact %d  volume %+.3f%% "
+              "(%.3f%% inside dies)  left ~%s",
               state_.increment, state_.time, lead.stroke, dt, surfaces_[lead.surface].name.c_str(),
               lead.force.norm() / 1e3, report.iterations.size(),
               (dies_.empty() ? 0 : contact_.active_count()) + (pair_contact_ ? pair_contact_->active_count() : 0),
-              100.0 * (mesh::volume(state_.mesh) / state_.volume.initial - 1.0), clock_text(eta).c_str());
+              100.0 * (mesh::volume(state_.mesh) / state_.volume.initial - 1.0),
+              100.0 * std::accumulate(inside_dies_.begin(), inside_dies_.end(), 0.0) / state_.volume.initial,
+              clock_text(eta).c_str());
     if (case_.remeshing.enabled && stop_reason().empty()) {
       const auto due = remesh_triggers(dt);
       if (!due.empty()) remesh(due);
@@ -1184,6 +1282,7 @@ void Run::write_summary(double total) const {
   std::ostringstream summary;
   summary.precision(10);
   const double volume_end = mesh::volume(state_.mesh);
+  const double inside_dies = std::accumulate(inside_dies_.begin(), inside_dies_.end(), 0.0);
   summary << "{\n  \"case\": " << json_string(case_.path) << ",\n  \"title\": " << json_string(case_.title) << ",\n"
           << "  \"anvil_version\": " << json_string(ANVIL_VERSION) << ",\n  \"bodies\": [";
   for (std::size_t b = 0; b < bodies_.size(); ++b)
@@ -1202,7 +1301,9 @@ void Run::write_summary(double total) const {
           << state_.volume.projection << ", \"change_remeshing\": " << state_.volume.remeshing
           << ", \"largest_relative_change_per_increment\": "
           << state_.volume.largest_increment << ", \"relative_change\": "
-          << (state_.volume.initial > 0 ? volume_end / state_.volume.initial - 1.0 : 0.0) << "},\n";
+          << (state_.volume.initial > 0 ? volume_end / state_.volume.initial - 1.0 : 0.0)
+          << ", \"inside_dies_end\": " << inside_dies << ", \"material_relative_change\": "
+          << (state_.volume.initial > 0 ? (volume_end - inside_dies) / state_.volume.initial - 1.0 : 0.0) << "},\n";
   if (case_.remeshing.enabled) {
     double seconds = 0.0;
     for (const RemeshRecord& r : state_.remeshes) seconds += r.seconds;

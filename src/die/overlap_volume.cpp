@@ -1,0 +1,55 @@
+#include "anvil/die/overlap_volume.h"
+
+#include <algorithm>
+#include <array>
+
+namespace anvil::die {
+
+namespace {
+
+constexpr int n = 4; ///< a face is cut into n² sub-triangles
+
+/// The sub-triangles' centroids, in barycentric coordinates (b, c) of a face (a, b, c).
+const std::array<Eigen::Vector2d, n * n> samples = [] {
+  std::array<Eigen::Vector2d, n * n> at{};
+  int k = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; i + j < n; ++j) {
+      at[k++] = Eigen::Vector2d(i + 1.0 / 3.0, j + 1.0 / 3.0) / n;
+      if (i + j < n - 1) at[k++] = Eigen::Vector2d(i + 2.0 / 3.0, j + 2.0 / 3.0) / n;
+    }
+  return at;
+}();
+
+} // namespace
+
+double overlap_volume(const mesh::TetMesh& mesh, const mesh::MeshRange& body, const DieSurface& surface,
+                      const Eigen::Vector3d& shift, double deepest) {
+  double volume = 0.0;
+  for (int f = body.first_face; f < body.first_face + body.face_count; ++f) {
+    const mesh::Triangle& face = mesh.boundary_faces[f];
+    const mesh::Point &a = mesh.nodes[face[0]], &b = mesh.nodes[face[1]], &c = mesh.nodes[face[2]];
+    const mesh::Point centroid = (a + b + c) / 3.0;
+    const double radius = std::max({(a - centroid).norm(), (b - centroid).norm(), (c - centroid).norm()});
+    if (surface.project(centroid - shift).distance > radius) continue; // the die surface misses the face
+    const Eigen::Vector3d area = mesh::area_vector(mesh, face);
+    const double area_norm = area.norm();
+    if (area_norm == 0.0) continue;
+    const Eigen::Vector3d outward = area / area_norm;
+    double depth_sum = 0.0;
+    for (const Eigen::Vector2d& s : samples) {
+      const mesh::Point x = a + s.x() * (b - a) + s.y() * (c - a);
+      const SurfaceProjection p = surface.project(x - shift);
+      if (p.distance >= 0.0 || p.distance < -deepest) continue;
+      // Along the face's inward normal down to the die's tangent plane. A die
+      // wall more than 60° from facing the face is not below it: a face on a
+      // symmetry plane cuts the overlap another face already counts.
+      const double facing = -p.normal.dot(outward);
+      if (facing >= 0.5) depth_sum += -p.distance / facing;
+    }
+    volume += area_norm * depth_sum / (n * n);
+  }
+  return volume;
+}
+
+} // namespace anvil::die
