@@ -1090,7 +1090,7 @@ Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, 
       const Eigen::Vector3d& shift = state_.dies[d].displacement;
       const die::SurfaceProjection p = dies_[d].surface->project(fresh.nodes[i] - shift);
       const bool inside = p.distance < 0.0 && p.distance >= -element_size;
-      const bool across_gap = !inside && on_contact_face && touched == int(d) && p.distance <= widest_gap;
+      const bool across_gap = on_contact_face && touched == int(d) && p.distance > 0.0 && p.distance <= widest_gap;
       if (!inside && !across_gap) continue;
       const mesh::Point onto = shift + die::project_keeping(*dies_[d].surface, x - shift, free, one_pass);
       if (!guard.move(int(i), onto, case_.remeshing.quality)) continue;

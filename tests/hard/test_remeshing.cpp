@@ -50,11 +50,15 @@ void check_bound(bool within, bool known_shortfall) {
   else CHECK(within);
 }
 
-/// Issue 5: the volume changes by less than 1 % over the run.
+/// Issue 5: the volume changes by less than 1 % over the run: the
+/// material's (the mesh less its overlap with the dies), which the volume
+/// compensation holds, and the mesh's, which carries that overlap besides.
 void check_run_volume(const RemeshedRun& run, bool known_shortfall) {
-  const double change = std::abs(run.out.summary_number("relative_change"));
-  INFO("volume change over the run " << 100.0 * change << " %");
-  check_bound(change < 0.01, known_shortfall);
+  const double material = std::abs(run.out.summary_number("material_relative_change"));
+  const double mesh_volume = std::abs(run.out.summary_number("relative_change"));
+  INFO("volume change over the run: material " << 100.0 * material << " %, mesh " << 100.0 * mesh_volume << " %");
+  check_bound(material < 0.01, known_shortfall);
+  check_bound(mesh_volume < 0.01, known_shortfall);
 }
 
 /// Max ε̄ within 2 % across each remesh. The transfer keeps old peaks in the
@@ -93,20 +97,19 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
   check_load_continuity(run, "top", false);
 }
 
-// Known shortfalls, reported but not failing. In the flash stage the load
-// just after a remesh is 3.7-8.0 % off trend at 2-3 of 16-21 remeshes per
-// run (up to 8.6 % at increments without a remesh, where contact events
-// shorten increments), and the volume ends at −0.26 to −1.26 % over the run:
-// each remesh there puts 100-300 new boundary nodes onto the dies, up to
-// 1.1 % of the volume, and a remesh near the end leaves it unrestored. The
-// transfer changes ∫ε̄ by −0.01 to +0.55 % per remesh. Full stroke is
-// asserted: a node the put-back left inside a die was pushed out within Δt,
-// at any Δt, and inverted an element after 5 cuts in a CI run (increment
-// 49); it is now pushed out over the nominal step (ContactIncrement::
-// closing_time). Six runs since, all to full stroke: Δ stroke 0.1 mm
-// (three times), 0.11, 0.09 and 0.105 mm: 118, 118, 118, 109, 128 and 113
-// increments, volume −0.26, −0.41, −0.62, −1.10, −0.58 and −0.46 %, load
-// after a remesh at most 4.5, 8.0, 7.5, 3.7, 3.9 and 6.1 % off trend.
+// Known shortfalls, reported but not failing. The load just after a remesh
+// is off its trend by more than 3 % at 2-3 of 15-19 remeshes per run (at
+// most 4.6-6.8 % in three runs since the volume compensation counts the
+// material, not the mesh's overlap with the dies); increments without a
+// remesh reach 7-8 % there, where the flash forms and contact events
+// shorten increments. Volume over those runs: material -0.35 to -0.39 %,
+// mesh +0.25 to +0.50 % (the overlap, 0.6-0.9 % at closure); before, the
+// mesh volume was held and ended at -0.26 to -1.26 %. The transfer changes
+// ∫ε̄ by +0.05 to +0.53 % per remesh. Full stroke is asserted: a node the
+// put-back left inside a die was pushed out within Δt, at any Δt, and
+// inverted an element after 5 cuts in a CI run (increment 49); it is now
+// pushed out over the nominal step (ContactIncrement::closing_time). Nine
+// runs since, all to full stroke.
 TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshes keep volume and strain integral",
           "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash"); // 10 min
