@@ -16,7 +16,6 @@
 #include "anvil/io/atomic_file.h"
 #include "anvil/mesh/QualityGuard.h"
 #include "anvil/mesh/generators.h"
-#include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/mesh_io.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/die_feature_depth.h"
@@ -201,16 +200,11 @@ private:
     double deepest = 0.0; ///< the deepest of them was (mm)
     int closed = 0;       ///< boundary nodes put onto a die across a gap, where the old surface touched it
     double widest = 0.0;  ///< the widest such gap (mm)
-    double given_back = 0.0; ///< mm³ of material then given back on the free surface (give_back_material)
   };
   /// Boundary nodes of a new body mesh that lie inside a die, or where the
   /// old mesh touched it, put onto its surface. Nodes on a symmetry plane of
   /// `body` (as it lies in `old`, its mesh before) stay on it.
   PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body, double element_size) const;
-  /// The material volume (mesh less die overlap) the remesh and put-back of
-  /// body `body` lost, from `old` to `fresh`, given back on `fresh`'s free
-  /// surface (not on a die, not on a symmetry plane). Returns it (mm³).
-  double give_back_material(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body, double element_size) const;
   /// Body `body`'s symmetry planes, axis-aligned (BoundaryCondition): the
   /// axis and the coordinate, read on its mesh `mesh`.
   std::vector<std::pair<int, double>> symmetry_planes(const mesh::TetMesh& mesh, int body) const;
@@ -921,7 +915,6 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
       t.mesh = t.remeshed;
       t.edge_length = settings.edge_length;
       t.put_back = put_onto_dies(t.mesh, part, int(b), settings.edge_length);
-      t.put_back.given_back = give_back_material(t.mesh, part, int(b), settings.edge_length);
       t.worst = remesh::worst_quality(t.mesh);
       return t;
     };
@@ -961,12 +954,10 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
                               relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
                                        *std::max_element(part_strain.begin(), part_strain.end())),
                               seconds_since(start)};
-    // What the remesh changed, with the material it gave back, and apart,
-    // the die overlap the put-back took off: a contact projection, as after
-    // an increment.
-    const double given_back = best.put_back.given_back;
-    state_.volume.remeshing += volume_remeshed - volume_before + given_back;
-    state_.volume.projection += volume_after - given_back - volume_remeshed;
+    // What the remesh changed, and apart, what the put-back took off: a
+    // contact projection, as after an increment.
+    state_.volume.remeshing += volume_remeshed - volume_before;
+    state_.volume.projection += volume_after - volume_remeshed;
     state_.remeshes.push_back(record);
     log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm; worst quality %.3f -> %.3f; "
               "volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
@@ -977,11 +968,10 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     if (best.put_back.nodes + best.put_back.closed > 0)
       log::info("    put onto the dies: %d new boundary nodes inside them (deepest %.3g mm), %d off them where the old "
                 "surface touched (widest gap %.3g mm): volume %+.4f%%, integral of strain %+.3f%% (contact "
-                "projection); material given back on the free surface %+.4f%%; inside the dies %.3f%% of the "
-                "volume (%.3f%% before the remesh)",
+                "projection); inside the dies %.3f%% of the volume (%.3f%% before the remesh)",
                 best.put_back.nodes, best.put_back.deepest, best.put_back.closed, best.put_back.widest,
-                100.0 * (volume_after - given_back - volume_remeshed) / volume_before,
-                100.0 * relative(remesh::integral(fresh, fresh_strain), strain_remeshed), 100.0 * given_back / volume_before,
+                100.0 * relative(volume_after, volume_remeshed),
+                100.0 * relative(remesh::integral(fresh, fresh_strain), strain_remeshed),
                 100.0 * die_overlap(fresh, mesh::whole_range(fresh), int(b)) / volume_before,
                 100.0 * die_overlap(part, mesh::whole_range(part), int(b)) / volume_before);
   }
@@ -1059,6 +1049,11 @@ Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, 
   // put onto it from outside too (up to a quarter element away): what
   // touched the die still does, rather than leave a gap the next increment
   // must close.
+  // Giving back on the free surface at once what this takes off (tried):
+  // all of it moved the flash edge by up to 0.6 mm and the load jumped by
+  // up to 10 %; only the material it lost (the mesh less its overlap with
+  // the dies) gave 4.6 and 6.8 % at most in two flash runs against 5.2 %
+  // without, and 3.0 % at upsetting_75's last remesh against 1.5-1.9 %.
   // Without the put-back (tried, flash case, full stroke) the load after a
   // remesh was up to 13 % off its trend, and 24 % at other increments.
   const std::vector<char> on_boundary = mesh::boundary_node_flags(fresh);
@@ -1114,36 +1109,6 @@ std::vector<std::pair<int, double>> Run::symmetry_planes(const mesh::TetMesh& me
     planes.emplace_back(axis, mesh.nodes[face[0]][axis]);
   }
   return planes;
-}
-
-double Run::give_back_material(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body,
-                               double element_size) const {
-  // The new boundary's chords cut into the old surface, and the put-back
-  // takes off more than the overlap in places: in the flash stage 0.2-0.6 %
-  // of the material per remesh. The volume compensation would restore it by
-  // pushing flow into the closing die, which shows as a jump of the load
-  // (up to 8 % after a remesh, flash case). Given back at once where the
-  // material is free, the flash edge and the unfilled corners move out by
-  // 0.003-0.13 mm. Giving back the whole put-back, overlap included (tried),
-  // moved the flash edge by up to 0.6 mm and the load jumped by up to 10 %.
-  if (dies_.empty()) return 0.0;
-  const double material_before = mesh::volume(old) - die_overlap(old, mesh::whole_range(old), body);
-  const double overlap = die_overlap(fresh, mesh::whole_range(fresh), body);
-  const double volume = mesh::volume(fresh);
-  // Free: farther than a tenth of an element from every die (their moves
-  // leave the overlap as it is), and off the symmetry planes.
-  std::vector<char> free = mesh::boundary_node_flags(fresh);
-  const std::vector<std::pair<int, double>> planes = symmetry_planes(old, body);
-  for (std::size_t i = 0; i < free.size(); ++i) {
-    if (!free[i]) continue;
-    const mesh::Point& x = fresh.nodes[i];
-    for (const auto& [axis, coordinate] : planes)
-      if (std::abs(x[axis] - coordinate) <= 1e-6 * element_size) free[i] = 0;
-    for (std::size_t d = 0; d < dies_.size() && free[i]; ++d)
-      if (dies_[d].surface->project(x - state_.dies[d].displacement).distance < 0.1 * element_size) free[i] = 0;
-  }
-  mesh::restore_volume(fresh, material_before + overlap, free);
-  return mesh::volume(fresh) - volume;
 }
 
 void Run::execute() {
