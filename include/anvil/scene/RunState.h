@@ -36,7 +36,7 @@ struct VolumeBudget {
   double solver = 0.0;      ///< change from x += Δt v (time-integration error plus compensation)
   double compensation = 0.0; ///< volume the compensation dilatation asked the flow to restore
   double projection = 0.0;  ///< change from putting contact nodes back on the dies
-  double remeshing = 0.0;   ///< change from remeshing (new mesh against old, and material given back after the put-back)
+  double remeshing = 0.0;   ///< change from remeshing (new mesh against old)
   double largest_increment = 0.0; ///< largest |relative change| in one increment
 };
 
