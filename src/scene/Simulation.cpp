@@ -187,10 +187,7 @@ private:
   /// Quality watch after an increment of length `dt`: the bodies to remesh,
   /// each with why (empty when none).
   std::vector<std::pair<int, std::string>> remesh_triggers(double dt);
-  /// Volume (mm³) of body `b`'s mesh inside the dies (die::overlap_volume);
-  /// `range` is where that mesh sits in `mesh`.
-  double die_overlap(const mesh::TetMesh& mesh, const mesh::MeshRange& range, int b) const;
-  /// inside_dies_ for the mesh and dies as they are now.
+  /// inside_dies_ for the mesh and dies as they are now (die::overlap_volume).
   void measure_inside_dies();
   /// Remeshes the bodies of `which`, transfers the fields, adopts the new mesh.
   void remesh(const std::vector<std::pair<int, std::string>>& which);
@@ -968,20 +965,24 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     if (best.put_back.nodes + best.put_back.closed > 0)
       log::info("    put onto the dies: %d new boundary nodes inside them (deepest %.3g mm), %d off them where the old "
                 "surface touched (widest gap %.3g mm): volume %+.4f%%, integral of strain %+.3f%% (contact "
-                "projection); inside the dies %.3f%% of the volume (%.3f%% before the remesh)",
+                "projection)",
                 best.put_back.nodes, best.put_back.deepest, best.put_back.closed, best.put_back.widest,
                 100.0 * relative(volume_after, volume_remeshed),
-                100.0 * relative(remesh::integral(fresh, fresh_strain), strain_remeshed),
-                100.0 * die_overlap(fresh, mesh::whole_range(fresh), int(b)) / volume_before,
-                100.0 * die_overlap(part, mesh::whole_range(part), int(b)) / volume_before);
+                100.0 * relative(remesh::integral(fresh, fresh_strain), strain_remeshed));
   }
+  const std::vector<double> inside_before = inside_dies_;
   state_.unknowns.nodal = Eigen::Map<const Eigen::VectorXd>(nodal.data(), static_cast<Eigen::Index>(nodal.size()));
   state_.unknowns.bubble = Eigen::VectorXd::Zero(3 * next.tet_count()); // condensed per element: a zero guess
   state_.mesh = std::move(next);
   state_.bodies = std::move(ranges);
   state_.equivalent_strain = std::move(strain);
   state_.elastic_stress = std::move(stress);
-  adopt_mesh();
+  adopt_mesh(); // measures inside_dies_ on the new mesh
+  for (const auto& [b, why] : which)
+    if (!dies_.empty())
+      log::info("    '%s' inside the dies: %.3f%% of its initial volume (%.3f%% before the remesh)",
+                bodies_[b].name.c_str(), 100.0 * inside_dies_[b] / bodies_[b].initial_volume,
+                100.0 * inside_before[b] / bodies_[b].initial_volume);
 }
 
 std::function<double(const mesh::Point&, double)> Run::adaptive_size(int body, const mesh::TetMesh& old,
@@ -1019,14 +1020,10 @@ std::function<double(const mesh::Point&, double)> Run::adaptive_size(int body, c
 void Run::measure_inside_dies() {
   Timers::Scope scope(timers_, "die overlap");
   inside_dies_.assign(bodies_.size(), 0.0);
-  for (std::size_t b = 0; b < bodies_.size(); ++b) inside_dies_[b] = die_overlap(state_.mesh, state_.bodies[b], int(b));
-}
-
-double Run::die_overlap(const mesh::TetMesh& mesh, const mesh::MeshRange& range, int b) const {
-  double overlap = 0.0;
-  for (std::size_t d = 0; d < dies_.size(); ++d)
-    overlap += die::overlap_volume(mesh, range, *dies_[d].surface, state_.dies[d].displacement, bodies_[b].remesh_size);
-  return overlap;
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    for (std::size_t d = 0; d < dies_.size(); ++d)
+      inside_dies_[b] += die::overlap_volume(state_.mesh, state_.bodies[b], *dies_[d].surface,
+                                             state_.dies[d].displacement, bodies_[b].remesh_size);
 }
 
 Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body,
@@ -1069,6 +1066,10 @@ Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, 
       contact_die[candidate.node - range.first_node] = candidate.die;
   }
   const contact::SurfaceSearch old_surface(old.nodes, old.boundary_faces);
+  auto on_face_touching = [&](const mesh::Point& x, int die) { // the old face under x had its 3 nodes on `die`
+    const mesh::Triangle& face = old.boundary_faces[old_surface.closest(x).face];
+    return std::all_of(face.begin(), face.end(), [&](int node) { return contact_die[node] == die; });
+  };
   const double widest_gap = 0.25 * element_size;
   PutBack done;
   const double one_pass = std::numeric_limits<double>::infinity();
@@ -1078,14 +1079,12 @@ Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, 
     std::array<bool, 3> free{true, true, true};
     for (const auto& [axis, coordinate] : planes)
       if (std::abs(x[axis] - coordinate) <= on_plane) x[axis] = coordinate, free[axis] = false;
-    const mesh::Triangle& old_face = old.boundary_faces[old_surface.closest(x).face];
-    const int touched = contact_die[old_face[0]];
-    const bool on_contact_face = touched >= 0 && contact_die[old_face[1]] == touched && contact_die[old_face[2]] == touched;
+    const mesh::Point start = x; // where the node lies on the old surface
     for (std::size_t d = 0; d < dies_.size(); ++d) {
       const Eigen::Vector3d& shift = state_.dies[d].displacement;
       const die::SurfaceProjection p = dies_[d].surface->project(fresh.nodes[i] - shift);
       const bool inside = p.distance < 0.0 && p.distance >= -element_size;
-      const bool across_gap = on_contact_face && touched == int(d) && p.distance > 0.0 && p.distance <= widest_gap;
+      const bool across_gap = p.distance > 0.0 && p.distance <= widest_gap && on_face_touching(start, int(d));
       if (!inside && !across_gap) continue;
       const mesh::Point onto = shift + die::project_keeping(*dies_[d].surface, x - shift, free, one_pass);
       if (!guard.move(int(i), onto, case_.remeshing.quality)) continue;
