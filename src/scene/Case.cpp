@@ -335,6 +335,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     m.iterations = doc.integer(r, "iterations", "remeshing.iterations");
     m.adaptive = doc.text(r, "size", "remeshing.size") == "adaptive";
     if (r["smallest_size"]) m.smallest_size = doc.number(r, "smallest_size", "remeshing.smallest_size");
+    m.check_load = doc.boolean(r, "check_load", "remeshing.check_load");
   }
   if (!c.dies.empty() && !c.time.enabled)
     doc.fail(root["dies"], "dies", "dies need a 'time' section (stroke increment and stop criteria)");

@@ -204,6 +204,10 @@ const std::vector<KeySpec>& case_schema() {
       range(key("remeshing.smallest_size", T::number,
                 "adaptive size field: the edge length at a die and where the strain rate is 4x the body's mean; "
                 "default half the element size", "mm"), 0, kInf, true),
+      with_default(key("remeshing.check_load", T::boolean,
+                       "also solve the increment after each remesh on the old mesh, and log and record the press "
+                       "load's jump across the remesh at equal geometry (two more solves per remesh)"),
+                   "false"),
     };
     for (const auto& [owner, between] : {std::pair{"dies[]", "die and body"}, std::pair{"contact_pairs[]", "the two bodies"}}) {
       const std::vector<KeySpec> friction = friction_keys(owner, between);

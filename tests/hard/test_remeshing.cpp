@@ -70,9 +70,25 @@ void check_max_strain(const RemeshedRun& run) {
   }
 }
 
+/// Issue 5: no jump above 3 % in the load-stroke curve at a remesh. The jump
+/// at equal geometry (remeshing.check_load): the press load of the increment
+/// after the remesh, solved on the old mesh and on the new one at the same
+/// die positions and Δt. Newton stops at a residual far below 3 % of the load.
+void check_load_jump(const RemeshedRun& run) {
+  REQUIRE(run.c.remeshing.check_load);
+  for (const scene::RemeshRecord& r : run.end.remeshes) {
+    INFO("remesh after increment " << r.increment << ": press load " << r.load_old_mesh << " N on the old mesh, "
+                                   << r.load_new_mesh << " N on the new");
+    REQUIRE(std::isfinite(r.load_old_mesh));
+    REQUIRE(std::isfinite(r.load_new_mesh));
+    CHECK(std::abs(r.load_new_mesh / r.load_old_mesh - 1.0) < 0.03);
+  }
+}
+
 /// The load on `surface` just after each remesh within 3 % of the straight
-/// line through the two loads before.
-void check_load_continuity(const RemeshedRun& run, const std::string& surface, bool known_shortfall) {
+/// line through the two loads before: the jump and the curve's own bend
+/// over one increment together.
+void check_load_trend(const RemeshedRun& run, const std::string& surface, bool known_shortfall) {
   const std::vector<LoadRow> load = run.out.loads(surface);
   for (const scene::RemeshRecord& r : run.end.remeshes) {
     const std::size_t k = static_cast<std::size_t>(r.increment) - 1; // row of the remesh increment
@@ -94,7 +110,8 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume(run, false);
   check_max_strain(run);
-  check_load_continuity(run, "top", false);
+  check_load_jump(run);
+  check_load_trend(run, "top", false);
 }
 
 // Known shortfalls, reported but not failing. The load just after a remesh
@@ -116,5 +133,6 @@ TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshe
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume(run, true);
   check_max_strain(run);
-  check_load_continuity(run, "upper", true);
+  check_load_jump(run);
+  check_load_trend(run, "upper", true);
 }

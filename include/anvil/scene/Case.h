@@ -85,6 +85,7 @@ struct RemeshSpec {
   int iterations = 3;           ///< CGAL passes
   bool adaptive = false;        ///< size field: finer near the dies and where ε̄̇ is high (else uniform)
   double smallest_size = 0.0;   ///< mm, adaptive: edge length at a die surface; 0 = half the element size
+  bool check_load = false;      ///< solve the increment after a remesh on the old mesh too: the load jump it makes
 };
 
 struct ContactSpec {

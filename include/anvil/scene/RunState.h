@@ -7,6 +7,7 @@
 #include "anvil/mesh/TetMesh.h"
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,11 @@ struct RemeshRecord {
   double strain_integral_change; ///< relative change of ∫ε̄ dV by the transfer
   double strain_max_change;      ///< relative change of max ε̄ by the transfer
   double seconds;        ///< wall time (remesh and transfer)
+  /// N, press load (first load surface) of the next increment solved on the
+  /// old mesh and on the new one, same geometry and Δt (remeshing.check_load;
+  /// NaN when not checked or a solve failed).
+  double load_old_mesh = std::numeric_limits<double>::quiet_NaN();
+  double load_new_mesh = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RunState {
