@@ -613,7 +613,11 @@ void Run::remesh_checking_load(const std::vector<std::pair<int, std::string>>& w
   // Their difference is the jump the remesh puts in the load-stroke curve;
   // a comparison with the trend of the loads before also counts the curve's
   // own kinks (contact events as the flash forms: up to 8.7 % at increments
-  // without a remesh).
+  // without a remesh). The solves are kept, not undone: the put-back reads
+  // which old nodes touch a die from the old-mesh solve, and the next
+  // increment starts from the new-mesh solution. A run with the check
+  // therefore differs from one without, within the Newton tolerance and
+  // where the active set tips.
   const double dt = choose_time_step(nominal_step_);
   const double old_mesh = load_of_next_increment(dt);
   const std::size_t first_record = state_.remeshes.size();

@@ -206,7 +206,8 @@ const std::vector<KeySpec>& case_schema() {
                 "default half the element size", "mm"), 0, kInf, true),
       with_default(key("remeshing.check_load", T::boolean,
                        "also solve the increment after each remesh on the old mesh, and log and record the press "
-                       "load's jump across the remesh at equal geometry (two more solves per remesh)"),
+                       "load's jump across the remesh at equal geometry (three more solves per remesh; the next increment starts "
+                       "from the last)"),
                    "false"),
     };
     for (const auto& [owner, between] : {std::pair{"dies[]", "die and body"}, std::pair{"contact_pairs[]", "the two bodies"}}) {
