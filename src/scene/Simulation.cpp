@@ -202,9 +202,6 @@ private:
   /// old mesh touched it, put onto its surface. Nodes on a symmetry plane of
   /// `body` (as it lies in `old`, its mesh before) stay on it.
   PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body, double element_size) const;
-  /// Body `body`'s symmetry planes, axis-aligned (BoundaryCondition): the
-  /// axis and the coordinate, read on its mesh `mesh`.
-  std::vector<std::pair<int, double>> symmetry_planes(const mesh::TetMesh& mesh, int body) const;
   /// Adaptive size field for remeshing body `body` (issue 5 point 3): the
   /// edge length wanted at a point for a remesh at `scale` times the body's
   /// size, between scale × `smallest` and scale × `coarse` (mm). `old` is the
@@ -1125,7 +1122,18 @@ Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, 
   // the same with those nodes put onto the die: +4.1 % by 8 mm of stroke.
   const std::vector<char> on_boundary = mesh::boundary_node_flags(fresh);
   mesh::QualityGuard guard(fresh);
-  const std::vector<std::pair<int, double>> planes = symmetry_planes(old, body);
+  // The body's symmetry planes, axis-aligned (BoundaryCondition): the axis
+  // and the coordinate, from the old mesh, whose faces were checked planar.
+  std::vector<std::pair<int, double>> planes;
+  for (const BoundaryCondition& bc : bodies_[body].conditions) {
+    if (bc.kind != BoundaryKind::symmetry) continue;
+    const std::vector<int> faces = select_faces(old, bc.faces);
+    if (faces.empty()) continue;
+    const mesh::Triangle& face = old.boundary_faces[faces.front()];
+    int axis = 0;
+    mesh::area_vector(old, face).cwiseAbs().maxCoeff(&axis);
+    planes.emplace_back(axis, old.nodes[face[0]][axis]);
+  }
   const double on_plane = 1e-6 * element_size;
   // The old nodes in contact after the increment just solved, by die.
   std::vector<int> contact_die(old.nodes.size(), -1);
@@ -1164,20 +1172,6 @@ Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, 
     }
   }
   return done;
-}
-
-std::vector<std::pair<int, double>> Run::symmetry_planes(const mesh::TetMesh& mesh, int body) const {
-  std::vector<std::pair<int, double>> planes;
-  for (const BoundaryCondition& bc : bodies_[body].conditions) {
-    if (bc.kind != BoundaryKind::symmetry) continue;
-    const std::vector<int> faces = select_faces(mesh, bc.faces); // checked planar
-    if (faces.empty()) continue;
-    const mesh::Triangle& face = mesh.boundary_faces[faces.front()];
-    int axis = 0;
-    mesh::area_vector(mesh, face).cwiseAbs().maxCoeff(&axis);
-    planes.emplace_back(axis, mesh.nodes[face[0]][axis]);
-  }
-  return planes;
 }
 
 void Run::execute() {
