@@ -1,7 +1,8 @@
 // HDF5 checkpoint of a RunState (C API, numbered calls, TECH-NOTES §5).
 // Layout: datasets /nodes (n×3), /tets (m×4), /boundary_faces (f×3),
 // /boundary_tags, /nodal (4n), /bubble (3m), /equivalent_strain (m),
-// /elastic_stress (m×6, or empty), /body_ranges (b×6), /remeshes (r×12; r×10 in format 2, before the load check),
+// /elastic_stress (m×6, or empty), /body_ranges (b×6), /remeshes (r×13; r×12
+// in format 3, before the material kept; r×10 in format 2, before the load check),
 // /dies (d×7), /loads (r×8), /outputs (k×2) with /output_files (strings),
 // scalar attributes on the root group.
 #include "anvil/core/error.h"
@@ -77,7 +78,7 @@ void write_checkpoint(const std::string& path, const RunState& s) {
   {
     Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
     if (!file.valid()) throw RunError(temporary + ": cannot create the checkpoint file");
-    const int format = 3;
+    const int format = 4;
     write_attribute(file, "format", H5T_NATIVE_INT, &format);
     write_attribute(file, "increment", H5T_NATIVE_INT, &s.increment);
     write_attribute(file, "time", H5T_NATIVE_DOUBLE, &s.time);
@@ -94,8 +95,8 @@ void write_checkpoint(const std::string& path, const RunState& s) {
       remeshes.insert(remeshes.end(), {double(r.increment), double(r.body), double(r.nodes_before), double(r.nodes_after),
                                        r.worst_quality_before, r.worst_quality_after, r.volume_change,
                                        r.strain_integral_change, r.strain_max_change, r.seconds, r.load_old_mesh,
-                                       r.load_new_mesh});
-    write_array(file, "remeshes", H5T_NATIVE_DOUBLE, remeshes.data(), s.remeshes.size(), 12);
+                                       r.load_new_mesh, r.material_change});
+    write_array(file, "remeshes", H5T_NATIVE_DOUBLE, remeshes.data(), s.remeshes.size(), 13);
 
     std::vector<double> nodes;
     for (const mesh::Point& p : s.mesh.nodes) nodes.insert(nodes.end(), p.data(), p.data() + 3);
@@ -141,8 +142,8 @@ RunState read_checkpoint(const std::string& path) {
   RunState s;
   int format = 0;
   read_attribute(file, path, "format", H5T_NATIVE_INT, &format);
-  if (format != 2 && format != 3)
-    throw InputError(path + ": checkpoint format " + std::to_string(format) + ", expected 2 or 3 (written by another "
+  if (format < 2 || format > 4)
+    throw InputError(path + ": checkpoint format " + std::to_string(format) + ", expected 2 to 4 (written by another "
                             "version of anvil: run the case again without --resume)");
   read_attribute(file, path, "increment", H5T_NATIVE_INT, &s.increment);
   read_attribute(file, path, "time", H5T_NATIVE_DOUBLE, &s.time);
@@ -158,12 +159,13 @@ RunState read_checkpoint(const std::string& path) {
   for (std::size_t i = 0; i < ranges.size(); i += 6)
     s.bodies.push_back({ranges[i], ranges[i + 1], ranges[i + 2], ranges[i + 3], ranges[i + 4], ranges[i + 5]});
   std::vector<double> remeshes;
-  const std::size_t per_remesh = format == 2 ? 10 : 12; // format 2 had no load check
+  const std::size_t per_remesh = format == 2 ? 10 : format == 3 ? 12 : 13; // 2: no load check; 3: no material kept
   read_array(file, path, "remeshes", H5T_NATIVE_DOUBLE, remeshes, per_remesh);
   for (std::size_t i = 0; i < remeshes.size(); i += per_remesh) {
     const double* r = &remeshes[i];
     s.remeshes.push_back({int(r[0]), int(r[1]), int(r[2]), int(r[3]), r[4], r[5], r[6], r[7], r[8], r[9]});
-    if (per_remesh == 12) s.remeshes.back().load_old_mesh = r[10], s.remeshes.back().load_new_mesh = r[11];
+    if (per_remesh >= 12) s.remeshes.back().load_old_mesh = r[10], s.remeshes.back().load_new_mesh = r[11];
+    if (per_remesh >= 13) s.remeshes.back().material_change = r[12];
   }
   read_array(file, path, "nodes", H5T_NATIVE_DOUBLE, nodes, 3);
   for (std::size_t i = 0; i < nodes.size(); i += 3) s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);

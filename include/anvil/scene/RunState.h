@@ -56,6 +56,10 @@ struct RemeshRecord {
   /// NaN when not checked or a solve failed).
   double load_old_mesh = std::numeric_limits<double>::quiet_NaN();
   double load_new_mesh = std::numeric_limits<double>::quiet_NaN();
+  /// Relative change of the body's material (its mesh less the part inside
+  /// the dies) by the remesh, put-back and give-back included; NaN from a
+  /// checkpoint written before it was kept.
+  double material_change = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RunState {
