@@ -1040,8 +1040,8 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
                 best.put_back.nodes, best.put_back.deepest, best.put_back.closed, best.put_back.widest,
                 100.0 * relative(best.volume_put_back, volume_remeshed));
     if (best.given_back != 0.0)
-      log::info("    material given back: the free surface moved %+.3g mm along its outward normal, volume %+.4f%%", best.given_back,
-                100.0 * relative(volume_after, best.volume_put_back));
+      log::info("    material given back: the free surface moved %+.3g mm along its outward normal, volume %+.4f%%",
+                best.given_back, 100.0 * relative(volume_after, best.volume_put_back));
     if (volume_after != volume_remeshed)
       log::info("    integral of strain %+.3f%% by these moves (the elements carry their values)",
                 100.0 * relative(remesh::integral(fresh, fresh_strain), strain_remeshed));
@@ -1113,7 +1113,8 @@ double Run::inside_dies(const mesh::TetMesh& part, int body) const {
   const mesh::MeshRange whole{0, part.node_count(), 0, part.tet_count(), 0, int(part.boundary_faces.size())};
   double inside = 0.0;
   for (std::size_t d = 0; d < dies_.size(); ++d)
-    inside += die::overlap_volume(part, whole, *dies_[d].surface, state_.dies[d].displacement, bodies_[body].remesh_size);
+    inside +=
+        die::overlap_volume(part, whole, *dies_[d].surface, state_.dies[d].displacement, bodies_[body].remesh_size);
   return inside;
 }
 
