@@ -96,6 +96,10 @@ std::vector<std::vector<int>> tets_around_nodes(const TetMesh& mesh) {
   return around;
 }
 
+MeshRange whole_range(const TetMesh& mesh) {
+  return {0, mesh.node_count(), 0, mesh.tet_count(), 0, static_cast<int>(mesh.boundary_faces.size())};
+}
+
 MeshRange append(TetMesh& mesh, const TetMesh& part) {
   const MeshRange range{mesh.node_count(), part.node_count(), mesh.tet_count(), part.tet_count(),
                         static_cast<int>(mesh.boundary_faces.size()), static_cast<int>(part.boundary_faces.size())};

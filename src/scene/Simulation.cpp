@@ -203,8 +203,8 @@ private:
   /// old mesh touched it, put onto its surface. Nodes on a symmetry plane of
   /// `body` (as it lies in `old`, its mesh before) stay on it.
   PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body, double element_size) const;
-  /// mm³ of `part`, a mesh of body `body` alone, inside the dies as they are now.
-  double inside_dies(const mesh::TetMesh& part, int body) const;
+  /// mm³ of body `body`, as `range` of `mesh` holds it, inside the dies as they are now.
+  double inside_dies(const mesh::TetMesh& mesh, const mesh::MeshRange& range, int body) const;
   /// Gives a new body mesh `fresh` the material `material` (mm³, its volume
   /// less its overlap with the dies) back on its free surface; returns the
   /// distance its free boundary nodes moved (mm).
@@ -933,6 +933,11 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
   auto append_values = [](std::vector<double>& to, const double* first, std::size_t count) {
     to.insert(to.end(), first, first + count);
   };
+  // mm³ per body before the remesh: inside the dies, and the material (the mesh less that).
+  const std::vector<double> inside_before = inside_dies_;
+  std::vector<double> material_before(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    material_before[b] = mesh::volume(state_.mesh, state_.bodies[b]) - inside_before[b];
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Clock::time_point start = Clock::now();
     const mesh::MeshRange& range = state_.bodies[b];
@@ -954,7 +959,6 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
     // result is remade with edges 5 % and then 10 % shorter, which changes
     // where CGAL splits; the best of the tries is kept.
     const remesh::PointLocator in_old(part);
-    const double material_before = mesh::volume(part) - inside_dies_[b];
     const double smallest = spec.smallest_size > 0.0 ? spec.smallest_size : 0.5 * bodies_[b].remesh_size;
     const auto size_field = spec.adaptive ? adaptive_size(int(b), part, in_old, bodies_[b].remesh_size, smallest)
                                           : nullptr;
@@ -982,7 +986,7 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
       t.edge_length = settings.edge_length;
       t.put_back = put_onto_dies(t.mesh, part, int(b), settings.edge_length);
       t.volume_put_back = mesh::volume(t.mesh);
-      t.given_back = keep_material(t.mesh, int(b), material_before, settings.edge_length);
+      t.given_back = keep_material(t.mesh, int(b), material_before[b], settings.edge_length);
       t.worst = remesh::worst_quality(t.mesh);
       return t;
     };
@@ -1046,10 +1050,6 @@ void Run::remesh(const std::vector<std::pair<int, std::string>>& which) {
       log::info("    integral of strain %+.3f%% by these moves (the elements carry their values)",
                 100.0 * relative(remesh::integral(fresh, fresh_strain), strain_remeshed));
   }
-  const std::vector<double> inside_before = inside_dies_;
-  std::vector<double> material_before(bodies_.size());
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
-    material_before[b] = mesh::volume(state_.mesh, state_.bodies[b]) - inside_dies_[b];
   state_.unknowns.nodal = Eigen::Map<const Eigen::VectorXd>(nodal.data(), static_cast<Eigen::Index>(nodal.size()));
   state_.unknowns.bubble = Eigen::VectorXd::Zero(3 * next.tet_count()); // condensed per element: a zero guess
   state_.mesh = std::move(next);
@@ -1102,19 +1102,15 @@ std::function<double(const mesh::Point&, double)> Run::adaptive_size(int body, c
 
 void Run::measure_inside_dies() {
   Timers::Scope scope(timers_, "die overlap");
-  inside_dies_.assign(bodies_.size(), 0.0);
-  for (std::size_t b = 0; b < bodies_.size(); ++b)
-    for (std::size_t d = 0; d < dies_.size(); ++d)
-      inside_dies_[b] += die::overlap_volume(state_.mesh, state_.bodies[b], *dies_[d].surface,
-                                             state_.dies[d].displacement, bodies_[b].remesh_size);
+  inside_dies_.resize(bodies_.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b) inside_dies_[b] = inside_dies(state_.mesh, state_.bodies[b], int(b));
 }
 
-double Run::inside_dies(const mesh::TetMesh& part, int body) const {
-  const mesh::MeshRange whole{0, part.node_count(), 0, part.tet_count(), 0, int(part.boundary_faces.size())};
+double Run::inside_dies(const mesh::TetMesh& mesh, const mesh::MeshRange& range, int body) const {
   double inside = 0.0;
   for (std::size_t d = 0; d < dies_.size(); ++d)
     inside +=
-        die::overlap_volume(part, whole, *dies_[d].surface, state_.dies[d].displacement, bodies_[body].remesh_size);
+        die::overlap_volume(mesh, range, *dies_[d].surface, state_.dies[d].displacement, bodies_[body].remesh_size);
   return inside;
 }
 
@@ -1148,8 +1144,9 @@ double Run::keep_material(mesh::TetMesh& fresh, int body, double material, doubl
       off = dies_[d].surface->project(fresh.nodes[i] - state_.dies[d].displacement).distance > off_die;
     free_node[i] = off;
   }
-  const double deficit = material - (mesh::volume(fresh) - inside_dies(fresh, body));
-  return mesh::restore_volume(fresh, mesh::volume(fresh) + deficit, free_node);
+  // The volume wanted: the material, and the overlap the new mesh has (the
+  // free nodes moved stay off the dies).
+  return mesh::restore_volume(fresh, material + inside_dies(fresh, mesh::whole_range(fresh), body), free_node);
 }
 
 Run::PutBack Run::put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, int body,

@@ -62,6 +62,9 @@ struct MeshRange {
   bool has_node(int node) const { return node >= first_node && node < first_node + node_count; }
 };
 
+/// The range of a mesh that is one body: all of it.
+MeshRange whole_range(const TetMesh& mesh);
+
 /// Appends `part` to `mesh` (indices shifted) and returns where it went: the
 /// bodies of a scene are solved as one mesh of disjoint parts.
 MeshRange append(TetMesh& mesh, const TetMesh& part);

@@ -11,11 +11,6 @@ using namespace anvil;
 
 namespace {
 
-/// The range of a mesh that is one body: all of it.
-mesh::MeshRange whole_range(const mesh::TetMesh& m) {
-  return {0, m.node_count(), 0, m.tet_count(), 0, static_cast<int>(m.boundary_faces.size())};
-}
-
 /// A 90° ridge pointing down along y, its edge at x = 0.5, z = `edge`: the
 /// die is z > edge + |x − 0.5|. Exact from inside (the closest point is on
 /// the nearer wall of a convex die); from outside the sign is right and the
@@ -46,11 +41,11 @@ TEST_CASE("A flat die's overlap with a body is its depth times the face it cover
   // (the die's normal lies in them) and add nothing.
   const mesh::TetMesh cube = mesh::make_box({0, 0, 0}, {1, 1, 1}, 0.25);
   const die::PlaneSurface die({0, 0, 0.9}, {0, 0, -1}, 10.0);
-  CHECK(die::overlap_volume(cube, whole_range(cube), die, Eigen::Vector3d::Zero(), 1.0) == Approx(0.1).epsilon(1e-12));
+  CHECK(die::overlap_volume(cube, mesh::whole_range(cube), die, Eigen::Vector3d::Zero(), 1.0) == Approx(0.1).epsilon(1e-12));
   // The die's shift moves it: 0.05 mm higher, half the overlap.
-  CHECK(die::overlap_volume(cube, whole_range(cube), die, {0, 0, 0.05}, 1.0) == Approx(0.05).epsilon(1e-12));
+  CHECK(die::overlap_volume(cube, mesh::whole_range(cube), die, {0, 0, 0.05}, 1.0) == Approx(0.05).epsilon(1e-12));
   // Deeper than `deepest` is the far side of an open surface: none.
-  CHECK(die::overlap_volume(cube, whole_range(cube), die, Eigen::Vector3d::Zero(), 0.05) == 0.0);
+  CHECK(die::overlap_volume(cube, mesh::whole_range(cube), die, Eigen::Vector3d::Zero(), 0.05) == 0.0);
 }
 
 TEST_CASE("A die ridge sunk between nodes overlaps the body by its wedge", "[unit][die]") {
@@ -63,6 +58,6 @@ TEST_CASE("A die ridge sunk between nodes overlaps the body by its wedge", "[uni
   // 3 × 0.0625² / 8 = 1.5e-3 mm³, 3.7 % of the wedge.
   const mesh::TetMesh cube = mesh::make_box({0, 0, 0}, {1, 1, 1}, 0.25);
   const Ridge die(0.8);
-  const double overlap = die::overlap_volume(cube, whole_range(cube), die, Eigen::Vector3d::Zero(), 1.0);
+  const double overlap = die::overlap_volume(cube, mesh::whole_range(cube), die, Eigen::Vector3d::Zero(), 1.0);
   CHECK(std::abs(overlap - 0.04) <= 1.5e-3);
 }
