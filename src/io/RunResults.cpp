@@ -87,19 +87,27 @@ std::vector<double> read_last_cell_field(const std::string& directory, const std
   return values;
 }
 
-double read_summary_number(const std::string& directory, const std::string& key) {
+std::vector<double> read_summary_numbers(const std::string& directory, const std::string& key) {
   const std::string path = directory + "/summary.json";
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string quoted = "\"" + key + "\": ";
-  const auto at = text.find(quoted);
-  if (at == std::string::npos) throw InputError(path + ": no key '" + key + "'");
-  try {
-    return std::stod(text.substr(at + quoted.size()));
-  } catch (const std::exception&) {
-    throw InputError(path + ": key '" + key + "' is not a number");
+  std::vector<double> numbers;
+  for (auto at = text.find(quoted); at != std::string::npos; at = text.find(quoted, at + quoted.size())) {
+    try {
+      numbers.push_back(std::stod(text.substr(at + quoted.size(), 40)));
+    } catch (const std::exception&) {
+      throw InputError(path + ": key '" + key + "' is not a number");
+    }
   }
+  return numbers;
+}
+
+double read_summary_number(const std::string& directory, const std::string& key) {
+  const std::vector<double> numbers = read_summary_numbers(directory, key);
+  if (numbers.empty()) throw InputError(directory + "/summary.json: no key '" + key + "'");
+  return numbers.front();
 }
 
 } // namespace anvil::io

@@ -15,7 +15,11 @@
 //                    19 strokes evenly spaced over the stroke, relative to
 //                    that run's peak load: a Hansel-Spittel load starts near
 //                    zero (e^(m4/ε̄)) and a pointwise ratio there would
-//                    measure only how an increment samples the first rise.
+//                    measure only how an increment samples the first rise;
+//   remesh-jump      the worst press-load jump across a remesh at equal
+//                    geometry (remeshing.check_load: the increment after a
+//                    remesh solved on the old mesh and on the new), which
+//                    issue 5 bounds by 3 %: no reference run.
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/io/RunResults.h"
@@ -43,7 +47,7 @@ using namespace anvil;
 constexpr const char* kUsage = R"(anvil_study — error against wall time over lists of case settings
 
 usage: anvil_study CASE.yaml --vary KEY=V1,V2,... [--vary KEY=...] [--set KEY=VALUE ...]
-                   [--error exact-upsetting|finest] [-o DIR]
+                   [--error exact-upsetting|finest|remesh-jump] [-o DIR]
 
   --vary KEY=V1,V2,...  values of one case key, coarse to fine (the last one is
                         the finest); KEY as for 'anvil run --set', e.g.
@@ -55,13 +59,15 @@ usage: anvil_study CASE.yaml --vary KEY=V1,V2,... [--vary KEY=...] [--set KEY=VA
                             is frictionless)
   --error finest            against the run with every key at its finest value,
                             relative to its peak load
+  --error remesh-jump       the worst press-load jump across a remesh at equal
+                            geometry (needs remeshing.check_load: true)
   -o DIR                out/study_<case name> by default
 
 Writes DIR/study.csv (key, value, error, wall time, increments, Newton
-iterations, nodes, run folder) and the runs in DIR/runs/.
+iterations, nodes, remeshes, run folder) and the runs in DIR/runs/.
 )";
 
-enum class ErrorKind { exact_upsetting, finest };
+enum class ErrorKind { exact_upsetting, finest, remesh_jump };
 
 struct Parameter {
   std::string key;
@@ -88,6 +94,7 @@ struct Run {
   double wall_time = 0.0; ///< s
   int increments = 0, newton_iterations = 0, nodes = 0;
   LoadCurve curve;
+  std::vector<double> load_jumps; ///< relative, one per remesh (with remeshing.check_load)
 };
 
 LoadCurve read_curve(const std::string& directory, const std::string& die) {
@@ -170,6 +177,14 @@ double error_against(const LoadCurve& curve, const LoadCurve& reference, double 
   return worst;
 }
 
+/// The largest |jump| of a run's remeshes; empty for a run without one.
+std::optional<double> worst_jump(const std::vector<double>& jumps) {
+  if (jumps.empty()) return std::nullopt;
+  double worst = 0.0;
+  for (double j : jumps) worst = std::max(worst, std::abs(j));
+  return worst;
+}
+
 class Study {
 public:
   Study(std::string case_file, std::vector<Parameter> parameters, std::vector<std::string> fixed, std::string out)
@@ -201,7 +216,9 @@ public:
     r.newton_iterations = static_cast<int>(io::read_summary_number(r.directory, "newton_iterations"));
     r.nodes = static_cast<int>(io::read_summary_number(r.directory, "nodes"));
     r.curve = read_curve(r.directory, c.dies.at(c.time.stroke_die).name);
-    std::printf("%.1f s, %d increments, %d nodes\n", r.wall_time, r.increments, r.nodes);
+    r.load_jumps = io::read_summary_numbers(r.directory, "load_jump");
+    std::printf("%.1f s, %d increments, %d nodes, %zu remeshes\n", r.wall_time, r.increments, r.nodes,
+                r.load_jumps.size());
     return runs_.emplace(label, std::move(r)).first->second;
   }
 
@@ -215,15 +232,19 @@ private:
 
 struct Row {
   std::string key, value;
-  std::optional<double> error; ///< empty for the reference run
+  std::optional<double> error; ///< empty for the reference run, or a run without a remesh (remesh-jump)
   const Run* run;
 };
 
-std::string format_row_csv(const Row& r) {
+/// What a row without an error stands for.
+const char* no_error_label(ErrorKind kind) { return kind == ErrorKind::remesh_jump ? "no remesh" : "reference"; }
+
+std::string format_row_csv(const Row& r, ErrorKind kind) {
   char text[512];
-  const std::string error = r.error ? std::to_string(100.0 * *r.error) : "reference";
-  std::snprintf(text, sizeof text, "%s,%s,%s,%.3f,%d,%d,%d,%s\n", r.key.c_str(), r.value.c_str(), error.c_str(),
-                r.run->wall_time, r.run->increments, r.run->newton_iterations, r.run->nodes, r.run->directory.c_str());
+  const std::string error = r.error ? std::to_string(100.0 * *r.error) : no_error_label(kind);
+  std::snprintf(text, sizeof text, "%s,%s,%s,%.3f,%d,%d,%d,%zu,%s\n", r.key.c_str(), r.value.c_str(), error.c_str(),
+                r.run->wall_time, r.run->increments, r.run->newton_iterations, r.run->nodes, r.run->load_jumps.size(),
+                r.run->directory.c_str());
   return text;
 }
 
@@ -275,9 +296,15 @@ int study(int argc, char** argv) {
   const scene::Case c = scene::read_case(case_file, finest);
   if (c.dies.empty() || !c.time.enabled) throw InputError(case_file + ": the study needs a case with dies and a time section");
   if (error_name.empty()) error_name = die_with_friction(c) ? "finest" : "exact-upsetting";
-  if (error_name != "exact-upsetting" && error_name != "finest")
-    throw InputError("--error '" + error_name + "': expected exact-upsetting or finest");
-  const ErrorKind kind = error_name == "finest" ? ErrorKind::finest : ErrorKind::exact_upsetting;
+  const std::map<std::string, ErrorKind> kinds{
+      {"exact-upsetting", ErrorKind::exact_upsetting}, {"finest", ErrorKind::finest}, {"remesh-jump", ErrorKind::remesh_jump}};
+  const auto named = kinds.find(error_name);
+  if (named == kinds.end())
+    throw InputError("--error '" + error_name + "': expected exact-upsetting, finest or remesh-jump");
+  const ErrorKind kind = named->second;
+  if (kind == ErrorKind::remesh_jump && !(c.remeshing.enabled && c.remeshing.check_load))
+    throw InputError(case_file + ": --error remesh-jump needs remeshing with check_load: true "
+                                 "(e.g. --set remeshing.check_load=true)");
   std::optional<ExactUpsetting> exact;
   if (kind == ErrorKind::exact_upsetting) exact.emplace(c);
   if (out.empty()) out = "out/study_" + std::filesystem::path(case_file).stem().string();
@@ -286,30 +313,38 @@ int study(int argc, char** argv) {
   log::set_quiet(true);
   std::printf("study of %s, error: %s, results in %s/\n", case_file.c_str(), error_name.c_str(), out.c_str());
   Study runs(case_file, parameters, fixed, out);
-  const Run& reference = runs.run(parameters.front().key, parameters.front().values.back());
-  const double final_stroke = reference.curve.stroke.back();
+  const Run* reference = nullptr; // the finest run, for --error finest
+  if (kind == ErrorKind::finest) reference = &runs.run(parameters.front().key, parameters.front().values.back());
   std::vector<Row> rows;
   for (const Parameter& p : parameters)
     for (const std::string& value : p.values) {
       const Run& r = runs.run(p.key, value);
       std::optional<double> error;
       if (exact) error = exact->error(r.curve);
-      else if (&r != &reference) error = error_against(r.curve, reference.curve, final_stroke);
+      else if (kind == ErrorKind::remesh_jump) error = worst_jump(r.load_jumps);
+      else if (&r != reference) error = error_against(r.curve, reference->curve, reference->curve.stroke.back());
       rows.push_back({p.key, value, error, &r});
     }
 
-  std::string csv = "key,value,error_percent,wall_time_s,increments,newton_iterations,nodes,run_directory\n";
-  for (const Row& r : rows) csv += format_row_csv(r);
+  std::string csv = "key,value,error_percent,wall_time_s,increments,newton_iterations,nodes,remeshes,run_directory\n";
+  for (const Row& r : rows) csv += format_row_csv(r, kind);
   io::write_file_atomically(out + "/study.csv", csv);
 
-  std::printf("\n| key | value | load error | wall time | increments | nodes |\n|---|---|---|---|---|---|\n");
+  const char* measure = kind == ErrorKind::remesh_jump ? "worst load jump" : "load error";
+  std::printf("\n| key | value | %s | wall time | increments | nodes | remeshes |\n|---|---|---|---|---|---|---|\n",
+              measure);
   for (const Row& r : rows) {
-    char error[32] = "reference";
+    char error[32];
+    std::snprintf(error, sizeof error, "%s", no_error_label(kind));
     if (r.error) std::snprintf(error, sizeof error, "%.3f %%", 100.0 * *r.error);
-    std::printf("| %s | %s | %s | %.1f s | %d | %d |\n", r.key.c_str(), r.value.c_str(), error, r.run->wall_time,
-                r.run->increments, r.run->nodes);
+    std::printf("| %s | %s | %s | %.1f s | %d | %d | %zu |\n", r.key.c_str(), r.value.c_str(), error, r.run->wall_time,
+                r.run->increments, r.run->nodes, r.run->load_jumps.size());
   }
-  std::printf("\nfor 1 %%:   %s\nfor 0.1 %%: %s\n", cheapest_below(rows, 0.01).c_str(), cheapest_below(rows, 0.001).c_str());
+  if (kind == ErrorKind::remesh_jump)
+    std::printf("\nfor 3 %% (issue 5): %s\n", cheapest_below(rows, 0.03).c_str());
+  else
+    std::printf("\nfor 1 %%:   %s\nfor 0.1 %%: %s\n", cheapest_below(rows, 0.01).c_str(),
+                cheapest_below(rows, 0.001).c_str());
   return 0;
 }
 

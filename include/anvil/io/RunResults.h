@@ -43,4 +43,8 @@ std::vector<double> read_last_cell_field(const std::string& directory, const std
 /// InputError when the key is absent.
 double read_summary_number(const std::string& directory, const std::string& key);
 
+/// Every number after "key": in `directory`/summary.json, in order (e.g.
+/// "load_jump" of each remesh); empty when the key is absent.
+std::vector<double> read_summary_numbers(const std::string& directory, const std::string& key);
+
 } // namespace anvil::io
