@@ -1129,21 +1129,17 @@ double Run::keep_material(mesh::TetMesh& fresh, int body, double material, doubl
   // near a die in place, which left nodes just off the curved dies (-3 to
   // -4.6 % early on), or put onto them, +4.1 %.
   if (dies_.empty()) return 0.0;
-  const std::vector<char> on_boundary = mesh::boundary_node_flags(fresh);
-  std::vector<char> free_node(fresh.nodes.size(), 0);
-  const double off_die = 0.1 * element_size;
-  std::vector<char> on_plane(fresh.nodes.size(), 0);
+  // The free surface: boundary nodes, less those on a symmetry plane, less
+  // those within a tenth of an element of a die.
+  std::vector<char> free_node = mesh::boundary_node_flags(fresh);
   for (const BoundaryCondition& bc : bodies_[body].conditions)
     if (bc.kind == BoundaryKind::symmetry)
       for (int f : select_faces(fresh, bc.faces))
-        for (int v : fresh.boundary_faces[f]) on_plane[v] = 1;
-  for (std::size_t i = 0; i < fresh.nodes.size(); ++i) {
-    if (!on_boundary[i] || on_plane[i]) continue;
-    bool off = true;
-    for (std::size_t d = 0; d < dies_.size() && off; ++d)
-      off = dies_[d].surface->project(fresh.nodes[i] - state_.dies[d].displacement).distance > off_die;
-    free_node[i] = off;
-  }
+        for (int v : fresh.boundary_faces[f]) free_node[v] = 0;
+  const double off_die = 0.1 * element_size;
+  for (std::size_t i = 0; i < fresh.nodes.size(); ++i)
+    for (std::size_t d = 0; d < dies_.size() && free_node[i]; ++d)
+      free_node[i] = dies_[d].surface->project(fresh.nodes[i] - state_.dies[d].displacement).distance > off_die;
   // The volume wanted: the material, and the overlap the new mesh has (the
   // free nodes moved stay off the dies).
   return mesh::restore_volume(fresh, material + inside_dies(fresh, mesh::whole_range(fresh), body), free_node);
