@@ -639,7 +639,7 @@ void Run::remesh_checking_load(const std::vector<std::pair<int, std::string>>& w
               std::isnan(old_mesh) ? "old" : "new");
   else
     log::info("    load check, next increment (dt %.3g s) on the old mesh and on the new: %.5g and %.5g kN (%+.2f%%)",
-              dt, old_mesh / 1e3, new_mesh / 1e3, 100.0 * (new_mesh / old_mesh - 1.0));
+              dt, old_mesh / 1e3, new_mesh / 1e3, 100.0 * state_.remeshes[first_record].load_jump());
 }
 
 void Run::write_outputs(bool force) {
@@ -1396,7 +1396,7 @@ void Run::write_summary(double total) const {
       if (!std::isnan(r.material_change)) summary << ", \"material_change\": " << r.material_change;
       if (!std::isnan(r.load_old_mesh) && !std::isnan(r.load_new_mesh))
         summary << ", \"load_old_mesh_N\": " << r.load_old_mesh << ", \"load_new_mesh_N\": " << r.load_new_mesh
-                << ", \"load_jump\": " << r.load_new_mesh / r.load_old_mesh - 1.0;
+                << ", \"load_jump\": " << r.load_jump();
       summary << "}";
     }
     summary << "]},\n";

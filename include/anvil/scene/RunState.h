@@ -56,6 +56,9 @@ struct RemeshRecord {
   /// NaN when not checked or a solve failed).
   double load_old_mesh = std::numeric_limits<double>::quiet_NaN();
   double load_new_mesh = std::numeric_limits<double>::quiet_NaN();
+  /// The jump the remesh puts in the load-stroke curve, relative (issue 5
+  /// bounds it by 3 %); NaN when not measured.
+  double load_jump() const { return load_new_mesh / load_old_mesh - 1.0; }
   /// Relative change of the body's material (its mesh less the part inside
   /// the dies) by the remesh, put-back and give-back included; NaN from a
   /// checkpoint written before it was kept.
