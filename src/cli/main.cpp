@@ -5,6 +5,7 @@
 #include "anvil/scene/Simulation.h"
 #include "anvil/scene/effects.h"
 #include "anvil/scene/schema.h"
+#include "anvil/solver/PetscSession.h"
 
 #include <cstdio>
 #include <cstring>
@@ -29,6 +30,12 @@ usage:
                                  (dies[] = every die, dies[1] = the second)
   anvil output-dir CASE.yaml [-o DIR]
                                  print the folder a run would write to
+  anvil run CASE.yaml ... -PETSC_OPTION [VALUE] ...
+                                 PETSc options for experts, after the case
+                                 file, e.g. -ksp_monitor -ksp_view
+                                 -fieldsplit_0_pc_type gamg (fgmres solver)
+                                 -direct_mat_mumps_icntl_14 50 (mumps solver);
+                                 they win over the case's solver.petsc_options
   anvil --schema                 every case-file and material-card key: type,
                                  default, range, unit, meaning
   anvil --list                   the effects a scene can call for
@@ -83,6 +90,9 @@ int main(int argc, char** argv) {
     } else if (arg == "--set") {
       if (i + 1 >= argc) return usage_error("--set needs KEY=VALUE, e.g. --set time.stroke_increment=0.1");
       overrides.emplace_back(argv[++i]);
+    } else if (arg.size() > 1 && arg[0] == '-' && arg[1] != '-') {
+      // A PETSc option (PetscInitialize reads it), with its value when the next argument is not an option.
+      if (i + 1 < argc && !anvil::solver::is_petsc_option_name(argv[i + 1])) ++i;
     } else if (!arg.empty() && arg[0] == '-') {
       return usage_error("unknown option '" + arg + "'");
     } else if (case_file.empty()) {
@@ -99,7 +109,11 @@ int main(int argc, char** argv) {
       std::puts(anvil::scene::output_directory(c, options).c_str());
       return 0;
     }
+    anvil::solver::PetscSession petsc(argc, argv);
     anvil::scene::run(c, options);
+    for (const std::string& unused : anvil::solver::PetscSession::unused_options())
+      std::fprintf(stderr, "anvil: warning: PETSc option %s was not used by the solver of this run (misspelt?)\n",
+                   unused.c_str());
     return 0;
   } catch (const anvil::InputError& e) {
     std::fprintf(stderr, "anvil: input error: %s\n", e.what());

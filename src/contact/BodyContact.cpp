@@ -241,6 +241,9 @@ const std::vector<double>& BodyContact::gaps(const Eigen::VectorXd& nodal) {
 
 void BodyContact::start(const Eigen::VectorXd& nodal) { active_.start(gaps(nodal)); }
 bool BodyContact::consistent(const Eigen::VectorXd& nodal) { return active_.consistent(gaps(nodal)); }
+bool BodyContact::linear() const {
+  return std::all_of(pairs_.begin(), pairs_.end(), [](const BodyPair& p) { return is_linear(p.friction); });
+}
 std::string BodyContact::accept(const Eigen::VectorXd& nodal) { return active_.accept(gaps(nodal), "pair constraints"); }
 
 double BodyContact::pressure(int i, const Eigen::VectorXd& nodal) const {

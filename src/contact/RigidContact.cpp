@@ -3,6 +3,7 @@
 #include "anvil/fem/DofMap.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -60,6 +61,10 @@ void RigidContact::start(const Eigen::VectorXd& nodal) {
 }
 
 bool RigidContact::consistent(const Eigen::VectorXd& nodal) { return active_.consistent(gaps(nodal)); }
+
+bool RigidContact::linear() const {
+  return std::all_of(dies_.begin(), dies_.end(), [](const DieView& d) { return is_linear(d.friction); });
+}
 
 std::string RigidContact::accept(const Eigen::VectorXd& nodal) { return active_.accept(gaps(nodal), "contact nodes"); }
 

@@ -5,7 +5,9 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace anvil::fem {
 namespace {
@@ -34,89 +36,109 @@ std::vector<std::vector<int>> colour_elements(const mesh::TetMesh& mesh) {
   return colours;
 }
 
-/// Position of (row, col) in a compressed column-major matrix.
-long entry_position(const SparseMatrix& m, long row, long col) {
-  const long* begin = m.innerIndexPtr() + m.outerIndexPtr()[col];
-  const long* end = m.innerIndexPtr() + m.outerIndexPtr()[col + 1];
-  const long* it = std::lower_bound(begin, end, row);
-  ANVIL_ASSERT(it != end && *it == row);
-  return it - m.innerIndexPtr();
+void sort_unique(std::vector<std::vector<int>>& lists) {
+  for (auto& n : lists) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
 }
 
 } // namespace
 
 Assembler::Assembler(const mesh::TetMesh& mesh, const DofMap& dofs)
     : dofs_(dofs), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()),
-      bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0), neighbours_(mesh.nodes.size()) {
+      bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0), element_neighbours_(mesh.nodes.size()) {
+  ANVIL_ASSERT(dofs.dof_count() == kDofsPerNode * mesh.node_count());
   for (const mesh::Tet& t : mesh.tets)
     for (int a : t)
-      for (int b : t) neighbours_[a].push_back(b);
-  for (auto& n : neighbours_) {
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-  }
-  build_pattern(neighbours_);
+      for (int b : t) element_neighbours_[a].push_back(b);
+  sort_unique(element_neighbours_);
+  neighbours_ = element_neighbours_;
+  build_pattern();
 }
 
 bool Assembler::set_couplings(const std::vector<std::pair<int, int>>& couplings) {
   if (couplings == couplings_) return false;
   couplings_ = couplings;
-  std::vector<std::vector<int>> neighbours = neighbours_;
-  for (const auto& [a, b] : couplings) neighbours[a].push_back(b), neighbours[b].push_back(a);
-  for (auto& n : neighbours) {
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-  }
-  build_pattern(neighbours);
+  neighbours_ = element_neighbours_;
+  for (const auto& [a, b] : couplings) neighbours_[a].push_back(b), neighbours_[b].push_back(a);
+  sort_unique(neighbours_);
+  build_pattern();
   return true;
 }
 
-void Assembler::build_pattern(const std::vector<std::vector<int>>& neighbours) {
-  // 4×4 blocks of node adjacency, filtered to free dofs.
+void Assembler::build_pattern() {
+  // Every row of node b holds the 4 columns of each neighbour of b, in node order.
   long nnz = 0;
-  for (const auto& n : neighbours) nnz += 16 * static_cast<long>(n.size());
-  const int free = dofs_.free_count();
-  std::vector<long> outer(static_cast<std::size_t>(free) + 1, 0);
-  std::vector<long> inner;
+  for (const auto& n : neighbours_) nnz += 16 * static_cast<long>(n.size());
+  if (nnz > std::numeric_limits<int>::max())
+    throw RunError("the system has " + std::to_string(nnz) +
+                   " matrix entries, more than the 32-bit indices of this build hold (2^31 - 1)");
+  const int rows = dofs_.dof_count();
+  std::vector<int> outer(static_cast<std::size_t>(rows) + 1, 0), inner;
   inner.reserve(static_cast<std::size_t>(nnz));
-  for (std::size_t node = 0; node < neighbours.size(); ++node)
-    for (int c = 0; c < kDofsPerNode; ++c) {
-      const int col = dofs_.free_index(kDofsPerNode * static_cast<int>(node) + c);
-      if (col < 0) continue;
-      for (int other : neighbours[node])
-        for (int d = 0; d < kDofsPerNode; ++d) {
-          const int row = dofs_.free_index(kDofsPerNode * other + d);
-          if (row >= 0) inner.push_back(row);
-        }
-      outer[col + 1] = static_cast<long>(inner.size());
+  for (std::size_t node = 0; node < neighbours_.size(); ++node)
+    for (int d = 0; d < kDofsPerNode; ++d) {
+      for (int other : neighbours_[node])
+        for (int c = 0; c < kDofsPerNode; ++c) inner.push_back(kDofsPerNode * other + c);
+      outer[kDofsPerNode * node + d + 1] = static_cast<int>(inner.size());
     }
   std::vector<double> zeros(inner.size(), 0.0);
-  pattern_ = Eigen::Map<const SparseMatrix>(free, free, static_cast<long>(inner.size()), outer.data(), inner.data(),
+  tangent_ = Eigen::Map<const SparseMatrix>(rows, rows, static_cast<int>(inner.size()), outer.data(), inner.data(),
                                             zeros.data());
-  pattern_.makeCompressed();
+  tangent_.makeCompressed();
+  diagonal_.resize(static_cast<std::size_t>(rows));
+  for (int dof = 0; dof < rows; ++dof)
+    diagonal_[dof] = entry(dof / kDofsPerNode, dof % kDofsPerNode, dof / kDofsPerNode, dof % kDofsPerNode);
 }
 
-void Assembler::add_velocity_block(SparseMatrix& tangent, int row_node, int col_node, const Eigen::Matrix3d& block) const {
-  for (int j = 0; j < 3; ++j) {
-    const int col = dofs_.free_index(kDofsPerNode * col_node + j);
-    if (col < 0) continue;
-    for (int i = 0; i < 3; ++i)
-      if (const int row = dofs_.free_index(kDofsPerNode * row_node + i); row >= 0)
-        tangent.valuePtr()[entry_position(tangent, row, col)] += block(i, j);
+int Assembler::entry(int row_node, int d, int col_node, int c) const {
+  const std::vector<int>& n = neighbours_[row_node];
+  const auto it = std::lower_bound(n.begin(), n.end(), col_node);
+  ANVIL_ASSERT(it != n.end() && *it == col_node);
+  return tangent_.outerIndexPtr()[kDofsPerNode * row_node + d] + kDofsPerNode * static_cast<int>(it - n.begin()) + c;
+}
+
+void Assembler::add_velocity_block(int row_node, int col_node, const Eigen::Matrix3d& block) {
+  const int first = entry(row_node, 0, col_node, 0);
+  const int row_length = kDofsPerNode * static_cast<int>(neighbours_[row_node].size());
+  double* values = tangent_.valuePtr();
+  for (int i = 0; i < 3; ++i) {
+    if (dofs_.prescribed(kDofsPerNode * row_node + i)) continue;
+    for (int j = 0; j < 3; ++j)
+      if (!dofs_.prescribed(kDofsPerNode * col_node + j)) values[first + i * row_length + j] += block(i, j);
+  }
+}
+
+void Assembler::finish_tangent() {
+  // Prescribed rows and columns were left empty; mean free diagonal per kind.
+  double sum[2] = {0.0, 0.0};
+  int count[2] = {0, 0};
+  for (int dof = 0; dof < dofs_.dof_count(); ++dof) {
+    if (dofs_.prescribed(dof)) continue;
+    const int kind = dof % kDofsPerNode == 3;
+    sum[kind] += std::abs(tangent_.valuePtr()[diagonal_[dof]]);
+    ++count[kind];
+  }
+  for (int dof = 0; dof < dofs_.dof_count(); ++dof) {
+    if (!dofs_.prescribed(dof)) continue;
+    const int kind = dof % kDofsPerNode == 3;
+    tangent_.valuePtr()[diagonal_[dof]] = count[kind] > 0 && sum[kind] > 0.0 ? sum[kind] / count[kind] : 1.0;
   }
 }
 
 AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws& laws,
                                    const std::vector<material::PointState>& states, const BodyUnknowns& unknowns,
                                    const Eigen::VectorXd& nodal_forces, const BodyForce& body_force,
-                                   SparseMatrix* tangent) {
+                                   bool with_tangent) {
   AssemblyResult result;
   result.residual = -nodal_forces;
-  if (tangent) {
-    if (tangent->nonZeros() != pattern_.nonZeros() || tangent->rows() != pattern_.rows()) *tangent = pattern_;
-    std::fill(tangent->valuePtr(), tangent->valuePtr() + tangent->nonZeros(), 0.0);
+  if (with_tangent) {
+    std::fill(tangent_.valuePtr(), tangent_.valuePtr() + tangent_.nonZeros(), 0.0);
+    pressure_mass_.setZero(mesh.node_count());
   }
   std::fill(bad_.begin(), bad_.end(), 0);
+  double* values = tangent_.valuePtr();
   for (const std::vector<int>& colour : colours_) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, colour.size(), 64), [&](const auto& range) {
       MiniElementInput in;
@@ -131,7 +153,7 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
         }
         in.bubble_velocity = unknowns.bubble.segment<3>(3 * e);
         in.state = states.empty() ? material::PointState{} : states[e];
-        if (!mini_element(in, *laws[e], tangent != nullptr, body_force, system)) {
+        if (!mini_element(in, *laws[e], with_tangent, body_force, system)) {
           bad_[e] = 1;
           bubble_sq_[e] = 0.0;
           continue;
@@ -141,17 +163,21 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
         bubble_condensation_[e].col(16) = system.bubble_residual_solved;
         for (int a = 0; a < 4; ++a)
           result.residual.segment<4>(kDofsPerNode * t[a]) += system.residual.segment<4>(4 * a);
-        if (!tangent) continue;
-        for (int a = 0; a < 4; ++a)
-          for (int c = 0; c < 4; ++c) {
-            const int col = dofs_.free_index(kDofsPerNode * t[a] + c);
-            if (col < 0) continue;
-            for (int b = 0; b < 4; ++b)
-              for (int d = 0; d < 4; ++d) {
-                const int row = dofs_.free_index(kDofsPerNode * t[b] + d);
-                if (row >= 0) tangent->valuePtr()[entry_position(*tangent, row, col)] += system.tangent(4 * b + d, 4 * a + c);
-              }
+        if (!with_tangent) continue;
+        if (system.viscosity > 0.0)
+          for (int a = 0; a < 4; ++a) pressure_mass_[t[a]] += 0.25 * system.volume / system.viscosity;
+        for (int b = 0; b < 4; ++b) {
+          const int row_length = kDofsPerNode * static_cast<int>(neighbours_[t[b]].size());
+          for (int a = 0; a < 4; ++a) {
+            const int first = entry(t[b], 0, t[a], 0); // row 4 t[b], column 4 t[a]
+            for (int d = 0; d < 4; ++d) {
+              if (dofs_.prescribed(kDofsPerNode * t[b] + d)) continue;
+              for (int c = 0; c < 4; ++c)
+                if (!dofs_.prescribed(kDofsPerNode * t[a] + c))
+                  values[first + d * row_length + c] += system.tangent(4 * b + d, 4 * a + c);
+            }
           }
+        }
       }
     });
   }

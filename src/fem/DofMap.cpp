@@ -1,10 +1,11 @@
 #include "anvil/fem/DofMap.h"
 
+#include <algorithm>
+
 namespace anvil::fem {
 
-DofMap::DofMap(const std::vector<char>& prescribed) : free_index_(prescribed.size(), -1) {
-  for (std::size_t d = 0; d < prescribed.size(); ++d)
-    if (!prescribed[d]) free_index_[d] = free_count_++;
-}
+DofMap::DofMap(std::vector<char> prescribed)
+    : prescribed_(std::move(prescribed)),
+      free_count_(static_cast<int>(std::count(prescribed_.begin(), prescribed_.end(), 0))) {}
 
 } // namespace anvil::fem

@@ -124,6 +124,7 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
   const Eigen::LLT<Eigen::Matrix3d> k_bb_factor(k_bb);
   out.bubble_residual_solved = k_bb_factor.solve(r_b);
   out.bubble_residual_sq = r_b.squaredNorm();
+  out.viscosity = tangent_sum.trace() / (10.0 * volume);
   out.bubble_gain = k_bb_factor.solve(coupling);
 
   for (int a = 0; a < 4; ++a) {

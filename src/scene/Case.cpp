@@ -1,5 +1,7 @@
 #include "anvil/scene/Case.h"
 
+#include "anvil/solver/PetscSession.h"
+
 #include "checked_yaml.h"
 
 #include <algorithm>
@@ -230,8 +232,14 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.checkpoint_every = doc.integer(output, "checkpoint_every", "output.checkpoint_every");
   const YAML::Node solver = root["solver"] ? root["solver"] : YAML::Node(YAML::NodeType::Map);
   c.newton.tolerance = doc.number(solver, "tolerance", "solver.tolerance");
+  c.newton.increment_tolerance = doc.number(solver, "increment_tolerance", "solver.increment_tolerance");
   c.newton.max_iterations = doc.integer(solver, "max_iterations", "solver.max_iterations");
-  c.linear_solver = solver::linear_solver_kind(doc.text(solver, "linear_solver", "solver.linear_solver"));
+  c.newton.krylov_tolerance_max = doc.number(solver, "krylov_tolerance", "solver.krylov_tolerance");
+  c.linear_solver.kind = solver::linear_solver_kind(doc.text(solver, "linear_solver", "solver.linear_solver"));
+  c.linear_solver.reuse_preconditioner = doc.boolean(solver, "reuse_preconditioner", "solver.reuse_preconditioner");
+  c.petsc_options = doc.text(solver, "petsc_options", "solver.petsc_options");
+  if (!c.petsc_options.empty()) // checked now, so a bad text stops the run before it starts
+    solver::parse_petsc_options(c.petsc_options, doc.at(solver["petsc_options"]) + ": key 'solver.petsc_options'");
 
   const YAML::Node bodies = root["bodies"];
   for_each_entry(bodies, "bodies", [&](const YAML::Node& b, const std::string& shown) {

@@ -83,6 +83,7 @@ void write_checkpoint(const std::string& path, const RunState& s) {
     write_attribute(file, "increment", H5T_NATIVE_INT, &s.increment);
     write_attribute(file, "time", H5T_NATIVE_DOUBLE, &s.time);
     write_attribute(file, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
+    write_attribute(file, "linear_iterations", H5T_NATIVE_LONG, &s.linear_iterations);
     const double volume[6] = {s.volume.initial, s.volume.solver, s.volume.projection, s.volume.largest_increment,
                               s.volume.compensation, s.volume.remeshing};
     write_array(file, "volume", H5T_NATIVE_DOUBLE, volume, 6, 0);
@@ -148,6 +149,8 @@ RunState read_checkpoint(const std::string& path) {
   read_attribute(file, path, "increment", H5T_NATIVE_INT, &s.increment);
   read_attribute(file, path, "time", H5T_NATIVE_DOUBLE, &s.time);
   read_attribute(file, path, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
+  if (H5Aexists(file, "linear_iterations") > 0) // absent before the Krylov solver
+    read_attribute(file, path, "linear_iterations", H5T_NATIVE_LONG, &s.linear_iterations);
   std::vector<double> volume, nodes, nodal, bubble, dies, loads, outputs;
   std::vector<long long> tets, faces;
   std::vector<char> files;

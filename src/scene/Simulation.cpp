@@ -26,6 +26,7 @@
 #include "anvil/scene/Die.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/effects.h"
+#include "anvil/solver/PetscSession.h"
 
 #include <tbb/info.h>
 
@@ -459,9 +460,9 @@ void Run::log_header() const {
   log::info("effects:%s", effect_list.c_str());
   log::info("unknowns: %d (velocity and pressure, after %d prescribed)", solver_->free_count(),
             static_cast<int>(imposed_.prescribed.size()) - solver_->free_count());
-  log::info("solver: %s (asked: %s), Newton tolerance %.1e, %d threads",
-            solver::to_string(solver_->linear_solver()).c_str(), solver::to_string(case_.linear_solver).c_str(),
-            case_.newton.tolerance, tbb::info::default_concurrency());
+  log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d threads",
+            solver::to_string(solver_->linear_solver().kind()).c_str(), solver::to_string(case_.linear_solver.kind).c_str(),
+            case_.newton.tolerance, case_.newton.increment_tolerance, tbb::info::default_concurrency());
 }
 
 double Run::choose_time_step(double nominal) {
@@ -1244,6 +1245,7 @@ void Run::execute() {
     if (has_contact()) set_contact_scales();
     if (!try_increment(1.0, report)) throw RunError("increment 1: " + report.failure);
     state_.newton_iterations = static_cast<int>(report.iterations.size());
+    state_.linear_iterations = report.linear_iterations;
     last_report_ = report;
     record_loads(1, 0.0);
     for (std::size_t s = 0; s < surfaces_.size(); ++s) {
@@ -1310,6 +1312,7 @@ void Run::execute() {
     ++state_.increment;
     state_.time += dt;
     state_.newton_iterations += static_cast<int>(report.iterations.size());
+    state_.linear_iterations += report.linear_iterations;
     last_report_ = report;
     // ε̄ += Δt ε̄̇ per element, with the rates of the converged increment on the geometry it was solved on.
     for (int e = 0; e < state_.mesh.tet_count(); ++e) {
@@ -1335,10 +1338,11 @@ void Run::execute() {
     // Time left: this run's pace over the progress made in it (stop criteria fraction).
     const double done = progress(), elapsed = seconds_since(start_) - resumed_time_;
     const double eta = done > progress_at_start ? elapsed / (done - progress_at_start) * (1.0 - done) : 0.0;
-    log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN  newton %zu  contact %d  volume %+.3f%% "
+    log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN  newton %zu%s  contact %d  volume %+.3f%% "
               "(%.3f%% inside dies)  left ~%s",
               state_.increment, state_.time, lead.stroke, dt, surfaces_[lead.surface].name.c_str(),
               lead.force.norm() / 1e3, report.iterations.size(),
+              solver_->linear_solver().iterative() ? (" krylov " + std::to_string(report.linear_iterations)).c_str() : "",
               (dies_.empty() ? 0 : contact_.active_count()) + (pair_contact_ ? pair_contact_->active_count() : 0),
               100.0 * (mesh::volume(state_.mesh) / state_.volume.initial - 1.0),
               100.0 * std::accumulate(inside_dies_.begin(), inside_dies_.end(), 0.0) / state_.volume.initial,
@@ -1367,7 +1371,9 @@ void Run::write_summary(double total) const {
             << ", \"volume_mm3\": " << mesh::volume(state_.mesh, bodies_[b].range) << "}";
   summary << "],\n  \"unknowns\": " << solver_->free_count() << ",\n"
           << "  \"increments\": " << state_.increment << ",\n  \"time_s\": " << state_.time << ",\n"
-          << "  \"newton_iterations\": " << state_.newton_iterations << ",\n";
+          << "  \"newton_iterations\": " << state_.newton_iterations << ",\n"
+          << "  \"linear_solver\": " << json_string(solver::to_string(solver_->linear_solver().kind())) << ",\n"
+          << "  \"krylov_iterations\": " << state_.linear_iterations << ",\n";
   if (!last_report_.iterations.empty())
     summary << "  \"final_residual\": {\"force\": " << last_report_.iterations.back().force_residual
             << ", \"div\": " << last_report_.iterations.back().flux_residual << "},\n";
@@ -1427,6 +1433,9 @@ std::string output_directory(const Case& c, const RunOptions& options) {
   return "out/" + std::filesystem::path(c.path).stem().string();
 }
 
-void run(const Case& c, const RunOptions& options) { Run(c, options).execute(); }
+void run(const Case& c, const RunOptions& options) {
+  const solver::ScopedPetscOptions petsc_options(c.petsc_options, c.path + ": solver.petsc_options");
+  Run(c, options).execute();
+}
 
 } // namespace anvil::scene

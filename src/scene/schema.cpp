@@ -75,14 +75,35 @@ const std::vector<KeySpec>& case_schema() {
                        "output folder, relative to the working directory; default out/<case name>; -o overrides"), ""),
       with_default(key("output.vtk", T::boolean, "write the .vtu/.pvd series"), "true"),
       key("solver", T::map, "Newton and linear solver settings"),
-      with_default(range(key("solver.tolerance", T::number,
-                             "relative tolerance on force residual, div residual and |dv|/|v|"), 1e-14, 1e-2), "1e-8"),
+      with_default(range(key("solver.tolerance", T::number, "Newton: relative tolerance on the force and div residuals"),
+                         1e-14, 1e-2),
+                   "1e-8"),
+      with_default(range(key("solver.increment_tolerance", T::number,
+                             "Newton: relative tolerance on |dv|/|v| of the last step (a linear problem needs none "
+                             "after a full step)"),
+                         1e-14, 1),
+                   "1e-8"),
       with_default(range(key("solver.max_iterations", T::integer, "Newton iterations per increment"), 1, 500), "30"),
       with_default(choices(key("solver.linear_solver", T::string,
-                               "sparse solver; auto: umfpack up to 20000 unknowns, minres (block-preconditioned, "
-                               "low memory) above; the LDLT ones need a quasi-definite matrix"),
-                           {"auto", "umfpack", "cholmod_ldlt", "eigen_ldlt", "minres"}),
+                               "fgmres: PETSc FGMRES with algebraic multigrid on the velocities and a Schur-complement "
+                               "pressure preconditioner (large meshes); mumps: sparse direct (MUMPS); auto: mumps up to "
+                               "20000 unknowns, fgmres above, mumps when fgmres stagnates; umfpack, cholmod_ldlt, "
+                               "eigen_ldlt, minres: kept for comparison"),
+                           {"auto", "fgmres", "mumps", "umfpack", "cholmod_ldlt", "eigen_ldlt", "minres"}),
                    "auto"),
+      with_default(range(key("solver.krylov_tolerance", T::number,
+                             "fgmres: loosest relative tolerance of a Krylov solve; inexact Newton tightens it as the "
+                             "residual falls (Eisenstat-Walker)"),
+                         1e-12, 0.5),
+                   "1e-2"),
+      with_default(key("solver.reuse_preconditioner", T::boolean,
+                       "fgmres: keep the multigrid set-up across Newton iterations and increments while the Krylov "
+                       "iterations per decade stay within 1.5x of those right after it"),
+                   "true"),
+      with_default(key("solver.petsc_options", T::string,
+                       "PETSc options for experts, e.g. '-ksp_monitor -fieldsplit_0_pc_type gamg' (prefix direct_ for "
+                       "mumps); the same options on the anvil command line win"),
+                   ""),
       required(key("bodies", T::list, "deformable bodies, solved together (billets, deformable dies)")),
       required(key("bodies[].name", T::string, "name used by boundary conditions and in outputs")),
       required(key("bodies[].material", T::string, "material card (YAML), path relative to the case file")),

@@ -18,13 +18,13 @@ BlockPreconditioner& BlockPreconditioner::factorize(const fem::SparseMatrix& a) 
   std::array<std::vector<Eigen::Triplet<double, long>>, 3> entries;
   pressure_diagonal_inverse_.resize(static_cast<long>(index_[3].size()));
   double largest_pressure_diagonal = 0.0;
-  for (long col = 0; col < a.outerSize(); ++col) {
-    const int c = component_[col];
-    for (fem::SparseMatrix::InnerIterator it(a, col); it; ++it) {
-      if (component_[it.row()] != c) continue;
-      if (c < 3) entries[c].emplace_back(position[it.row()], position[col], it.value());
-      else if (it.row() == col) {
-        pressure_diagonal_inverse_[position[col]] = std::abs(it.value());
+  for (long row = 0; row < a.outerSize(); ++row) {
+    const int c = component_[row];
+    for (fem::SparseMatrix::InnerIterator it(a, row); it; ++it) {
+      if (component_[it.col()] != c) continue;
+      if (c < 3) entries[c].emplace_back(position[row], position[it.col()], it.value());
+      else if (it.col() == row) {
+        pressure_diagonal_inverse_[position[row]] = std::abs(it.value());
         largest_pressure_diagonal = std::max(largest_pressure_diagonal, std::abs(it.value()));
       }
     }
@@ -34,7 +34,7 @@ BlockPreconditioner& BlockPreconditioner::factorize(const fem::SparseMatrix& a) 
   info_ = Eigen::Success;
   for (int c = 0; c < 3; ++c) {
     const long n = static_cast<long>(index_[c].size());
-    fem::SparseMatrix block(n, n);
+    Block block(n, n);
     block.setFromTriplets(entries[c].begin(), entries[c].end());
     if (!velocity_factor_[c]) {
       velocity_factor_[c] = std::make_unique<Cholesky>();

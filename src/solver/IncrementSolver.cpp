@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 namespace anvil::solver {
@@ -13,11 +14,32 @@ namespace anvil::solver {
 using fem::kDofsPerNode;
 
 namespace {
-std::vector<char> free_components(const fem::DofMap& dofs) {
-  std::vector<char> component(static_cast<std::size_t>(dofs.free_count()));
-  for (int d = 0; d < dofs.dof_count(); ++d)
-    if (int f = dofs.free_index(d); f >= 0) component[f] = static_cast<char>(d % kDofsPerNode);
-  return component;
+/// Relative tolerance of the Krylov solve of a Newton step (inexact Newton,
+/// Eisenstat & Walker 1996, SIAM J. Sci. Comput. 17, choice 2 with γ = 0.9,
+/// α = 2 and its safeguard): loose while the residual is far from the
+/// solution, tight as Newton converges quadratically; never tighter than
+/// what brings the residual to half the Newton tolerance. A linear problem is
+/// solved in one step to a tenth of the tolerance.
+double krylov_tolerance(const NewtonSettings& settings, bool linear_problem, double residual, double previous_residual,
+                        double previous_forcing) {
+  constexpr double kGamma = 0.9, kSmallest = 1e-12;
+  const double no_oversolve = 0.5 * settings.tolerance / std::max(residual, 1e-300);
+  double forcing = settings.krylov_tolerance_max;
+  if (linear_problem) forcing = 0.1 * settings.tolerance / std::max(residual, 1e-300);
+  else if (previous_residual > 0.0) {
+    const double ratio = residual / previous_residual;
+    forcing = kGamma * ratio * ratio;
+    if (const double safeguard = kGamma * previous_forcing * previous_forcing; safeguard > 0.1)
+      forcing = std::max(forcing, safeguard);
+    forcing = std::max(forcing, no_oversolve);
+  }
+  return std::clamp(forcing, kSmallest, settings.krylov_tolerance_max);
+}
+
+std::string format_tolerance(double tolerance) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%.1e", tolerance);
+  return text;
 }
 
 /// Largest velocity component magnitude of a nodal vector (4 × nodes).
@@ -29,17 +51,17 @@ double max_velocity(const Eigen::VectorXd& nodal) {
 }
 } // namespace
 
-IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, LinearSolverKind kind,
-                                 Timers& timers)
-    : mesh_(mesh), prescribed_(std::move(prescribed)), dofs_(prescribed_), assembler_(mesh, dofs_),
-      linear_solver_(kind, free_components(dofs_)), timers_(timers) {}
+IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed,
+                                 const LinearSolverSettings& linear, Timers& timers)
+    : mesh_(mesh), dofs_(std::move(prescribed)), assembler_(mesh, dofs_),
+      linear_solver_(linear, dofs_.free_count()), timers_(timers) {}
 
 IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns) {
   Merit m{0.0, 0.0, 0.0};
   {
     Timers::Scope scope(timers_, "assembly");
     fem::AssemblyResult r = assembler_.assemble(mesh_, problem.laws, problem.states, unknowns, problem.nodal_forces,
-                                                problem.body_force, &tangent_);
+                                                problem.body_force, true);
     residual_ = std::move(r.residual);
     bad_element_ = r.bad_element;
     m.bubble_sq = r.bubble_residual_sq;
@@ -50,10 +72,11 @@ IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem
     blocks_.clear();
     for (NodalTerm* term : problem.nodal_terms) term->add(unknowns.nodal, nodal_term_residual_, &blocks_);
     residual_ += nodal_term_residual_;
-    for (const NodeBlock& b : blocks_) assembler_.add_velocity_block(tangent_, b.row_node, b.col_node, b.tangent);
+    for (const NodeBlock& b : blocks_) assembler_.add_velocity_block(b.row_node, b.col_node, b.tangent);
   } else nodal_term_residual_.resize(0);
+  assembler_.finish_tangent();
   for (int d = 0; d < dofs_.dof_count(); ++d) {
-    if (dofs_.free_index(d) < 0) continue;
+    if (dofs_.prescribed(d)) continue;
     (d % kDofsPerNode == 3 ? m.flux_sq : m.force_sq) += residual_[d] * residual_[d];
   }
   return m;
@@ -63,7 +86,7 @@ double IncrementSolver::force_scale(const IncrementProblem& problem) const {
   const Eigen::VectorXd& nodal_forces = problem.nodal_forces;
   double reaction_sq = 0.0;
   for (int d = 0; d < dofs_.dof_count(); ++d)
-    if (dofs_.free_index(d) < 0 && d % kDofsPerNode != 3) reaction_sq += residual_[d] * residual_[d];
+    if (dofs_.prescribed(d) && d % kDofsPerNode != 3) reaction_sq += residual_[d] * residual_[d];
   double applied_sq = 0.0;
   for (int d = 0; d < dofs_.dof_count(); ++d)
     if (d % kDofsPerNode != 3) applied_sq += nodal_forces[d] * nodal_forces[d];
@@ -85,7 +108,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   // reference rate (|v|max / body size) gives a start in the quadratic basin.
   bool at_rest = true;
   for (int d = 0; d < n && at_rest; ++d)
-    if (dofs_.free_index(d) >= 0 && unknowns.nodal[d] != 0.0) at_rest = false;
+    if (!dofs_.prescribed(d) && unknowns.nodal[d] != 0.0) at_rest = false;
   const double reference_velocity =
       problem.reference_velocity > 0.0 ? problem.reference_velocity : max_velocity(unknowns.nodal);
   const bool nonlinear = std::any_of(problem.laws.begin(), problem.laws.end(),
@@ -112,6 +135,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     NewtonSettings predictor = settings;
     predictor.max_iterations = 1; // linear laws: one Newton step is the solution (with an active
     predictor.verbose = false;    // contact set, one step of it is enough for a start)
+    predictor.tolerance = 1e-2;   // a start, not an answer: its Krylov solve need not be tight
     Timers::Scope scope(timers_, "effect nonlinear_law (predictor)");
     const IncrementProblem newtonian_problem{newtonian_laws,     problem.states,     problem.nodal_forces,
                                              problem.body_force, problem.nodal_terms, reference_velocity,
@@ -144,9 +168,13 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     }
     if (assembler_.set_couplings(couplings)) linear_solver_.pattern_changed();
   }
+  const bool linear_problem =
+      !nonlinear && std::all_of(problem.nodal_terms.begin(), problem.nodal_terms.end(),
+                                [](const NodalTerm* term) { return term->linear(); });
   Merit merit = evaluate(problem, unknowns);
   double scale = force_scale(problem);
-  Eigen::VectorXd rhs(dofs_.free_count()), solution(dofs_.free_count()), delta(n), bubble_delta;
+  Eigen::VectorXd rhs(n), delta(n), bubble_delta;
+  double previous_residual = -1.0, forcing = settings.krylov_tolerance_max;
   fem::BodyUnknowns trial;
   // The iteration budget applies per active set: a change of set at
   // convergence starts a new (short) Newton run, at most kMaxSetChanges times.
@@ -157,18 +185,22 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       report.failure = "element " + std::to_string(bad_element_ + 1) + " is inverted or flat";
       return report;
     }
-    for (int d = 0; d < n; ++d)
-      if (int f = dofs_.free_index(d); f >= 0) rhs[f] = -residual_[d];
+    for (int d = 0; d < n; ++d) rhs[d] = dofs_.prescribed(d) ? 0.0 : -residual_[d];
+    const double residual_now =
+        std::sqrt(relative(merit, scale, std::max(std::max(max_velocity(unknowns.nodal), reference_velocity) * area, 1e-300)));
+    forcing = krylov_tolerance(settings, linear_problem, residual_now, previous_residual, forcing);
+    previous_residual = residual_now;
     {
       Timers::Scope scope(timers_, "solve");
-      if (!linear_solver_.factorize(tangent_) || !linear_solver_.solve(rhs, solution)) {
+      const SaddlePointData data{mesh_.nodes, assembler_.pressure_mass()};
+      if (!linear_solver_.factorize(assembler_.tangent(), data) || !linear_solver_.solve(rhs, delta, forcing)) {
         report.failure = "the linear solver (" + to_string(linear_solver_.kind()) + ") failed on the tangent";
         return report;
       }
     }
-    delta.setZero();
+    report.linear_iterations += linear_solver_.iterations();
     for (int d = 0; d < n; ++d)
-      if (int f = dofs_.free_index(d); f >= 0) delta[d] = solution[f];
+      if (dofs_.prescribed(d)) delta[d] = 0.0; // decoupled rows: zero to the solve's accuracy, exactly zero here
     assembler_.bubble_increment(mesh_, delta, bubble_delta);
 
     // Backtracking line search on the squared relative residual (Armijo with
@@ -205,8 +237,14 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
                                  std::sqrt(delta_sq / std::max(velocity_sq, velocity_floor_sq)), step};
     report.iterations.push_back(record);
     std::string note;
-    for (NodalTerm* term : problem.nodal_terms) note += term->accept(unknowns.nodal);
-    if (linear_solver_.iterations() > 0) note += "  (" + std::to_string(linear_solver_.iterations()) + " minres iterations)";
+    bool set_changed = false;
+    for (NodalTerm* term : problem.nodal_terms) {
+      note += term->accept(unknowns.nodal);
+      set_changed = set_changed || term->set_changed();
+    }
+    if (linear_solver_.iterative())
+      note += "  (" + std::to_string(linear_solver_.iterations()) + " " + to_string(linear_solver_.kind()) +
+              " iterations, tolerance " + format_tolerance(forcing) + ")";
     if (settings.verbose)
       log::info("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g%s", it,
                 record.force_residual, record.flux_residual, record.increment, record.step, note.c_str());
@@ -214,8 +252,10 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       report.failure = "the residual is not finite";
       return report;
     }
-    if (record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance &&
-        record.increment <= settings.tolerance) {
+    // A full step of a linear problem is its solution: no further step to measure.
+    const bool increment_small =
+        record.increment <= settings.increment_tolerance || (linear_problem && step == 1.0 && !set_changed);
+    if (record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance && increment_small) {
       bool consistent = true;
       if (set_changes < kMaxSetChanges)
         for (NodalTerm* term : problem.nodal_terms) consistent = term->consistent(unknowns.nodal) && consistent;

@@ -1,34 +1,52 @@
 #include "anvil/solver/LinearSolver.h"
 
 #include "anvil/core/error.h"
+#include "anvil/core/log.h"
+#include "anvil/solver/BlockPreconditioner.h"
+#include "anvil/solver/MumpsSolver.h"
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 #include <Eigen/UmfPackSupport>
 #include <unsupported/Eigen/IterativeSolvers>
 
-#include "anvil/solver/BlockPreconditioner.h"
+#include <algorithm>
+#include <cmath>
+#include <optional>
 
 namespace anvil::solver {
 
+namespace {
+/// The SuiteSparse and Eigen direct solvers take compressed columns.
+using ColumnMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+} // namespace
+
 struct LinearSolver::Backend {
-  Eigen::UmfPackLU<fem::SparseMatrix> umfpack;
-  Eigen::CholmodSimplicialLDLT<fem::SparseMatrix, Eigen::Lower> cholmod;
-  Eigen::SimplicialLDLT<fem::SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<long>> eigen;
+  std::optional<KrylovSolver> krylov;
+  std::optional<MumpsSolver> mumps;
+  ColumnMatrix columns; ///< copy of the tangent for the comparison solvers
+  Eigen::UmfPackLU<ColumnMatrix> umfpack;
+  Eigen::CholmodSimplicialLDLT<ColumnMatrix, Eigen::Lower> cholmod;
+  Eigen::SimplicialLDLT<ColumnMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> eigen;
   Eigen::MINRES<fem::SparseMatrix, Eigen::Lower | Eigen::Upper, BlockPreconditioner> minres;
 };
 
 LinearSolverKind linear_solver_kind(const std::string& name) {
+  if (name == "fgmres") return LinearSolverKind::fgmres;
+  if (name == "mumps") return LinearSolverKind::mumps;
   if (name == "umfpack") return LinearSolverKind::umfpack;
   if (name == "cholmod_ldlt") return LinearSolverKind::cholmod_ldlt;
   if (name == "eigen_ldlt") return LinearSolverKind::eigen_ldlt;
   if (name == "minres") return LinearSolverKind::minres;
   if (name == "auto") return LinearSolverKind::automatic;
-  throw InputError("unknown linear solver '" + name + "' (expected auto, umfpack, cholmod_ldlt, eigen_ldlt or minres)");
+  throw InputError("unknown linear solver '" + name +
+                   "' (expected auto, fgmres, mumps, umfpack, cholmod_ldlt, eigen_ldlt or minres)");
 }
 
 std::string to_string(LinearSolverKind kind) {
   switch (kind) {
+  case LinearSolverKind::fgmres: return "fgmres";
+  case LinearSolverKind::mumps: return "mumps";
   case LinearSolverKind::umfpack: return "umfpack";
   case LinearSolverKind::cholmod_ldlt: return "cholmod_ldlt";
   case LinearSolverKind::eigen_ldlt: return "eigen_ldlt";
@@ -40,21 +58,19 @@ std::string to_string(LinearSolverKind kind) {
 
 LinearSolverKind resolve(LinearSolverKind kind, int unknowns) {
   if (kind != LinearSolverKind::automatic) return kind;
-  return unknowns > kDirectSolverLimit ? LinearSolverKind::minres : LinearSolverKind::umfpack;
+  return unknowns > kDirectSolverLimit ? LinearSolverKind::fgmres : LinearSolverKind::mumps;
 }
 
-LinearSolver::LinearSolver(LinearSolverKind kind, std::vector<char> component)
-    : kind_(resolve(kind, static_cast<int>(component.size()))), backend_(std::make_unique<Backend>()) {
-  // Relative residual 1e-10: two orders below Newton's default tolerance, so
-  // the inexact solve does not spoil Newton's quadratic convergence.
-  backend_->minres.setTolerance(1e-10);
+LinearSolver::LinearSolver(const LinearSolverSettings& settings, int unknowns)
+    : settings_(settings), kind_(resolve(settings.kind, unknowns)), backend_(std::make_unique<Backend>()) {
+  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace();
+  if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace();
   backend_->minres.setMaxIterations(20000);
-  backend_->minres.preconditioner().set_components(std::move(component));
 }
 LinearSolver::~LinearSolver() = default;
 
 namespace {
-template <class Solver> bool factorize_with(Solver& s, const fem::SparseMatrix& a, bool& analysed, int& analyses) {
+template <class Solver> bool factorize_with(Solver& s, const ColumnMatrix& a, bool& analysed, int& analyses) {
   if (!analysed) {
     s.analyzePattern(a);
     analysed = true;
@@ -63,28 +79,100 @@ template <class Solver> bool factorize_with(Solver& s, const fem::SparseMatrix& 
   s.factorize(a);
   return s.info() == Eigen::Success;
 }
+
+/// Iterations per decade of residual reduction: comparable between solves
+/// to different tolerances.
+double rate(const KrylovOutcome& k) {
+  return k.iterations / std::max(1.0, -std::log10(std::max(k.reduction, 1e-300)));
+}
 } // namespace
 
-bool LinearSolver::factorize(const fem::SparseMatrix& a) {
+bool LinearSolver::factorize(const fem::SparseMatrix& a, const SaddlePointData& data) {
+  matrix_ = &a;
+  data_.reset();
+  data_.emplace(data);
+  Backend& b = *backend_;
   switch (kind_) {
-  case LinearSolverKind::umfpack: return factorize_with(backend_->umfpack, a, analysed_, analyses_);
-  case LinearSolverKind::cholmod_ldlt: return factorize_with(backend_->cholmod, a, analysed_, analyses_);
-  case LinearSolverKind::eigen_ldlt: return factorize_with(backend_->eigen, a, analysed_, analyses_);
-  case LinearSolverKind::minres: backend_->minres.compute(a); return backend_->minres.info() == Eigen::Success;
-  case LinearSolverKind::automatic: break; // resolved in the constructor
+  case LinearSolverKind::fgmres: {
+    const bool reuse = settings_.reuse_preconditioner && analysed_ && !refresh_;
+    b.krylov->set_operator(a, data, reuse);
+    if (!reuse) {
+      ++setups_;
+      setup_rate_ = 0.0;
+    }
+    refresh_ = false;
+    reused_ = reuse;
+    if (!analysed_) ++analyses_;
+    analysed_ = true;
+    return true;
   }
-  return false;
+  case LinearSolverKind::mumps:
+    if (!analysed_) ++analyses_;
+    analysed_ = true;
+    ++setups_;
+    return b.mumps->factorize(a);
+  case LinearSolverKind::minres:
+    if (!analysed_) {
+      std::vector<char> component(static_cast<std::size_t>(a.rows()));
+      for (std::size_t d = 0; d < component.size(); ++d) component[d] = static_cast<char>(d % fem::kDofsPerNode);
+      b.minres.preconditioner().set_components(std::move(component));
+      analysed_ = true;
+      ++analyses_;
+    }
+    b.minres.compute(a);
+    return b.minres.info() == Eigen::Success;
+  default: break;
+  }
+  ++setups_;
+  b.columns = a;
+  switch (kind_) {
+  case LinearSolverKind::umfpack: return factorize_with(b.umfpack, b.columns, analysed_, analyses_);
+  case LinearSolverKind::cholmod_ldlt: return factorize_with(b.cholmod, b.columns, analysed_, analyses_);
+  case LinearSolverKind::eigen_ldlt: return factorize_with(b.eigen, b.columns, analysed_, analyses_);
+  default: return false; // automatic is resolved in the constructor
+  }
 }
 
-bool LinearSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+bool LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double relative_tolerance) {
+  Backend& b = *backend_;
+  iterations_ = 0;
   switch (kind_) {
-  case LinearSolverKind::umfpack: x = backend_->umfpack.solve(b); return backend_->umfpack.info() == Eigen::Success;
-  case LinearSolverKind::cholmod_ldlt: x = backend_->cholmod.solve(b); return backend_->cholmod.info() == Eigen::Success;
-  case LinearSolverKind::eigen_ldlt: x = backend_->eigen.solve(b); return backend_->eigen.info() == Eigen::Success;
+  case LinearSolverKind::fgmres: {
+    KrylovOutcome k = b.krylov->solve(rhs, x, relative_tolerance);
+    iterations_ = k.iterations;
+    if (!k.converged && reused_) { // a kept preconditioner may have gone stale: set it up again first
+      b.krylov->set_operator(*matrix_, *data_, false);
+      ++setups_;
+      setup_rate_ = 0.0;
+      reused_ = false;
+      k = b.krylov->solve(rhs, x, relative_tolerance);
+      iterations_ += k.iterations;
+    }
+    if (k.converged) {
+      if (setup_rate_ == 0.0) setup_rate_ = std::max(rate(k), 1e-3);
+      else if (rate(k) > settings_.reuse_growth * setup_rate_) refresh_ = true;
+      return true;
+    }
+    log::info("    linear solver: FGMRES stopped after %d iterations (%s, residual reduced to %.2e of %.2e asked); "
+              "MUMPS (direct) takes over for the rest of this mesh",
+              k.iterations, k.reason.c_str(), k.reduction, relative_tolerance);
+    b.krylov.reset();
+    b.mumps.emplace();
+    kind_ = LinearSolverKind::mumps;
+    ++setups_;
+    if (!b.mumps->factorize(*matrix_)) return false;
+    b.mumps->solve(rhs, x);
+    return true;
+  }
+  case LinearSolverKind::mumps: b.mumps->solve(rhs, x); return true;
+  case LinearSolverKind::umfpack: x = b.umfpack.solve(rhs); return b.umfpack.info() == Eigen::Success;
+  case LinearSolverKind::cholmod_ldlt: x = b.cholmod.solve(rhs); return b.cholmod.info() == Eigen::Success;
+  case LinearSolverKind::eigen_ldlt: x = b.eigen.solve(rhs); return b.eigen.info() == Eigen::Success;
   case LinearSolverKind::minres:
-    x = backend_->minres.solve(b);
-    iterations_ = static_cast<int>(backend_->minres.iterations());
-    return backend_->minres.info() == Eigen::Success;
+    b.minres.setTolerance(relative_tolerance);
+    x = b.minres.solve(rhs);
+    iterations_ = static_cast<int>(b.minres.iterations());
+    return b.minres.info() == Eigen::Success;
   case LinearSolverKind::automatic: break;
   }
   return false;

@@ -37,7 +37,7 @@ Solved solve(const mesh::TetMesh& mesh, const material::Material& law, const std
   Solved s;
   s.imposed = scene::impose(mesh, bcs);
   Timers timers;
-  solver::IncrementSolver solver(mesh, s.imposed.prescribed, solver::LinearSolverKind::umfpack, timers);
+  solver::IncrementSolver solver(mesh, s.imposed.prescribed, {solver::LinearSolverKind::umfpack}, timers);
   s.unknowns.nodal = s.imposed.values;
   s.unknowns.bubble = Eigen::VectorXd::Zero(3 * mesh.tet_count());
   solver::NewtonSettings settings;
@@ -158,7 +158,7 @@ TEST_CASE("the iterative solver (MINRES) gives the direct solver's answer", "[ve
   int k = 0;
   for (auto kind : {solver::LinearSolverKind::umfpack, solver::LinearSolverKind::minres}) {
     Timers timers;
-    solver::IncrementSolver solver(mesh, imposed.prescribed, kind, timers);
+    solver::IncrementSolver solver(mesh, imposed.prescribed, {kind}, timers);
     fem::BodyUnknowns u{imposed.values, Eigen::VectorXd::Zero(3 * mesh.tet_count())};
     solver::NewtonSettings settings;
     settings.tolerance = 1e-10;

@@ -68,7 +68,7 @@ Errors solve_on(int cells) {
   u.nodal[3] = exact_pressure(mesh.nodes[0]);
 
   Timers timers;
-  solver::IncrementSolver solver(mesh, prescribed, solver::LinearSolverKind::umfpack, timers);
+  solver::IncrementSolver solver(mesh, prescribed, {solver::LinearSolverKind::umfpack}, timers);
   const material::NortonHoff newtonian(1.0, 1.0, 0.0);
   solver::NewtonSettings settings;
   settings.verbose = false;

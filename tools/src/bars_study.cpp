@@ -9,6 +9,7 @@
 #include "anvil/io/RunResults.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Simulation.h"
+#include "anvil/solver/PetscSession.h"
 
 #include <cmath>
 #include <cstdio>
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
     std::puts("usage: tools/bars_study [DIR]   (13 runs, a minute or two; writes DIR/bars_study.csv and two plots)");
     return 0;
   }
+  anvil::solver::PetscSession petsc(argc, argv);
   try {
     std::filesystem::create_directories(out);
     anvil::log::set_quiet(true);

@@ -9,6 +9,7 @@
 #include "anvil/mesh/generators.h"
 #include "anvil/scene/BoundaryCondition.h"
 #include "anvil/solver/IncrementSolver.h"
+#include "anvil/solver/PetscSession.h"
 
 #include <sys/resource.h>
 
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: anvil_bench NODES [auto|umfpack|cholmod_ldlt|eigen_ldlt|minres]\n");
     return 2;
   }
+  solver::PetscSession petsc(argc, argv);
   const long target = std::atol(argv[1]);
   const solver::LinearSolverKind kind = solver::linear_solver_kind(argc > 2 ? argv[2] : "auto");
   // Block 2L × 2L × L (mm) with cells (2n, 2n, n): (2n+1)²(n+1) ≈ target nodes.
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
 
   Timers timers;
   log::set_quiet(true);
-  solver::IncrementSolver solver(mesh, imposed.prescribed, kind, timers);
+  solver::IncrementSolver solver(mesh, imposed.prescribed, {kind}, timers);
   fem::BodyUnknowns unknowns{imposed.values, Eigen::VectorXd::Zero(3 * mesh.tet_count())};
   const material::NortonHoff newtonian(1.0, 1.0, 0.0);
   solver::NewtonSettings settings;
@@ -53,8 +55,8 @@ int main(int argc, char** argv) {
   const double assembly = timers.seconds("assembly") / iterations, solve = timers.seconds("solve") / iterations;
   std::printf("nodes %d  elements %d  unknowns %d  solver %s  newton %d (%s)  per iteration: assembly %.2f s, "
               "factorisation+solve %.2f s, total %.2f s  peak memory %.2f GB  (last solve: %d iterative steps)\n",
-              mesh.node_count(), mesh.tet_count(), solver.free_count(), solver::to_string(solver.linear_solver()).c_str(),
+              mesh.node_count(), mesh.tet_count(), solver.free_count(), solver::to_string(solver.linear_solver().kind()).c_str(),
               static_cast<int>(iterations), report.converged ? "converged" : report.failure.c_str(), assembly, solve,
-              assembly + solve, static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0), solver.last_linear_iterations());
+              assembly + solve, static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0), report.linear_iterations);
   return report.converged ? 0 : 1;
 }

@@ -6,6 +6,7 @@
 // Prints a Markdown table and writes DIR/patch_test.csv (default out/patch_test_table).
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/solver/PetscSession.h"
 #include "patch_test_cases.h"
 
 #include <cstdio>
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
     std::puts("usage: tools/patch_test [DIR]   (runs 72 small cases, about a minute; writes DIR/patch_test.csv)");
     return 0;
   }
+  anvil::solver::PetscSession petsc(argc, argv);
   try {
     std::filesystem::create_directories(out);
     anvil::log::set_quiet(true);

@@ -27,6 +27,7 @@
 #include "anvil/material/homogeneous_compression.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Simulation.h"
+#include "anvil/solver/PetscSession.h"
 
 #include <algorithm>
 #include <chrono>
@@ -352,6 +353,7 @@ int study(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   try {
+    solver::PetscSession petsc(argc, argv);
     return study(argc, argv);
   } catch (const InputError& e) {
     std::fprintf(stderr, "anvil_study: input error: %s\n", e.what());

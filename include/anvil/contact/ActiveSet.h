@@ -37,6 +37,7 @@ public:
       active_[i] = now;
     }
     frozen_ = ++iterations_ >= kFreezeAfter;
+    last_changes_ = activated + released;
     return std::string("  ") + what + " " + std::to_string(active) + " (+" + std::to_string(activated) + " -" +
            std::to_string(released) + ")" + (frozen_ ? " frozen" : "");
   }
@@ -51,6 +52,8 @@ public:
     return same;
   }
 
+  /// Constraints the last accept() activated or released.
+  int last_changes() const { return last_changes_; }
   bool operator[](std::size_t i) const { return active_[i] != 0; }
   std::size_t size() const { return active_.size(); }
   int count() const {
@@ -66,6 +69,7 @@ private:
   double tolerance_ = 0.0; ///< mm/s
   bool frozen_ = false;
   int iterations_ = 0;
+  int last_changes_ = 0;
   static constexpr int kFreezeAfter = 3;
 };
 

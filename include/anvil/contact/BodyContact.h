@@ -82,6 +82,8 @@ public:
   void start(const Eigen::VectorXd& nodal) override;
   std::string accept(const Eigen::VectorXd& nodal) override;
   bool consistent(const Eigen::VectorXd& nodal) override;
+  bool set_changed() const override { return active_.last_changes() > 0; }
+  bool linear() const override;
   std::vector<std::pair<int, int>> couplings() const override;
 
   const std::vector<BodyPair>& pairs() const { return pairs_; }

@@ -37,6 +37,11 @@ struct FrictionStress {
   Eigen::Vector3d d_normal_pressure; ///< ∂τ/∂σn (-), non-zero for uncapped Coulomb
 };
 
+/// True when τ is linear in w (frictionless, sticking).
+inline bool is_linear(const FrictionLaw& law) {
+  return law.kind == FrictionKind::frictionless || law.kind == FrictionKind::sticking;
+}
+
 FrictionStress friction_stress(const FrictionLaw& law, const FrictionInput& in);
 
 std::string describe(const FrictionLaw& law);

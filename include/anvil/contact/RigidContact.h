@@ -48,6 +48,8 @@ public:
   void start(const Eigen::VectorXd& nodal) override;
   std::string accept(const Eigen::VectorXd& nodal) override;
   bool consistent(const Eigen::VectorXd& nodal) override;
+  bool set_changed() const override { return active_.last_changes() > 0; }
+  bool linear() const override;
 
   /// Force each die receives from the body (N), at `nodal`.
   std::vector<Eigen::Vector3d> die_forces(const Eigen::VectorXd& nodal) const;

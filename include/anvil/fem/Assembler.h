@@ -1,9 +1,13 @@
 // Global assembly of the condensed P1+/P1 system of one body:
 //   [ K  Bᵀ ] [Δv]     [r_v]
-//   [ B −C  ] [Δp] = − [r_p]      (DESIGN §2), over the free dofs only.
-// The sparsity pattern and an element colouring (no two elements of a colour
-// share a node) are built once per mesh; assembly runs colour by colour with
-// TBB, so the result does not depend on the thread count.
+//   [ B −C  ] [Δp] = − [r_p]      (DESIGN §2), over every nodal dof.
+// The matrix is compressed sparse rows with 32-bit indices, the layout of a
+// PETSc AIJ matrix, which wraps it without a copy. Its pattern is 4×4 blocks
+// of node adjacency, built once per mesh and contact-coupling set; an element
+// colouring (no two elements of a colour share a node) lets assembly write
+// the values in place, colour by colour with TBB, so the result does not
+// depend on the thread count. Prescribed dofs are decoupled rows and columns
+// with a scaled identity on the diagonal (DofMap).
 #pragma once
 #include "anvil/fem/DofMap.h"
 #include "anvil/fem/mini_element.h"
@@ -14,7 +18,7 @@
 
 namespace anvil::fem {
 
-using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, long>;
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 
 /// The law of each element: bodies of different materials are solved in one
 /// system, each element with its own body's law.
@@ -38,12 +42,12 @@ public:
   Assembler(const mesh::TetMesh& mesh, const DofMap& dofs);
 
   /// Residual R = internal − external (external = `nodal_forces`, 4 × nodes,
-  /// e.g. tractions) and, when `tangent` is given, the condensed tangent over
-  /// free dofs (pattern fixed at construction). Stores what the bubble
+  /// e.g. tractions) and, when `with_tangent`, the condensed tangent (tangent())
+  /// and the viscous pressure mass (pressure_mass()). Stores what the bubble
   /// update needs; call bubble_increment() after the linear solve.
   AssemblyResult assemble(const mesh::TetMesh& mesh, const ElementLaws& laws,
                           const std::vector<material::PointState>& states, const BodyUnknowns& unknowns,
-                          const Eigen::VectorXd& nodal_forces, const BodyForce& body_force, SparseMatrix* tangent);
+                          const Eigen::VectorXd& nodal_forces, const BodyForce& body_force, bool with_tangent);
 
   /// Bubble increments (3 × elements) that go with the nodal increments
   /// `delta` (4 × nodes), from the data of the last assemble() (
@@ -51,22 +55,38 @@ public:
   void bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorXd& delta,
                         Eigen::VectorXd& bubble_delta) const;
 
-  /// A matrix with the tangent's pattern and zero values (for analyse-once solvers).
-  const SparseMatrix& pattern() const { return pattern_; }
+  /// The tangent of the last assemble() with a tangent; its storage stays in
+  /// place until the pattern changes (set_couplings() returns true).
+  const SparseMatrix& tangent() const { return tangent_; }
+  /// Lumped pressure mass over viscosity, Σ_e V_e / (4 η_e) per node
+  /// (mm³/(MPa·s)): the viscosity-scaled mass matrix that approximates the
+  /// Schur complement B K⁻¹ Bᵀ (Elman, Silvester, Wathen 2014, §9.2); η_e
+  /// is the element's mean tangent viscosity (MiniElementSystem::viscosity).
+  const Eigen::VectorXd& pressure_mass() const { return pressure_mass_; }
+
   /// Adds node pairs (a, b) that a contact term couples to the pattern of the
   /// elements (both blocks ab and ba). True when the pattern changed (the
-  /// linear solver must then analyse it again).
+  /// tangent is then rebuilt and the linear solver must analyse it again).
   bool set_couplings(const std::vector<std::pair<int, int>>& couplings);
-  /// tangent(velocity rows of `row_node`, velocity columns of `col_node`) += block, over free dofs;
-  /// the pair must be in the pattern (same node, element neighbours or a coupling).
-  void add_velocity_block(SparseMatrix& tangent, int row_node, int col_node, const Eigen::Matrix3d& block) const;
+  /// tangent(velocity rows of `row_node`, velocity columns of `col_node`) += block,
+  /// prescribed rows and columns left out; the pair must be in the pattern
+  /// (same node, element neighbours or a coupling).
+  void add_velocity_block(int row_node, int col_node, const Eigen::Matrix3d& block);
+  /// Puts the scaled identity on the prescribed dofs' diagonal (after every
+  /// contribution is added): the mean free diagonal of the velocity rows, or
+  /// of the pressure rows, so the rows are neither tiny nor huge for a solver.
+  void finish_tangent();
   int colour_count() const { return static_cast<int>(colours_.size()); }
 
 private:
-  void build_pattern(const std::vector<std::vector<int>>& neighbours);
+  void build_pattern();
+  /// Index in the tangent's values of (velocity or pressure row `d` of node
+  /// `row_node`, component `c` of node `col_node`).
+  int entry(int row_node, int d, int col_node, int c) const;
 
   const DofMap& dofs_;
-  SparseMatrix pattern_;
+  SparseMatrix tangent_;
+  Eigen::VectorXd pressure_mass_;
   std::vector<std::vector<int>> colours_; ///< element indices per colour
   /// Per element: K_bb⁻¹ [K_bl G_b] (3×16) and K_bb⁻¹ r_b (3).
   std::vector<Eigen::Matrix<double, 3, 17>> bubble_condensation_;
@@ -74,8 +94,10 @@ private:
   /// (kept per element so the sums are in a fixed order, whatever the threads).
   std::vector<char> bad_;
   std::vector<double> bubble_sq_;
-  std::vector<std::vector<int>> neighbours_;     ///< per node, the nodes it shares an element with (sorted)
-  std::vector<std::pair<int, int>> couplings_;   ///< the contact couplings in the pattern
+  std::vector<std::vector<int>> element_neighbours_; ///< per node, the nodes it shares an element with (sorted)
+  std::vector<std::vector<int>> neighbours_;         ///< the same with the contact couplings: the pattern
+  std::vector<std::pair<int, int>> couplings_;       ///< the contact couplings in the pattern
+  std::vector<int> diagonal_;                        ///< per dof, the index of its diagonal entry
 };
 
 } // namespace anvil::fem

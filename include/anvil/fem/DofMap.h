@@ -1,6 +1,7 @@
 // Numbering of a body's nodal unknowns: node i owns dofs 4i, 4i+1, 4i+2
-// (velocity x, y, z) and 4i+3 (pressure). Prescribed dofs are removed from
-// the linear system; the others get consecutive "free" indices in dof order.
+// (velocity x, y, z) and 4i+3 (pressure). The linear system keeps every dof,
+// so each node is one 4×4 block (block size 4, as PETSc's multigrid wants);
+// a prescribed dof is decoupled there as a scaled identity row and column.
 #pragma once
 #include <vector>
 
@@ -11,15 +12,15 @@ inline constexpr int kDofsPerNode = 4;
 class DofMap {
 public:
   /// `prescribed[d]` != 0 marks dof d (size 4 × nodes) as prescribed.
-  explicit DofMap(const std::vector<char>& prescribed);
+  explicit DofMap(std::vector<char> prescribed);
 
-  int dof_count() const { return static_cast<int>(free_index_.size()); }
+  int dof_count() const { return static_cast<int>(prescribed_.size()); }
+  /// Dofs that are unknowns of the problem (not prescribed).
   int free_count() const { return free_count_; }
-  /// Free index of dof d, or −1 when d is prescribed.
-  int free_index(int dof) const { return free_index_[dof]; }
+  bool prescribed(int dof) const { return prescribed_[dof] != 0; }
 
 private:
-  std::vector<int> free_index_;
+  std::vector<char> prescribed_;
   int free_count_ = 0;
 };
 

@@ -46,6 +46,10 @@ struct MiniElementSystem {
   Vec3 bubble_residual_solved;                  ///< K_bb⁻¹ r_b
   double bubble_residual_sq = 0.0;              ///< |r_b|², for the residual norm
   double volume = 0.0;                          ///< mm³; ≤ 0 means the tet is inverted
+  /// Mean tangent viscosity tr(∫D)/(10 V) (MPa·s; the shear modulus for
+  /// elastic laws): η for a Newtonian law (D = 2η P_dev, tr P_dev = 5), between
+  /// mη and η for Norton-Hoff; scales the Schur-complement approximation.
+  double viscosity = 0.0;
 };
 
 /// Fills `out` for one element. Returns false, leaving `out` unspecified, when

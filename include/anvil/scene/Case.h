@@ -100,7 +100,8 @@ struct Case {
   std::string output_directory; ///< empty = out/<case name>
   bool write_vtk = true;
   solver::NewtonSettings newton;
-  solver::LinearSolverKind linear_solver = solver::LinearSolverKind::automatic;
+  solver::LinearSolverSettings linear_solver;
+  std::string petsc_options; ///< solver.petsc_options, for ScopedPetscOptions
   std::vector<BodySpec> bodies;
   std::vector<BoundaryCondition> boundary;
   std::vector<int> boundary_body; ///< body index of each boundary condition

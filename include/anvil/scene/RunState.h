@@ -79,6 +79,7 @@ struct RunState {
   std::vector<LoadRecord> loads;
   VolumeBudget volume;
   int newton_iterations = 0; ///< total over the run
+  long linear_iterations = 0; ///< Krylov iterations, total over the run (0 with a direct solver)
   std::vector<RemeshRecord> remeshes;
   std::vector<io::VtkSeries::Entry> outputs;
 };

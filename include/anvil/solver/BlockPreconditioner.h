@@ -22,7 +22,7 @@ namespace anvil::solver {
 
 class BlockPreconditioner {
 public:
-  using StorageIndex = long;
+  using StorageIndex = int;
   BlockPreconditioner() = default;
 
   /// Component of each free unknown: 0, 1, 2 velocity x, y, z; 3 pressure. Set before compute().
@@ -36,7 +36,8 @@ public:
   Eigen::ComputationInfo info() const { return info_; }
 
 private:
-  using Cholesky = Eigen::CholmodSupernodalLLT<fem::SparseMatrix, Eigen::Lower>;
+  using Block = Eigen::SparseMatrix<double, Eigen::ColMajor, long>;
+  using Cholesky = Eigen::CholmodSupernodalLLT<Block, Eigen::Lower>;
   std::vector<char> component_;
   std::array<std::vector<long>, 4> index_; ///< free indices of each component
   std::array<std::unique_ptr<Cholesky>, 3> velocity_factor_; ///< symbolic analysis kept across Newton iterations

@@ -1,7 +1,8 @@
 // Newton-Raphson with line search on (v, p) for one increment of one body
-// (DESIGN §2): exact consistent tangent of the condensed MINI system, sparse
-// direct solve, convergence on the force residual, the incompressibility
-// residual and the velocity increment, each printed per iteration.
+// (DESIGN §2): exact consistent tangent of the condensed MINI system, an
+// inexact (Krylov) or direct linear solve, convergence on the force
+// residual, the incompressibility residual and the velocity increment, each
+// printed per iteration.
 #pragma once
 #include "anvil/core/Timers.h"
 #include "anvil/fem/Assembler.h"
@@ -14,7 +15,13 @@
 namespace anvil::solver {
 
 struct NewtonSettings {
-  double tolerance = 1e-8;      ///< relative: force residual, div residual and |Δv|/|v|
+  double tolerance = 1e-8;           ///< relative force and div residuals
+  /// |Δv|/|v| of the last step. A linear problem (linear laws, contact
+  /// without friction or sticking, active set unchanged) needs none after a
+  /// full step: that step is the solution to the linear solve's accuracy.
+  double increment_tolerance = 1e-8;
+  /// Largest Krylov tolerance of an inexact Newton step (Eisenstat-Walker).
+  double krylov_tolerance_max = 1e-2;
   int max_iterations = 30;
   int max_line_search_cuts = 10; ///< step halvings per iteration
   bool verbose = true;           ///< one log line per iteration
@@ -30,6 +37,7 @@ struct NewtonIteration {
 struct NewtonReport {
   bool converged = false;
   std::vector<NewtonIteration> iterations;
+  int linear_iterations = 0; ///< Krylov iterations of all the solves (0 for a direct solver)
   std::string failure; ///< why it stopped, when not converged
 };
 
@@ -47,7 +55,8 @@ struct IncrementProblem {
 class IncrementSolver {
 public:
   /// `prescribed` marks dofs (4 × nodes, see DofMap) whose values are imposed.
-  IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, LinearSolverKind kind, Timers& timers);
+  IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, const LinearSolverSettings& linear,
+                  Timers& timers);
 
   /// Solves for the free unknowns of `unknowns` (prescribed entries are kept
   /// as given), starting from their current values.
@@ -65,8 +74,7 @@ public:
   const Eigen::VectorXd& residual() const { return residual_; }
   const fem::DofMap& dofs() const { return dofs_; }
   int free_count() const { return dofs_.free_count(); }
-  LinearSolverKind linear_solver() const { return linear_solver_.kind(); }
-  int last_linear_iterations() const { return linear_solver_.iterations(); }
+  const LinearSolver& linear_solver() const { return linear_solver_; }
 
 private:
   /// Squared residual norms, absolute: velocity rows (N²), pressure rows
@@ -86,7 +94,6 @@ private:
   fem::Assembler assembler_;
   LinearSolver linear_solver_;
   Timers& timers_;
-  fem::SparseMatrix tangent_;
   Eigen::VectorXd residual_;
   Eigen::VectorXd nodal_term_residual_; ///< the nodal terms' part of residual_
   std::vector<NodeBlock> blocks_;

@@ -1,63 +1,91 @@
-// Sparse direct solvers for the condensed system (symmetric quasi-definite,
-// DESIGN §2). The symbolic analysis is done once and reused while the
-// pattern is unchanged (call pattern_changed() after a remesh or contact change).
+// The linear solve of each Newton iteration (DESIGN §2): the condensed
+// system, symmetric quasi-definite, with contact rows. The default is the
+// PETSc Krylov solver with the block preconditioner (KrylovSolver), near
+// linear in the mesh size; MUMPS through PETSc is the direct option and the
+// fallback when the Krylov method stagnates; SuiteSparse and Eigen solvers
+// stay selectable for comparison.
 #pragma once
 #include "anvil/fem/Assembler.h"
+#include "anvil/solver/KrylovSolver.h"
 
 #include <memory>
+#include <optional>
 #include <string>
-#include <vector>
 
 namespace anvil::solver {
 
 enum class LinearSolverKind {
-  umfpack,         ///< SuiteSparse UMFPACK LU (pivoting; copes with indefinite and unsymmetric tangents)
+  fgmres,          ///< PETSc FGMRES, block preconditioner: AMG on velocity, Schur with M_p/η (KrylovSolver)
+  mumps,           ///< MUMPS through PETSc: LDLᵀ (LU when unsymmetric) (MumpsSolver)
+  umfpack,         ///< SuiteSparse UMFPACK LU (for comparison)
   cholmod_ldlt,    ///< SuiteSparse CHOLMOD simplicial LDLᵀ (no pivoting; quasi-definite only)
   eigen_ldlt,      ///< Eigen SimplicialLDLT with AMD (no pivoting; quasi-definite only)
-  minres,          ///< MINRES with the block-diagonal preconditioner (large meshes)
-  automatic,       ///< umfpack up to kDirectSolverLimit unknowns, minres above
+  minres,          ///< Eigen MINRES, block-diagonal preconditioner (BlockPreconditioner; for comparison)
+  automatic,       ///< mumps up to kDirectSolverLimit unknowns, fgmres above
 };
 
-/// Unknowns above which `automatic` picks the iterative solver. Measured on
-/// 2 cores with tools/bench_increment (Newtonian block, time per Newton
-/// iteration): 12k unknowns UMFPACK 0.87 s, MINRES (IC(0) variant) 0.92 s;
-/// 45k unknowns UMFPACK 7.0 s (1.3 GB), MINRES 4.6 s (0.28 GB). Below the limit the direct
-/// solver is kept for its robustness (indefinite or unsymmetric tangents).
+/// Unknowns up to which `automatic` picks the direct solver: the crossover
+/// measured with tools/bench_increment on 2 cores (time per Newton
+/// iteration, MUMPS against FGMRES; see the README's solver section).
 inline constexpr int kDirectSolverLimit = 20000;
 
-/// The concrete solver `kind` stands for at `unknowns` free unknowns.
+/// The concrete solver `kind` stands for at `unknowns` unknowns.
 LinearSolverKind resolve(LinearSolverKind kind, int unknowns);
 
 LinearSolverKind linear_solver_kind(const std::string& name); ///< throws InputError on an unknown name
 std::string to_string(LinearSolverKind kind);
 
+struct LinearSolverSettings {
+  LinearSolverKind kind = LinearSolverKind::automatic;
+  /// Keep the Krylov preconditioner across Newton iterations and increments
+  /// while it stays effective: set it up again when the iterations per decade
+  /// of residual reduction exceed `reuse_growth` × their value right after
+  /// the last set-up, when a solve fails, or when the pattern changes.
+  bool reuse_preconditioner = true;
+  double reuse_growth = 1.5;
+};
+
 class LinearSolver {
 public:
-  /// `component[i]` of free unknown i: 0, 1, 2 velocity x, y, z; 3 pressure (used by minres).
-  LinearSolver(LinearSolverKind kind, std::vector<char> component);
+  /// `unknowns`: the problem's unknowns, for `automatic`.
+  LinearSolver(const LinearSolverSettings& settings, int unknowns);
   ~LinearSolver();
   LinearSolver(const LinearSolver&) = delete;
   LinearSolver& operator=(const LinearSolver&) = delete;
 
-  /// Factorises `a` (symbolic analysis only on the first call or after
-  /// pattern_changed()). Returns false when the factorisation fails.
-  bool factorize(const fem::SparseMatrix& a);
-  /// x = A⁻¹ b with the last factorisation; false on failure.
-  bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  /// Prepares solves with `a`: factorises it (direct) or sets up or keeps
+  /// the preconditioner (fgmres). `a` must stay in place until the next
+  /// call (PETSc reads it without a copy). False when a factorisation fails.
+  bool factorize(const fem::SparseMatrix& a, const SaddlePointData& data);
+  /// x = A⁻¹ b; an iterative solve stops at `relative_tolerance` × |b|. When
+  /// FGMRES stagnates the solver falls back to MUMPS for good (logged).
+  bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance);
+  /// The pattern of the next matrix differs (direct solvers analyse it again).
   void pattern_changed() { analysed_ = false; }
 
+  /// The solver in use (mumps after a fallback).
   LinearSolverKind kind() const { return kind_; }
+  bool iterative() const { return kind_ == LinearSolverKind::fgmres || kind_ == LinearSolverKind::minres; }
   int analyses() const { return analyses_; }
-  /// Iterations of the last iterative solve (0 for direct solvers).
+  /// Iterations of the last solve (0 for direct solvers).
   int iterations() const { return iterations_; }
+  /// Preconditioner set-ups (fgmres) or factorisations (direct) so far.
+  int setups() const { return setups_; }
 
 private:
   struct Backend;
+  LinearSolverSettings settings_;
   LinearSolverKind kind_;
   std::unique_ptr<Backend> backend_;
+  const fem::SparseMatrix* matrix_ = nullptr;   ///< of the last factorize(), for a fallback
+  std::optional<SaddlePointData> data_;         ///< of the last factorize()
   bool analysed_ = false;
   int analyses_ = 0;
   int iterations_ = 0;
+  int setups_ = 0;
+  double setup_rate_ = 0.0; ///< iterations per decade in the first solve after the last set-up
+  bool refresh_ = true;     ///< the next factorize() sets the preconditioner up again
+  bool reused_ = false;     ///< the last factorize() kept an earlier preconditioner
 };
 
 } // namespace anvil::solver

@@ -34,6 +34,12 @@ public:
   /// internal choices (an active set) agree with `nodal`; false if it changed
   /// them, and Newton must go on.
   virtual bool consistent(const Eigen::VectorXd& nodal) = 0;
+  /// True when the last accept() changed the term's active set.
+  virtual bool set_changed() const = 0;
+  /// True when the term is linear in the velocities while its active set
+  /// holds (frictionless or sticking contact): with a linear law, one full
+  /// Newton step then solves the increment.
+  virtual bool linear() const = 0;
   /// Pairs of distinct nodes (a < b) whose blocks the term may fill in this
   /// increment, sorted; none for a term on each node's own velocity.
   virtual std::vector<std::pair<int, int>> couplings() const { return {}; }

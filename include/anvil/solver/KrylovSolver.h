@@ -1,0 +1,59 @@
+// The iterative solve of the condensed MINI system on PETSc (DESIGN §2,
+// shared SOLVER-NOTES): flexible GMRES, right-preconditioned by the upper
+// block factorisation
+//   P = [ K̂  Bᵀ ]      K̂ ≈ K: one algebraic-multigrid V-cycle on the
+//       [ 0  Ŝ  ]      velocity block (ML by default; GAMG with the
+//                      rigid-body near-null space, or hypre BoomerAMG),
+//   Ŝ = −(C + M_p/η) ≈ S = −C − B K⁻¹ Bᵀ: the condensed-bubble block plus
+// the lumped viscosity-scaled pressure mass (Elman, Silvester, Wathen 2014,
+// §9.2), with the sign of the true Schur complement (the wrong sign costs 6x
+// the iterations). The velocity and pressure splits are given as index sets
+// (the C block defeats PETSc's saddle-point detection). Every choice is a
+// PETSc option default, so -ksp_*, -pc_fieldsplit_*, -fieldsplit_0_* and
+// -fieldsplit_1_* options on the command line or in solver.petsc_options
+// override it.
+#pragma once
+#include "anvil/fem/Assembler.h"
+
+#include <memory>
+#include <span>
+#include <string>
+
+namespace anvil::solver {
+
+/// What the preconditioner needs besides the matrix.
+struct SaddlePointData {
+  std::span<const mesh::Point> nodes;  ///< current coordinates (rigid-body modes), mm
+  const Eigen::VectorXd& pressure_mass; ///< M_p/η lumped per node (Assembler::pressure_mass)
+};
+
+struct KrylovOutcome {
+  bool converged = false;
+  int iterations = 0;
+  double reduction = 1.0; ///< final residual norm / |b|
+  std::string reason; ///< PETSc's converged or diverged reason
+};
+
+class KrylovSolver {
+public:
+  KrylovSolver();
+  ~KrylovSolver();
+  KrylovSolver(const KrylovSolver&) = delete;
+  KrylovSolver& operator=(const KrylovSolver&) = delete;
+
+  /// Takes the tangent `a` (a view, no copy: `a` must stay in place until
+  /// the next call). With `reuse`, the preconditioner of an earlier call is
+  /// kept (the same pattern is required); otherwise it is set up again.
+  void set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse);
+  /// x = A⁻¹ b to `relative_tolerance` of |b| (x's start value is ignored).
+  KrylovOutcome solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance);
+  /// Preconditioner set-ups so far.
+  int setups() const { return setups_; }
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int setups_ = 0;
+};
+
+} // namespace anvil::solver

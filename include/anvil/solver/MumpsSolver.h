@@ -1,0 +1,34 @@
+// The sparse direct solve of the condensed MINI system by MUMPS through
+// PETSc: LDLᵀ with two-by-two pivoting (MUMPS SYM=2) while the tangent is
+// symmetric, LU when a contact term makes it unsymmetric (Coulomb friction,
+// quasi-symmetric pairs). The symbolic analysis is kept while the pattern is.
+// PETSc options with the prefix direct_ reach it (-direct_mat_mumps_icntl_14 50).
+#pragma once
+#include "anvil/fem/Assembler.h"
+
+#include <memory>
+
+namespace anvil::solver {
+
+class MumpsSolver {
+public:
+  MumpsSolver();
+  ~MumpsSolver();
+  MumpsSolver(const MumpsSolver&) = delete;
+  MumpsSolver& operator=(const MumpsSolver&) = delete;
+
+  /// Factorises `a` (a view, no copy: `a` must stay in place until the next
+  /// call). False when the factorisation fails (a singular tangent).
+  bool factorize(const fem::SparseMatrix& a);
+  /// x = A⁻¹ b with the last factorisation.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  /// Symbolic analyses so far.
+  int analyses() const { return analyses_; }
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  int analyses_ = 0;
+};
+
+} // namespace anvil::solver

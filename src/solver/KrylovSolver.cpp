@@ -1,0 +1,163 @@
+#include "anvil/solver/KrylovSolver.h"
+
+#include "anvil/solver/PetscSession.h"
+#include "petsc_check.h"
+#include "petsc_matrix.h"
+
+#include <petscksp.h>
+
+#include <vector>
+
+namespace anvil::solver {
+
+using petsc::check;
+
+struct KrylovSolver::Impl {
+  petsc::MatrixView matrix;
+  petsc::VectorSlot rhs, solution;
+  KSP ksp = nullptr;
+  IS velocity = nullptr, pressure = nullptr;
+  Mat schur_preconditioner = nullptr; ///< Ŝ = A11 − diag(M_p/η)
+  Vec pressure_mass = nullptr;
+  Vec coordinates = nullptr;
+  bool user_tolerance = false; ///< -ksp_rtol given: it replaces the Newton-driven tolerance
+  bool set_up = false;         ///< the splits' solvers exist
+
+  ~Impl() { destroy(); }
+  void destroy() {
+    KSPDestroy(&ksp);
+    ISDestroy(&velocity);
+    ISDestroy(&pressure);
+    MatDestroy(&schur_preconditioner);
+    VecDestroy(&pressure_mass);
+    VecDestroy(&coordinates);
+  }
+
+  /// KSP, splits and the vectors of a new matrix of `nodes` nodes.
+  void create(int nodes) {
+    destroy();
+    set_up = false;
+    std::vector<PetscInt> velocity_dofs(3 * static_cast<std::size_t>(nodes));
+    for (int i = 0; i < nodes; ++i)
+      for (int c = 0; c < 3; ++c) velocity_dofs[3 * static_cast<std::size_t>(i) + c] = fem::kDofsPerNode * i + c;
+    check(ISCreateGeneral(PETSC_COMM_WORLD, 3 * nodes, velocity_dofs.data(), PETSC_COPY_VALUES, &velocity),
+          "creating the velocity split");
+    check(ISSetBlockSize(velocity, 3), "creating the velocity split"); // x, y, z of a node: one AMG block
+    check(ISCreateStride(PETSC_COMM_WORLD, nodes, 3, fem::kDofsPerNode, &pressure), "creating the pressure split");
+    check(VecCreateSeq(PETSC_COMM_WORLD, nodes, &pressure_mass), "creating a vector");
+    check(VecCreateSeq(PETSC_COMM_WORLD, 3 * nodes, &coordinates), "creating a vector");
+    check(VecSetBlockSize(coordinates, 3), "creating a vector");
+
+    // Nested solvers read their options when the preconditioner is set up:
+    // anvil's choices go in as defaults that the user's options override.
+    set_default_option("-fieldsplit_0_ksp_type", "preonly");
+    set_default_option("-fieldsplit_0_pc_type", "ml");
+    set_default_option("-fieldsplit_1_ksp_type", "preonly");
+    set_default_option("-fieldsplit_1_pc_type", "jacobi");
+
+    check(KSPCreate(PETSC_COMM_WORLD, &ksp), "creating the Krylov solver");
+    check(KSPSetType(ksp, KSPFGMRES), "creating the Krylov solver"); // the AMG cycle varies: flexible
+    check(KSPGMRESSetRestart(ksp, 100), "creating the Krylov solver");
+    check(KSPSetTolerances(ksp, 1e-6, PETSC_DEFAULT, PETSC_DEFAULT, 500), "creating the Krylov solver");
+    PC pc = nullptr;
+    check(KSPGetPC(ksp, &pc), "creating the preconditioner");
+    check(PCSetType(pc, PCFIELDSPLIT), "creating the preconditioner");
+    check(PCFieldSplitSetIS(pc, "0", velocity), "creating the preconditioner");
+    check(PCFieldSplitSetIS(pc, "1", pressure), "creating the preconditioner");
+    check(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR), "creating the preconditioner");
+    check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER), "creating the preconditioner");
+    check(KSPSetFromOptions(ksp), "reading the PETSc options");
+    PetscBool given = PETSC_FALSE;
+    check(PetscOptionsHasName(nullptr, nullptr, "-ksp_rtol", &given), "reading the PETSc options");
+    user_tolerance = given;
+  }
+
+  /// The six rigid-body modes at the current coordinates: GAMG's near-null
+  /// space of the velocity block (ML and hypre use the block size instead).
+  void set_rigid_body_modes(std::span<const mesh::Point> nodes) {
+    PetscScalar* x = nullptr;
+    check(VecGetArray(coordinates, &x), "setting the rigid-body modes");
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      for (int c = 0; c < 3; ++c) x[3 * i + c] = nodes[i][c];
+    check(VecRestoreArray(coordinates, &x), "setting the rigid-body modes");
+    MatNullSpace modes = nullptr;
+    check(MatNullSpaceCreateRigidBody(coordinates, &modes), "setting the rigid-body modes");
+    check(PetscObjectCompose(reinterpret_cast<PetscObject>(velocity), "nearnullspace",
+                             reinterpret_cast<PetscObject>(modes)),
+          "setting the rigid-body modes");
+    // After the first set-up the split's matrix exists: it takes the new modes directly.
+    PC pc = nullptr;
+    check(KSPGetPC(ksp, &pc), "setting the rigid-body modes");
+    PetscInt splits = 0;
+    KSP* sub = nullptr;
+    if (set_up) {
+      check(PCFieldSplitGetSubKSP(pc, &splits, &sub), "setting the rigid-body modes");
+      Mat velocity_block = nullptr;
+      check(KSPGetOperators(sub[0], nullptr, &velocity_block), "setting the rigid-body modes");
+      if (velocity_block) check(MatSetNearNullSpace(velocity_block, modes), "setting the rigid-body modes");
+      PetscFree(sub);
+    }
+    check(MatNullSpaceDestroy(&modes), "setting the rigid-body modes");
+  }
+};
+
+KrylovSolver::KrylovSolver() : impl_(std::make_unique<Impl>()) {}
+KrylovSolver::~KrylovSolver() = default;
+
+void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse) {
+  Impl& s = *impl_;
+  const bool fresh = s.matrix.wrap(a);
+  if (fresh) s.create(static_cast<int>(a.rows() / fem::kDofsPerNode));
+  Mat m = s.matrix.mat();
+  if (reuse && !fresh) {
+    check(KSPSetReusePreconditioner(s.ksp, PETSC_TRUE), "reusing the preconditioner");
+    return;
+  }
+  // Ŝ = A11 − M_p/η: the assembled pressure block (−C) plus the mass part.
+  check(MatCreateSubMatrix(m, s.pressure, s.pressure, s.schur_preconditioner ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX,
+                           &s.schur_preconditioner),
+        "building the Schur-complement preconditioner");
+  PetscScalar* mass = nullptr;
+  check(VecGetArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
+  for (long i = 0; i < data.pressure_mass.size(); ++i) mass[i] = -data.pressure_mass[i];
+  check(VecRestoreArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
+  check(MatDiagonalSet(s.schur_preconditioner, s.pressure_mass, ADD_VALUES),
+        "building the Schur-complement preconditioner");
+  PC pc = nullptr;
+  check(KSPGetPC(s.ksp, &pc), "building the preconditioner");
+  check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s.schur_preconditioner),
+        "building the preconditioner");
+  // An expert's -pc_fieldsplit_schur_precondition (a11, selfp, ...) still wins.
+  check(PCSetFromOptions(pc), "reading the PETSc options");
+  s.set_rigid_body_modes(data.nodes);
+  check(KSPSetOperators(s.ksp, m, m), "setting up the preconditioner");
+  check(KSPSetReusePreconditioner(s.ksp, PETSC_FALSE), "setting up the preconditioner");
+  check(KSPSetUp(s.ksp), "setting up the preconditioner");
+  s.set_up = true;
+  ++setups_;
+}
+
+KrylovOutcome KrylovSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance) {
+  Impl& s = *impl_;
+  if (!s.user_tolerance)
+    check(KSPSetTolerances(s.ksp, relative_tolerance, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT),
+          "setting the Krylov tolerance");
+  x.setZero(b.size());
+  petsc::VectorSlot::Placed rhs(s.rhs, b), solution(s.solution, x);
+  check(KSPSolve(s.ksp, rhs.vec(), solution.vec()), "solving the linear system");
+  KrylovOutcome out;
+  PetscInt iterations = 0;
+  check(KSPGetIterationNumber(s.ksp, &iterations), "reading the Krylov iterations");
+  KSPConvergedReason reason;
+  check(KSPGetConvergedReason(s.ksp, &reason), "reading the Krylov outcome");
+  PetscReal residual = 0.0;
+  check(KSPGetResidualNorm(s.ksp, &residual), "reading the Krylov outcome");
+  const double norm = b.norm();
+  out.reduction = norm > 0.0 ? residual / norm : 0.0;
+  out.iterations = static_cast<int>(iterations);
+  out.converged = reason > 0;
+  out.reason = KSPConvergedReasons[reason];
+  return out;
+}
+
+} // namespace anvil::solver
