@@ -237,6 +237,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.newton.krylov_tolerance_max = doc.number(solver, "krylov_tolerance", "solver.krylov_tolerance");
   c.linear_solver.kind = solver::linear_solver_kind(doc.text(solver, "linear_solver", "solver.linear_solver"));
   c.linear_solver.reuse_preconditioner = doc.boolean(solver, "reuse_preconditioner", "solver.reuse_preconditioner");
+  c.linear_solver.schur = solver::schur_approximation(doc.text(solver, "schur", "solver.schur"));
   c.petsc_options = doc.text(solver, "petsc_options", "solver.petsc_options");
   if (!c.petsc_options.empty()) // checked now, so a bad text stops the run before it starts
     solver::parse_petsc_options(c.petsc_options, doc.at(solver["petsc_options"]) + ": key 'solver.petsc_options'");

@@ -1417,10 +1417,10 @@ void Run::write_summary(double total) const {
   for (const auto& [phase, seconds] : timers_.all()) summary << json_string(phase) << ": " << seconds << ", ";
   summary << "\"total\": " << total << "}\n}\n";
   io::write_file_atomically(out_ + "/summary.json", summary.str());
-  log::info("done in %.2f s (search %.2f s, assembly %.2f s, contact %.2f s, solve %.2f s, update %.2f s, output %.2f s, "
-            "checkpoint %.2f s); results in %s/",
+  log::info("done in %.2f s (search %.2f s, assembly %.2f s, contact %.2f s, solver setup %.2f s, solve %.2f s, "
+            "update %.2f s, output %.2f s, checkpoint %.2f s); results in %s/",
             total, timers_.seconds("search"), timers_.seconds("assembly"), timers_.seconds("contact"),
-            timers_.seconds("solve"), timers_.seconds("update"), timers_.seconds("output"),
+            timers_.seconds("solver setup"), timers_.seconds("solve"), timers_.seconds("update"), timers_.seconds("output"),
             timers_.seconds("checkpoint"), out_.c_str());
   log::close_file();
 }

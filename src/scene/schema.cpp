@@ -96,6 +96,12 @@ const std::vector<KeySpec>& case_schema() {
                              "residual falls (Eisenstat-Walker)"),
                          1e-12, 0.5),
                    "1e-2"),
+      with_default(choices(key("solver.schur", T::string,
+                               "fgmres: pressure block of the preconditioner; bfbt: stabilised BFBT (follows the "
+                               "pressure of a layer squeezed between dies); mass: condensed-bubble block plus the "
+                               "viscosity-scaled pressure mass"),
+                           {"bfbt", "mass"}),
+                   "bfbt"),
       with_default(key("solver.reuse_preconditioner", T::boolean,
                        "fgmres: keep the multigrid set-up across Newton iterations and increments while the Krylov "
                        "iterations per decade stay within 1.5x of those right after it"),

@@ -33,7 +33,7 @@ double krylov_tolerance(const NewtonSettings& settings, bool linear_problem, dou
       forcing = std::max(forcing, safeguard);
     forcing = std::max(forcing, no_oversolve);
   }
-  return std::clamp(forcing, kSmallest, settings.krylov_tolerance_max);
+  return std::isfinite(forcing) ? std::clamp(forcing, kSmallest, settings.krylov_tolerance_max) : kSmallest;
 }
 
 std::string format_tolerance(double tolerance) {
@@ -140,7 +140,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     const IncrementProblem newtonian_problem{newtonian_laws,     problem.states,     problem.nodal_forces,
                                              problem.body_force, problem.nodal_terms, reference_velocity,
                                              problem.reference_force};
-    solve(newtonian_problem, predictor, unknowns);
+    report.linear_iterations += solve(newtonian_problem, predictor, unknowns).linear_iterations;
     if (settings.verbose)
       for (const auto& stand_in : stand_ins)
         if (stand_in)
@@ -186,17 +186,25 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       return report;
     }
     for (int d = 0; d < n; ++d) rhs[d] = dofs_.prescribed(d) ? 0.0 : -residual_[d];
-    const double residual_now =
-        std::sqrt(relative(merit, scale, std::max(std::max(max_velocity(unknowns.nodal), reference_velocity) * area, 1e-300)));
+    // The relative residual Newton starts this step from (a body at rest with
+    // no velocity scale has only its force part).
+    const double flux_now = std::max(max_velocity(unknowns.nodal), reference_velocity) * area;
+    const double residual_now = std::sqrt((merit.force_sq + merit.bubble_sq) / (scale * scale) +
+                                          (flux_now > 0.0 ? merit.flux_sq / (flux_now * flux_now) : 0.0));
     forcing = krylov_tolerance(settings, linear_problem, residual_now, previous_residual, forcing);
     previous_residual = residual_now;
+    bool solved = false;
     {
+      Timers::Scope scope(timers_, "solver setup");
+      solved = linear_solver_.factorize(assembler_.tangent(), SaddlePointData{mesh_.nodes, assembler_.pressure_mass()});
+    }
+    if (solved) {
       Timers::Scope scope(timers_, "solve");
-      const SaddlePointData data{mesh_.nodes, assembler_.pressure_mass()};
-      if (!linear_solver_.factorize(assembler_.tangent(), data) || !linear_solver_.solve(rhs, delta, forcing)) {
-        report.failure = "the linear solver (" + to_string(linear_solver_.kind()) + ") failed on the tangent";
-        return report;
-      }
+      solved = linear_solver_.solve(rhs, delta, forcing);
+    }
+    if (!solved) {
+      report.failure = "the linear solver (" + to_string(linear_solver_.kind()) + ") failed on the tangent";
+      return report;
     }
     report.linear_iterations += linear_solver_.iterations();
     for (int d = 0; d < n; ++d)

@@ -1,6 +1,7 @@
 #include "anvil/solver/KrylovSolver.h"
 
 #include "anvil/solver/PetscSession.h"
+#include "bfbt_schur.h"
 #include "petsc_check.h"
 #include "petsc_matrix.h"
 
@@ -13,11 +14,13 @@ namespace anvil::solver {
 using petsc::check;
 
 struct KrylovSolver::Impl {
+  SchurApproximation schur;
+  petsc::BfbtSchur bfbt;
   petsc::MatrixView matrix;
   petsc::VectorSlot rhs, solution;
   KSP ksp = nullptr;
   IS velocity = nullptr, pressure = nullptr;
-  Mat schur_preconditioner = nullptr; ///< Ŝ = A11 − diag(M_p/η)
+  Mat schur_preconditioner = nullptr; ///< mass: Ŝ = A11 − diag(M_p/η)
   Vec pressure_mass = nullptr;
   Vec coordinates = nullptr;
   bool user_tolerance = false; ///< -ksp_rtol given: it replaces the Newton-driven tolerance
@@ -53,7 +56,7 @@ struct KrylovSolver::Impl {
     set_default_option("-fieldsplit_0_ksp_type", "preonly");
     set_default_option("-fieldsplit_0_pc_type", "ml");
     set_default_option("-fieldsplit_1_ksp_type", "preonly");
-    set_default_option("-fieldsplit_1_pc_type", "jacobi");
+    set_default_option("-fieldsplit_1_bfbt_pc_type", "ml");
 
     check(KSPCreate(PETSC_COMM_WORLD, &ksp), "creating the Krylov solver");
     check(KSPSetType(ksp, KSPFGMRES), "creating the Krylov solver"); // the AMG cycle varies: flexible
@@ -66,10 +69,40 @@ struct KrylovSolver::Impl {
     check(PCFieldSplitSetIS(pc, "1", pressure), "creating the preconditioner");
     check(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR), "creating the preconditioner");
     check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER), "creating the preconditioner");
+    if (schur == SchurApproximation::bfbt) // PETSc forms L = B D⁻¹ Bᵀ + C (as −selfp) for BfbtSchur
+      check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr), "creating the preconditioner");
     check(KSPSetFromOptions(ksp), "reading the PETSc options");
     PetscBool given = PETSC_FALSE;
     check(PetscOptionsHasName(nullptr, nullptr, "-ksp_rtol", &given), "reading the PETSc options");
     user_tolerance = given;
+  }
+
+  /// Builds the splits' preconditioners now (the multigrid hierarchies), not
+  /// at the first application, so the set-up is timed as such.
+  void set_up_splits(PC pc) {
+    PetscInt splits = 0;
+    KSP* sub = nullptr;
+    check(PCFieldSplitSchurGetSubKSP(pc, &splits, &sub), "setting up the preconditioner");
+    for (PetscInt i = 0; i < splits; ++i) check(KSPSetUp(sub[i]), "setting up the preconditioner");
+    PetscFree(sub);
+  }
+
+  /// The Schur complement's PC, once its KSP exists (after the first
+  /// set-up): BfbtSchur, or Jacobi on Ŝ, unless an expert chose one with
+  /// -fieldsplit_1_pc_type. Set here, not as an option default, because two
+  /// solvers of one process may approximate the Schur complement differently.
+  void choose_schur_pc(PC pc) {
+    PetscBool given = PETSC_FALSE;
+    check(PetscOptionsHasName(nullptr, nullptr, "-fieldsplit_1_pc_type", &given), "reading the PETSc options");
+    if (given) return;
+    PetscInt splits = 0;
+    KSP* sub = nullptr;
+    check(PCFieldSplitSchurGetSubKSP(pc, &splits, &sub), "setting up the Schur preconditioner");
+    PC schur_pc = nullptr;
+    check(KSPGetPC(sub[1], &schur_pc), "setting up the Schur preconditioner");
+    PetscFree(sub);
+    if (schur == SchurApproximation::bfbt) bfbt.attach(schur_pc);
+    else check(PCSetType(schur_pc, PCJACOBI), "setting up the Schur preconditioner");
   }
 
   /// The six rigid-body modes at the current coordinates: GAMG's near-null
@@ -101,7 +134,7 @@ struct KrylovSolver::Impl {
   }
 };
 
-KrylovSolver::KrylovSolver() : impl_(std::make_unique<Impl>()) {}
+KrylovSolver::KrylovSolver(SchurApproximation schur) : impl_(std::make_unique<Impl>()) { impl_->schur = schur; }
 KrylovSolver::~KrylovSolver() = default;
 
 void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse) {
@@ -113,27 +146,31 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
     check(KSPSetReusePreconditioner(s.ksp, PETSC_TRUE), "reusing the preconditioner");
     return;
   }
-  // Ŝ = A11 − M_p/η: the assembled pressure block (−C) plus the mass part.
-  check(MatCreateSubMatrix(m, s.pressure, s.pressure, s.schur_preconditioner ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX,
-                           &s.schur_preconditioner),
-        "building the Schur-complement preconditioner");
-  PetscScalar* mass = nullptr;
-  check(VecGetArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
-  for (long i = 0; i < data.pressure_mass.size(); ++i) mass[i] = -data.pressure_mass[i];
-  check(VecRestoreArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
-  check(MatDiagonalSet(s.schur_preconditioner, s.pressure_mass, ADD_VALUES),
-        "building the Schur-complement preconditioner");
   PC pc = nullptr;
   check(KSPGetPC(s.ksp, &pc), "building the preconditioner");
-  check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s.schur_preconditioner),
-        "building the preconditioner");
+  if (s.schur == SchurApproximation::mass) {
+    // Ŝ = A11 − M_p/η: the assembled pressure block (−C) plus the mass part.
+    check(MatCreateSubMatrix(m, s.pressure, s.pressure,
+                             s.schur_preconditioner ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s.schur_preconditioner),
+          "building the Schur-complement preconditioner");
+    PetscScalar* mass = nullptr;
+    check(VecGetArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
+    for (long i = 0; i < data.pressure_mass.size(); ++i) mass[i] = -data.pressure_mass[i];
+    check(VecRestoreArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
+    check(MatDiagonalSet(s.schur_preconditioner, s.pressure_mass, ADD_VALUES),
+          "building the Schur-complement preconditioner");
+    check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_USER, s.schur_preconditioner),
+          "building the preconditioner");
+  }
   // An expert's -pc_fieldsplit_schur_precondition (a11, selfp, ...) still wins.
   check(PCSetFromOptions(pc), "reading the PETSc options");
   s.set_rigid_body_modes(data.nodes);
   check(KSPSetOperators(s.ksp, m, m), "setting up the preconditioner");
   check(KSPSetReusePreconditioner(s.ksp, PETSC_FALSE), "setting up the preconditioner");
   check(KSPSetUp(s.ksp), "setting up the preconditioner");
+  if (!s.set_up) s.choose_schur_pc(pc);
   s.set_up = true;
+  s.set_up_splits(pc);
   ++setups_;
 }
 

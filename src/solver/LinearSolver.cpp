@@ -43,6 +43,12 @@ LinearSolverKind linear_solver_kind(const std::string& name) {
                    "' (expected auto, fgmres, mumps, umfpack, cholmod_ldlt, eigen_ldlt or minres)");
 }
 
+SchurApproximation schur_approximation(const std::string& name) {
+  if (name == "bfbt") return SchurApproximation::bfbt;
+  if (name == "mass") return SchurApproximation::mass;
+  throw InputError("unknown Schur-complement approximation '" + name + "' (expected bfbt or mass)");
+}
+
 std::string to_string(LinearSolverKind kind) {
   switch (kind) {
   case LinearSolverKind::fgmres: return "fgmres";
@@ -63,7 +69,7 @@ LinearSolverKind resolve(LinearSolverKind kind, int unknowns) {
 
 LinearSolver::LinearSolver(const LinearSolverSettings& settings, int unknowns)
     : settings_(settings), kind_(resolve(settings.kind, unknowns)), backend_(std::make_unique<Backend>()) {
-  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace();
+  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings.schur);
   if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace();
   backend_->minres.setMaxIterations(20000);
 }

@@ -33,11 +33,11 @@ struct Solved {
 };
 
 Solved solve(const mesh::TetMesh& mesh, const material::Material& law, const std::vector<scene::BoundaryCondition>& bcs,
-             double tolerance) {
+             double tolerance, solver::LinearSolverKind kind = solver::LinearSolverKind::umfpack) {
   Solved s;
   s.imposed = scene::impose(mesh, bcs);
   Timers timers;
-  solver::IncrementSolver solver(mesh, s.imposed.prescribed, {solver::LinearSolverKind::umfpack}, timers);
+  solver::IncrementSolver solver(mesh, s.imposed.prescribed, {kind}, timers);
   s.unknowns.nodal = s.imposed.values;
   s.unknowns.bubble = Eigen::VectorXd::Zero(3 * mesh.tet_count());
   solver::NewtonSettings settings;
@@ -95,7 +95,10 @@ TEST_CASE("homogeneous frictionless compression: exact reaction force", "[verifi
 
 TEST_CASE("elastic block under pressure: exact displacement at nu = 0.3 and 0.4999", "[verification]") {
   // Uniaxial stress: σzz = −P; uz = −P z / E, ux = ν P x / E, uy = ν P y / E, p = P/3.
+  // Direct (UMFPACK, MUMPS) and Krylov (FGMRES, both Schur approximations) solves.
   const double nu = GENERATE(0.3, 0.4999);
+  const auto kind = GENERATE(solver::LinearSolverKind::umfpack, solver::LinearSolverKind::mumps,
+                             solver::LinearSolverKind::fgmres);
   const double young = 210000.0, load = 100.0, side = 10.0;
   const material::LinearElastic law(young, nu);
   const mesh::TetMesh mesh = mesh::make_box(mesh::Point::Zero(), mesh::Point(side, side, side), 2.0);
@@ -105,7 +108,7 @@ TEST_CASE("elastic block under pressure: exact displacement at nu = 0.3 and 0.49
   const std::vector<scene::BoundaryCondition> bcs = {plane_condition(K::symmetry, 0, 0.0),
                                                      plane_condition(K::symmetry, 1, 0.0),
                                                      plane_condition(K::symmetry, 2, 0.0), pressure};
-  const Solved s = solve(mesh, law, bcs, 1e-12);
+  const Solved s = solve(mesh, law, bcs, 1e-12, kind);
   REQUIRE(s.report.converged);
   double displacement_error = 0.0, pressure_error = 0.0;
   for (int i = 0; i < mesh.node_count(); ++i) {
@@ -115,7 +118,7 @@ TEST_CASE("elastic block under pressure: exact displacement at nu = 0.3 and 0.49
     pressure_error = std::max(pressure_error, std::abs(s.unknowns.nodal[4 * i + 3] - load / 3.0));
   }
   const double scale = load * side / young;
-  INFO("nu = " << nu << ": max displacement error " << displacement_error / scale << " (relative), max pressure error "
+  INFO(solver::to_string(kind) << ", nu = " << nu << ": max displacement error " << displacement_error / scale << " (relative), max pressure error "
                << pressure_error / load << " (relative to P)");
   // Linear exact solution: reproduced to solver tolerance, at every node (no checkerboard).
   CHECK(displacement_error <= 1e-9 * scale);
@@ -148,24 +151,32 @@ TEST_CASE("Newton converges quadratically near the solution (m = 0.15)", "[verif
   CHECK(quadratic_steps >= 2);
 }
 
-TEST_CASE("the iterative solver (MINRES) gives the direct solver's answer", "[verification]") {
-  // Viscoplastic squeeze between sticking plates, solved twice. Both runs stop
-  // at Newton tolerance 1e-10, so plate loads agree to ~1e-9; asserted at 1e-7.
+TEST_CASE("the iterative solvers give the direct solver's answer", "[verification]") {
+  // Viscoplastic squeeze between sticking plates, solved by each linear
+  // solver. Every run stops at Newton tolerance 1e-10, so plate loads agree
+  // to ~1e-9; asserted at 1e-7.
   const material::NortonHoff law(50.0, 0.15, 1e-3);
   const mesh::TetMesh mesh = mesh::make_box(mesh::Point::Zero(), mesh::Point(10, 10, 5), 1.25);
   const auto imposed = scene::impose(mesh, squeeze_between_sticking_plates());
-  double load[2];
-  int k = 0;
-  for (auto kind : {solver::LinearSolverKind::umfpack, solver::LinearSolverKind::minres}) {
+  using K = solver::LinearSolverKind;
+  const std::vector<std::pair<std::string, solver::LinearSolverSettings>> solvers = {
+      {"umfpack", {K::umfpack}},
+      {"mumps", {K::mumps}},
+      {"fgmres bfbt", {K::fgmres, true, 1.5, solver::SchurApproximation::bfbt}},
+      {"fgmres mass", {K::fgmres, true, 1.5, solver::SchurApproximation::mass}},
+      {"minres", {K::minres}}};
+  double reference = 0.0;
+  for (const auto& [name, settings] : solvers) {
     Timers timers;
-    solver::IncrementSolver solver(mesh, imposed.prescribed, {kind}, timers);
+    solver::IncrementSolver solver(mesh, imposed.prescribed, settings, timers);
     fem::BodyUnknowns u{imposed.values, Eigen::VectorXd::Zero(3 * mesh.tet_count())};
-    solver::NewtonSettings settings;
-    settings.tolerance = 1e-10;
-    settings.verbose = false;
-    REQUIRE(solver.solve(law, {}, imposed.nodal_forces, {}, settings, u).converged);
-    load[k++] = scene::reaction(imposed, 1, solver.residual()).z();
+    solver::NewtonSettings newton;
+    newton.tolerance = newton.increment_tolerance = 1e-10;
+    newton.verbose = false;
+    REQUIRE(solver.solve(law, {}, imposed.nodal_forces, {}, newton, u).converged);
+    const double load = scene::reaction(imposed, 1, solver.residual()).z();
+    if (name == "umfpack") reference = load;
+    INFO(name << ": " << load << " N, umfpack " << reference << " N");
+    CHECK(std::abs(load - reference) <= 1e-7 * std::abs(reference));
   }
-  INFO("umfpack " << load[0] << " N, minres " << load[1] << " N");
-  CHECK(std::abs(load[0] - load[1]) <= 1e-7 * std::abs(load[0]));
 }

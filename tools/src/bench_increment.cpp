@@ -1,10 +1,22 @@
-// Benchmark (not a test): one Newtonian increment of a block squeezed between
-// sticking plates, on a box mesh of about N nodes. Prints nodes, unknowns,
-// assembly time, factorisation + solve time per Newton iteration, Newton
-// iterations and peak memory. One size per process, so the peak RSS is the
-// size's own; tools/bench_increment runs the issue's sizes.
-//   anvil_bench NODES [auto|umfpack|cholmod_ldlt|eigen_ldlt]
+// Benchmark (not a test): one increment of a block 2L × 2L × L (mm) on a box
+// mesh of about N nodes, solved by Newton to its tolerance with one linear
+// solver. Prints one line: nodes, unknowns, Newton iterations and, per Newton
+// iteration, assembly, solver set-up (preconditioner or factorisation), solve,
+// Krylov iterations, then the peak memory of the process. One configuration
+// per process, so the peak memory is its own; tools/bench_increment runs the
+// table of the issue.
+//
+// Problems:
+//   newtonian    η = 1 MPa.s, squeezed between sticking plates (top at 1 mm/s);
+//   norton_hoff  m = 0.1, K = 100 MPa.s^m, ε̄̇₀ = 1e-4 1/s: a flat punch over
+//                the half x < L of the top face indents the block on a
+//                sticking base; away from the punch the block is a rigid
+//                zone (viscosity contrast about 3e3 at the regularisation).
+//
+//   anvil_bench PROBLEM NODES SOLVER [PETSc options]
+//   SOLVER: fgmres | mumps | umfpack | minres | cholmod_ldlt | eigen_ldlt | auto
 #include "anvil/core/Timers.h"
+#include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/mesh/generators.h"
 #include "anvil/scene/BoundaryCondition.h"
@@ -20,43 +32,86 @@
 
 using namespace anvil;
 
-int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: anvil_bench NODES [auto|umfpack|cholmod_ldlt|eigen_ldlt|minres]\n");
-    return 2;
-  }
-  solver::PetscSession petsc(argc, argv);
-  const long target = std::atol(argv[1]);
-  const solver::LinearSolverKind kind = solver::linear_solver_kind(argc > 2 ? argv[2] : "auto");
-  // Block 2L × 2L × L (mm) with cells (2n, 2n, n): (2n+1)²(n+1) ≈ target nodes.
-  const int n = std::max(2, static_cast<int>(std::lround(std::cbrt(static_cast<double>(target) / 4.0))));
-  const mesh::TetMesh mesh = mesh::make_box(mesh::Point::Zero(), mesh::Point(20, 20, 10), {2 * n, 2 * n, n});
+namespace {
 
+struct Problem {
+  mesh::TetMesh mesh;
+  scene::ImposedConditions imposed;
+  std::unique_ptr<material::Material> law;
+};
+
+Problem make_problem(const std::string& name, long target_nodes) {
+  // (2n+1)²(n+1) ≈ target nodes.
+  const int n = std::max(2, static_cast<int>(std::lround(std::cbrt(static_cast<double>(target_nodes) / 4.0))));
+  const double length = 10.0;
+  Problem p{mesh::make_box(mesh::Point::Zero(), mesh::Point(2 * length, 2 * length, length), {2 * n, 2 * n, n}), {}, {}};
   scene::BoundaryCondition bottom, top;
   bottom.kind = top.kind = scene::BoundaryKind::sticking_plate;
   bottom.faces.tag = 5;
   top.faces.tag = 6;
   bottom.velocity = {0.0, 0.0, 0.0};
   top.velocity = {0.0, 0.0, -1.0};
-  const scene::ImposedConditions imposed = scene::impose(mesh, {bottom, top});
+  if (name == "newtonian") {
+    p.imposed = scene::impose(p.mesh, {bottom, top});
+    p.law = std::make_unique<material::NortonHoff>(1.0, 1.0, 0.0);
+  } else if (name == "norton_hoff") {
+    p.imposed = scene::impose(p.mesh, {bottom});
+    for (int node : scene::face_nodes(p.mesh, scene::select_faces(p.mesh, top.faces))) {
+      if (p.mesh.nodes[node].x() > length + 1e-9) continue; // the punch covers x <= L
+      for (int c = 0; c < 3; ++c) {
+        p.imposed.prescribed[4 * node + c] = 1;
+        p.imposed.values[4 * node + c] = c == 2 ? -1.0 : 0.0;
+      }
+    }
+    p.law = std::make_unique<material::NortonHoff>(100.0, 0.1, 1e-4);
+  } else {
+    throw InputError("unknown problem '" + name + "' (expected newtonian or norton_hoff)");
+  }
+  return p;
+}
 
-  Timers timers;
-  log::set_quiet(true);
-  solver::IncrementSolver solver(mesh, imposed.prescribed, {kind}, timers);
-  fem::BodyUnknowns unknowns{imposed.values, Eigen::VectorXd::Zero(3 * mesh.tet_count())};
-  const material::NortonHoff newtonian(1.0, 1.0, 0.0);
-  solver::NewtonSettings settings;
-  settings.verbose = false;
-  const auto report = solver.solve(newtonian, {}, imposed.nodal_forces, {}, settings, unknowns);
+} // namespace
 
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  const double iterations = static_cast<double>(report.iterations.size());
-  const double assembly = timers.seconds("assembly") / iterations, solve = timers.seconds("solve") / iterations;
-  std::printf("nodes %d  elements %d  unknowns %d  solver %s  newton %d (%s)  per iteration: assembly %.2f s, "
-              "factorisation+solve %.2f s, total %.2f s  peak memory %.2f GB  (last solve: %d iterative steps)\n",
-              mesh.node_count(), mesh.tet_count(), solver.free_count(), solver::to_string(solver.linear_solver().kind()).c_str(),
-              static_cast<int>(iterations), report.converged ? "converged" : report.failure.c_str(), assembly, solve,
-              assembly + solve, static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0), report.linear_iterations);
-  return report.converged ? 0 : 1;
+int main(int argc, char** argv) {
+  if (argc < 4) {
+    std::fprintf(stderr, "usage: anvil_bench newtonian|norton_hoff NODES SOLVER [PETSc options]\n");
+    return 2;
+  }
+  try {
+    solver::PetscSession petsc(argc, argv);
+    const Problem problem = make_problem(argv[1], std::atol(argv[2]));
+    const solver::LinearSolverKind kind = solver::linear_solver_kind(argv[3]);
+    Timers timers;
+    const bool verbose = std::getenv("ANVIL_BENCH_VERBOSE") != nullptr; // Newton's lines, for a look
+    log::set_quiet(!verbose);
+    solver::LinearSolverSettings linear{kind};
+    linear.reuse_preconditioner = std::getenv("ANVIL_BENCH_NO_REUSE") == nullptr;
+    if (const char* schur = std::getenv("ANVIL_BENCH_SCHUR")) linear.schur = solver::schur_approximation(schur);
+    solver::IncrementSolver solver(problem.mesh, problem.imposed.prescribed, linear, timers);
+    fem::BodyUnknowns unknowns{problem.imposed.values, Eigen::VectorXd::Zero(3 * problem.mesh.tet_count())};
+    solver::NewtonSettings settings;
+    settings.verbose = verbose;
+    if (const char* budget = std::getenv("ANVIL_BENCH_NEWTON")) settings.max_iterations = std::atoi(budget);
+    const auto report =
+        solver.solve(*problem.law, {}, problem.imposed.nodal_forces, {}, settings, unknowns);
+
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    // The predictor of a nonlinear law is one more linear solve.
+    const bool predictor = !problem.law->is_linear();
+    const double solves = static_cast<double>(report.iterations.size()) + (predictor ? 1.0 : 0.0);
+    const double total = timers.seconds("assembly") + timers.seconds("solver setup") + timers.seconds("solve");
+    std::printf("%-11s nodes %7d  unknowns %8d  %-7s newton %2zu%s (%s)  per solve: assembly %6.2f s  setup %6.2f s  "
+                "solve %6.2f s  total %6.2f s  krylov %5.1f  setups %d  peak %5.2f GB\n",
+                argv[1], problem.mesh.node_count(), solver.free_count(),
+                solver::to_string(solver.linear_solver().kind()).c_str(), report.iterations.size(),
+                predictor ? "+1" : "", report.converged ? "converged" : report.failure.c_str(),
+                timers.seconds("assembly") / solves, timers.seconds("solver setup") / solves,
+                timers.seconds("solve") / solves, total / solves, report.linear_iterations / solves,
+                solver.linear_solver().setups(), static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0));
+    return report.converged ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "anvil_bench: %s\n", e.what());
+    return 3;
+  }
 }

@@ -27,6 +27,12 @@ struct SaddlePointData {
   const Eigen::VectorXd& pressure_mass; ///< M_p/η lumped per node (Assembler::pressure_mass)
 };
 
+/// How the pressure block of the preconditioner approximates the Schur complement.
+enum class SchurApproximation {
+  bfbt, ///< stabilised BFBT (bfbt_schur.h): follows squeeze-flow (lubrication) pressure modes
+  mass, ///< −(C + M_p/η): the condensed-bubble block and the viscosity-scaled pressure mass
+};
+
 struct KrylovOutcome {
   bool converged = false;
   int iterations = 0;
@@ -36,7 +42,7 @@ struct KrylovOutcome {
 
 class KrylovSolver {
 public:
-  KrylovSolver();
+  explicit KrylovSolver(SchurApproximation schur);
   ~KrylovSolver();
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;

@@ -34,6 +34,7 @@ LinearSolverKind resolve(LinearSolverKind kind, int unknowns);
 
 LinearSolverKind linear_solver_kind(const std::string& name); ///< throws InputError on an unknown name
 std::string to_string(LinearSolverKind kind);
+SchurApproximation schur_approximation(const std::string& name); ///< throws InputError on an unknown name
 
 struct LinearSolverSettings {
   LinearSolverKind kind = LinearSolverKind::automatic;
@@ -43,6 +44,7 @@ struct LinearSolverSettings {
   /// the last set-up, when a solve fails, or when the pattern changes.
   bool reuse_preconditioner = true;
   double reuse_growth = 1.5;
+  SchurApproximation schur = SchurApproximation::bfbt; ///< fgmres
 };
 
 class LinearSolver {
