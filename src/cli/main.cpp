@@ -77,6 +77,7 @@ int main(int argc, char** argv) {
 
   std::string case_file;
   std::vector<std::string> overrides;
+  std::vector<char*> petsc_arguments = {argv[0]}; // what PetscInitialize reads: PETSc's options only
   anvil::scene::RunOptions options;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -91,8 +92,9 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) return usage_error("--set needs KEY=VALUE, e.g. --set time.stroke_increment=0.1");
       overrides.emplace_back(argv[++i]);
     } else if (arg.size() > 1 && arg[0] == '-' && arg[1] != '-') {
-      // A PETSc option (PetscInitialize reads it), with its value when the next argument is not an option.
-      if (i + 1 < argc && !anvil::solver::is_petsc_option_name(argv[i + 1])) ++i;
+      // A PETSc option, with its value when the next argument is not an option.
+      petsc_arguments.push_back(argv[i]);
+      if (i + 1 < argc && !anvil::solver::is_petsc_option_name(argv[i + 1])) petsc_arguments.push_back(argv[++i]);
     } else if (!arg.empty() && arg[0] == '-') {
       return usage_error("unknown option '" + arg + "'");
     } else if (case_file.empty()) {
@@ -109,7 +111,10 @@ int main(int argc, char** argv) {
       std::puts(anvil::scene::output_directory(c, options).c_str());
       return 0;
     }
-    anvil::solver::PetscSession petsc(argc, argv);
+    int petsc_argc = static_cast<int>(petsc_arguments.size());
+    petsc_arguments.push_back(nullptr);
+    char** petsc_argv = petsc_arguments.data();
+    anvil::solver::PetscSession petsc(petsc_argc, petsc_argv);
     anvil::scene::run(c, options);
     for (const std::string& unused : anvil::solver::PetscSession::unused_options())
       std::fprintf(stderr, "anvil: warning: PETSc option %s was not used by the solver of this run (misspelt?)\n",

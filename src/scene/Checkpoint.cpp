@@ -83,7 +83,6 @@ void write_checkpoint(const std::string& path, const RunState& s) {
     write_attribute(file, "increment", H5T_NATIVE_INT, &s.increment);
     write_attribute(file, "time", H5T_NATIVE_DOUBLE, &s.time);
     write_attribute(file, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
-    write_attribute(file, "linear_iterations", H5T_NATIVE_LONG, &s.linear_iterations);
     const double volume[6] = {s.volume.initial, s.volume.solver, s.volume.projection, s.volume.largest_increment,
                               s.volume.compensation, s.volume.remeshing};
     write_array(file, "volume", H5T_NATIVE_DOUBLE, volume, 6, 0);
@@ -123,6 +122,7 @@ void write_checkpoint(const std::string& path, const RunState& s) {
       loads.insert(loads.end(), {double(r.increment), r.time, double(r.surface), r.stroke, r.force.x(), r.force.y(),
                                  r.force.z()});
     write_array(file, "loads", H5T_NATIVE_DOUBLE, loads.data(), s.loads.size(), 7);
+    write_array(file, "iterations", H5T_NATIVE_INT, s.iterations.data(), s.iterations.size(), 2);
     std::vector<double> outputs;
     std::string files;
     for (const io::VtkSeries::Entry& e : s.outputs) {
@@ -149,8 +149,6 @@ RunState read_checkpoint(const std::string& path) {
   read_attribute(file, path, "increment", H5T_NATIVE_INT, &s.increment);
   read_attribute(file, path, "time", H5T_NATIVE_DOUBLE, &s.time);
   read_attribute(file, path, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
-  if (H5Aexists(file, "linear_iterations") > 0) // absent before the Krylov solver
-    read_attribute(file, path, "linear_iterations", H5T_NATIVE_LONG, &s.linear_iterations);
   std::vector<double> volume, nodes, nodal, bubble, dies, loads, outputs;
   std::vector<long long> tets, faces;
   std::vector<char> files;
@@ -191,6 +189,11 @@ RunState read_checkpoint(const std::string& path) {
   read_array(file, path, "loads", H5T_NATIVE_DOUBLE, loads, 7);
   for (std::size_t i = 0; i < loads.size(); i += 7)
     s.loads.push_back({int(loads[i]), loads[i + 1], int(loads[i + 2]), loads[i + 3], {loads[i + 4], loads[i + 5], loads[i + 6]}});
+  if (H5Lexists(file, "iterations", H5P_DEFAULT) > 0) { // absent in checkpoints written before it
+    std::vector<int> iterations;
+    read_array(file, path, "iterations", H5T_NATIVE_INT, iterations, 2);
+    for (std::size_t i = 0; i < iterations.size(); i += 2) s.iterations.push_back({iterations[i], iterations[i + 1]});
+  }
   read_array(file, path, "outputs", H5T_NATIVE_DOUBLE, outputs, 2);
   read_array(file, path, "output_files", H5T_NATIVE_CHAR, files, 1);
   std::string name;

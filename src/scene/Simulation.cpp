@@ -1245,7 +1245,7 @@ void Run::execute() {
     if (has_contact()) set_contact_scales();
     if (!try_increment(1.0, report)) throw RunError("increment 1: " + report.failure);
     state_.newton_iterations = static_cast<int>(report.iterations.size());
-    state_.linear_iterations = report.linear_iterations;
+    state_.iterations.push_back({static_cast<int>(report.iterations.size()), report.linear_iterations});
     last_report_ = report;
     record_loads(1, 0.0);
     for (std::size_t s = 0; s < surfaces_.size(); ++s) {
@@ -1312,7 +1312,7 @@ void Run::execute() {
     ++state_.increment;
     state_.time += dt;
     state_.newton_iterations += static_cast<int>(report.iterations.size());
-    state_.linear_iterations += report.linear_iterations;
+    state_.iterations.push_back({static_cast<int>(report.iterations.size()), report.linear_iterations});
     last_report_ = report;
     // ε̄ += Δt ε̄̇ per element, with the rates of the converged increment on the geometry it was solved on.
     for (int e = 0; e < state_.mesh.tet_count(); ++e) {
@@ -1372,8 +1372,14 @@ void Run::write_summary(double total) const {
   summary << "],\n  \"unknowns\": " << solver_->free_count() << ",\n"
           << "  \"increments\": " << state_.increment << ",\n  \"time_s\": " << state_.time << ",\n"
           << "  \"newton_iterations\": " << state_.newton_iterations << ",\n"
-          << "  \"linear_solver\": " << json_string(solver::to_string(solver_->linear_solver().kind())) << ",\n"
-          << "  \"krylov_iterations\": " << state_.linear_iterations << ",\n";
+          << "  \"linear_solver\": " << json_string(solver::to_string(solver_->linear_solver().kind())) << ",\n";
+  long krylov = 0;
+  for (const auto& i : state_.iterations) krylov += i[1];
+  summary << "  \"krylov_iterations\": " << krylov << ",\n  \"iterations_per_increment\": {\"newton\": [";
+  for (std::size_t i = 0; i < state_.iterations.size(); ++i) summary << (i ? ", " : "") << state_.iterations[i][0];
+  summary << "], \"krylov\": [";
+  for (std::size_t i = 0; i < state_.iterations.size(); ++i) summary << (i ? ", " : "") << state_.iterations[i][1];
+  summary << "]},\n";
   if (!last_report_.iterations.empty())
     summary << "  \"final_residual\": {\"force\": " << last_report_.iterations.back().force_residual
             << ", \"div\": " << last_report_.iterations.back().flux_residual << "},\n";

@@ -77,17 +77,17 @@ const std::vector<KeySpec>& case_schema() {
       key("solver", T::map, "Newton and linear solver settings"),
       with_default(range(key("solver.tolerance", T::number, "Newton: relative tolerance on the force and div residuals"),
                          1e-14, 1e-2),
-                   "1e-8"),
+                   "1e-6"),
       with_default(range(key("solver.increment_tolerance", T::number,
                              "Newton: relative tolerance on |dv|/|v| of the last step (a linear problem needs none "
                              "after a full step)"),
                          1e-14, 1),
-                   "1e-8"),
+                   "1e-4"),
       with_default(range(key("solver.max_iterations", T::integer, "Newton iterations per increment"), 1, 500), "30"),
       with_default(choices(key("solver.linear_solver", T::string,
                                "fgmres: PETSc FGMRES with algebraic multigrid on the velocities and a Schur-complement "
                                "pressure preconditioner (large meshes); mumps: sparse direct (MUMPS); auto: mumps up to "
-                               "20000 unknowns, fgmres above, mumps when fgmres stagnates; umfpack, cholmod_ldlt, "
+                               "5000 unknowns, fgmres above, mumps when fgmres stagnates; umfpack, cholmod_ldlt, "
                                "eigen_ldlt, minres: kept for comparison"),
                            {"auto", "fgmres", "mumps", "umfpack", "cholmod_ldlt", "eigen_ldlt", "minres"}),
                    "auto"),

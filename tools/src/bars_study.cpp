@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
     std::puts("usage: tools/bars_study [DIR]   (13 runs, a minute or two; writes DIR/bars_study.csv and two plots)");
     return 0;
   }
-  anvil::solver::PetscSession petsc(argc, argv);
+  int petsc_argc = 1; // the tool's own arguments are not PETSc's
+  anvil::solver::PetscSession petsc(petsc_argc, argv);
   try {
     std::filesystem::create_directories(out);
     anvil::log::set_quiet(true);

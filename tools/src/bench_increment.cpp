@@ -102,13 +102,13 @@ int main(int argc, char** argv) {
     const double solves = static_cast<double>(report.iterations.size()) + (predictor ? 1.0 : 0.0);
     const double total = timers.seconds("assembly") + timers.seconds("solver setup") + timers.seconds("solve");
     std::printf("%-11s nodes %7d  unknowns %8d  %-7s newton %2zu%s (%s)  per solve: assembly %6.2f s  setup %6.2f s  "
-                "solve %6.2f s  total %6.2f s  krylov %5.1f  setups %d  peak %5.2f GB\n",
+                "solve %6.2f s  total %6.2f s  krylov %5.1f  setups %d  increment %7.2f s  peak %5.2f GB\n",
                 argv[1], problem.mesh.node_count(), solver.free_count(),
                 solver::to_string(solver.linear_solver().kind()).c_str(), report.iterations.size(),
                 predictor ? "+1" : "", report.converged ? "converged" : report.failure.c_str(),
                 timers.seconds("assembly") / solves, timers.seconds("solver setup") / solves,
                 timers.seconds("solve") / solves, total / solves, report.linear_iterations / solves,
-                solver.linear_solver().setups(), static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0));
+                solver.linear_solver().setups(), total, static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0));
     return report.converged ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "anvil_bench: %s\n", e.what());

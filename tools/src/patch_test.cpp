@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
     std::puts("usage: tools/patch_test [DIR]   (runs 72 small cases, about a minute; writes DIR/patch_test.csv)");
     return 0;
   }
-  anvil::solver::PetscSession petsc(argc, argv);
+  int petsc_argc = 1; // the tool's own arguments are not PETSc's
+  anvil::solver::PetscSession petsc(petsc_argc, argv);
   try {
     std::filesystem::create_directories(out);
     anvil::log::set_quiet(true);

@@ -353,7 +353,8 @@ int study(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   try {
-    solver::PetscSession petsc(argc, argv);
+    int petsc_argc = 1; // the tool's own arguments are not PETSc's
+    solver::PetscSession petsc(petsc_argc, argv);
     return study(argc, argv);
   } catch (const InputError& e) {
     std::fprintf(stderr, "anvil_study: input error: %s\n", e.what());

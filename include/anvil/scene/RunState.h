@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <limits>
 #include <string>
+#include <array>
 #include <vector>
 
 namespace anvil::scene {
@@ -79,7 +80,8 @@ struct RunState {
   std::vector<LoadRecord> loads;
   VolumeBudget volume;
   int newton_iterations = 0; ///< total over the run
-  long linear_iterations = 0; ///< Krylov iterations, total over the run (0 with a direct solver)
+  /// Per increment: Newton iterations and Krylov iterations (0 with a direct solver).
+  std::vector<std::array<int, 2>> iterations;
   std::vector<RemeshRecord> remeshes;
   std::vector<io::VtkSeries::Entry> outputs;
 };

@@ -14,12 +14,16 @@
 
 namespace anvil::solver {
 
+/// Defaults measured with tools/study on cases/upsetting.yaml (README,
+/// "Solver"): below a residual of 1e-6 the press load changes by less than
+/// 2e-6 of itself, and asking |Δv|/|v| < 1e-8 besides costs 45 % more Newton
+/// iterations for a load change of 2e-8.
 struct NewtonSettings {
-  double tolerance = 1e-8;           ///< relative force and div residuals
+  double tolerance = 1e-6;           ///< relative force and div residuals
   /// |Δv|/|v| of the last step. A linear problem (linear laws, contact
   /// without friction or sticking, active set unchanged) needs none after a
   /// full step: that step is the solution to the linear solve's accuracy.
-  double increment_tolerance = 1e-8;
+  double increment_tolerance = 1e-4;
   /// Largest Krylov tolerance of an inexact Newton step (Eisenstat-Walker).
   double krylov_tolerance_max = 1e-2;
   int max_iterations = 30;

@@ -21,13 +21,16 @@ enum class LinearSolverKind {
   cholmod_ldlt,    ///< SuiteSparse CHOLMOD simplicial LDLᵀ (no pivoting; quasi-definite only)
   eigen_ldlt,      ///< Eigen SimplicialLDLT with AMD (no pivoting; quasi-definite only)
   minres,          ///< Eigen MINRES, block-diagonal preconditioner (BlockPreconditioner; for comparison)
-  automatic,       ///< mumps up to kDirectSolverLimit unknowns, fgmres above
+  automatic,       ///< mumps up to kDirectSolverLimit unknowns, fgmres above (mumps if it stagnates)
 };
 
 /// Unknowns up to which `automatic` picks the direct solver: the crossover
-/// measured with tools/bench_increment on 2 cores (time per Newton
-/// iteration, MUMPS against FGMRES; see the README's solver section).
-inline constexpr int kDirectSolverLimit = 20000;
+/// measured on 2 cores (README, "Solver"). One increment from rest
+/// (tools/bench_increment), MUMPS against FGMRES: Newtonian 0.11/0.14 s at
+/// 3.7k unknowns, 0.30/0.35 s at 8.7k, 0.81/0.66 s at 16.8k; Norton-Hoff
+/// m = 0.1 2.96/2.45 s at 4k, 6.84/7.08 s at 9k, 17.2/13.9 s at 17k. Whole
+/// run of cases/upsetting.yaml (7.7k unknowns): 36.3/25.9 s.
+inline constexpr int kDirectSolverLimit = 5000;
 
 /// The concrete solver `kind` stands for at `unknowns` unknowns.
 LinearSolverKind resolve(LinearSolverKind kind, int unknowns);
