@@ -46,8 +46,9 @@ void sort_unique(std::vector<std::vector<int>>& lists) {
 } // namespace
 
 Assembler::Assembler(const mesh::TetMesh& mesh, const DofMap& dofs)
-    : dofs_(dofs), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()),
-      bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0), element_neighbours_(mesh.nodes.size()) {
+    : dofs_(dofs), tets_(mesh.tets), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()),
+      bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0), element_blocks_(mesh.tets.size()),
+      element_neighbours_(mesh.nodes.size()) {
   ANVIL_ASSERT(dofs.dof_count() == kDofsPerNode * mesh.node_count());
   for (const mesh::Tet& t : mesh.tets)
     for (int a : t)
@@ -90,6 +91,13 @@ void Assembler::build_pattern() {
   diagonal_.resize(static_cast<std::size_t>(rows));
   for (int dof = 0; dof < rows; ++dof)
     diagonal_[dof] = entry(dof / kDofsPerNode, dof % kDofsPerNode, dof / kDofsPerNode, dof % kDofsPerNode);
+  constrained_entries_.clear();
+  for (int row = 0; row < rows; ++row)
+    for (int k = tangent_.outerIndexPtr()[row]; k < tangent_.outerIndexPtr()[row + 1]; ++k)
+      if (dofs_.prescribed(row) || dofs_.prescribed(tangent_.innerIndexPtr()[k])) constrained_entries_.push_back(k);
+  for (std::size_t e = 0; e < element_blocks_.size(); ++e)
+    for (int b = 0; b < 4; ++b)
+      for (int a = 0; a < 4; ++a) element_blocks_[e][4 * b + a] = entry(tets_[e][b], 0, tets_[e][a], 0);
 }
 
 int Assembler::entry(int row_node, int d, int col_node, int c) const {
@@ -103,15 +111,14 @@ void Assembler::add_velocity_block(int row_node, int col_node, const Eigen::Matr
   const int first = entry(row_node, 0, col_node, 0);
   const int row_length = kDofsPerNode * static_cast<int>(neighbours_[row_node].size());
   double* values = tangent_.valuePtr();
-  for (int i = 0; i < 3; ++i) {
-    if (dofs_.prescribed(kDofsPerNode * row_node + i)) continue;
-    for (int j = 0; j < 3; ++j)
-      if (!dofs_.prescribed(kDofsPerNode * col_node + j)) values[first + i * row_length + j] += block(i, j);
-  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) values[first + i * row_length + j] += block(i, j);
 }
 
 void Assembler::finish_tangent() {
-  // Prescribed rows and columns were left empty; mean free diagonal per kind.
+  // Prescribed rows and columns out, then the mean free diagonal per kind on them.
+  double* values = tangent_.valuePtr();
+  for (int k : constrained_entries_) values[k] = 0.0;
   double sum[2] = {0.0, 0.0};
   int count[2] = {0, 0};
   for (int dof = 0; dof < dofs_.dof_count(); ++dof) {
@@ -166,16 +173,14 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
         if (!with_tangent) continue;
         if (system.viscosity > 0.0)
           for (int a = 0; a < 4; ++a) pressure_mass_[t[a]] += 0.25 * system.volume / system.viscosity;
+        // Every entry, prescribed ones too: finish_tangent() takes those out.
+        const std::array<int, 16>& blocks = element_blocks_[e];
         for (int b = 0; b < 4; ++b) {
           const int row_length = kDofsPerNode * static_cast<int>(neighbours_[t[b]].size());
           for (int a = 0; a < 4; ++a) {
-            const int first = entry(t[b], 0, t[a], 0); // row 4 t[b], column 4 t[a]
-            for (int d = 0; d < 4; ++d) {
-              if (dofs_.prescribed(kDofsPerNode * t[b] + d)) continue;
-              for (int c = 0; c < 4; ++c)
-                if (!dofs_.prescribed(kDofsPerNode * t[a] + c))
-                  values[first + d * row_length + c] += system.tangent(4 * b + d, 4 * a + c);
-            }
+            double* block = values + blocks[4 * b + a]; // row 4 t[b], column 4 t[a]
+            for (int d = 0; d < 4; ++d)
+              for (int c = 0; c < 4; ++c) block[d * row_length + c] += system.tangent(4 * b + d, 4 * a + c);
           }
         }
       }

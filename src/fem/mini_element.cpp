@@ -115,7 +115,7 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
       g_l.transpose() * v_lin + g_b.transpose() * in.bubble_velocity - c * (p - Eigen::Vector4d::Constant(carried_pressure));
 
   // Condense the bubble: Δb = −K_bb⁻¹ (r_b + K_bl Δl + G_b Δp).
-  const Eigen::Matrix<double, 12, 3> k_lb = g.linear_strain.transpose() * tangent_bubble_sum;
+  const Eigen::Matrix<double, 12, 3> k_lb = g.linear_strain.transpose().lazyProduct(tangent_bubble_sum);
   Eigen::Matrix<double, 3, 16> coupling; // [K_bl  G_b] in condensed ordering
   for (int a = 0; a < 4; ++a) {
     coupling.block<3, 3>(0, 4 * a) = k_lb.block<3, 3>(3 * a, 0).transpose();
@@ -134,7 +134,9 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
   out.residual.noalias() -= coupling.transpose() * out.bubble_residual_solved;
 
   if (with_tangent) {
-    const Eigen::Matrix<double, 12, 12> k_ll = g.linear_strain.transpose() * tangent_sum * g.linear_strain;
+    // Small fixed-size products: coefficient-wise (lazy), not Eigen's blocked GEMM.
+    const Eigen::Matrix<double, 6, 12> d_l = tangent_sum.lazyProduct(g.linear_strain);
+    const Eigen::Matrix<double, 12, 12> k_ll = g.linear_strain.transpose().lazyProduct(d_l);
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b) {
         out.tangent.block<3, 3>(4 * a, 4 * b) = k_ll.block<3, 3>(3 * a, 3 * b);
@@ -142,7 +144,7 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
         out.tangent.block<1, 3>(4 * a + 3, 4 * b) = g_l.block<3, 1>(3 * b, a).transpose();
         out.tangent(4 * a + 3, 4 * b + 3) = -c(a, b);
       }
-    out.tangent.noalias() -= coupling.transpose() * out.bubble_gain;
+    out.tangent.noalias() -= coupling.transpose().lazyProduct(out.bubble_gain);
   }
   return true;
 }

@@ -13,6 +13,7 @@
 #include "anvil/fem/mini_element.h"
 
 #include <Eigen/Sparse>
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -68,13 +69,13 @@ public:
   /// elements (both blocks ab and ba). True when the pattern changed (the
   /// tangent is then rebuilt and the linear solver must analyse it again).
   bool set_couplings(const std::vector<std::pair<int, int>>& couplings);
-  /// tangent(velocity rows of `row_node`, velocity columns of `col_node`) += block,
-  /// prescribed rows and columns left out; the pair must be in the pattern
-  /// (same node, element neighbours or a coupling).
+  /// tangent(velocity rows of `row_node`, velocity columns of `col_node`) += block;
+  /// the pair must be in the pattern (same node, element neighbours or a coupling).
   void add_velocity_block(int row_node, int col_node, const Eigen::Matrix3d& block);
-  /// Puts the scaled identity on the prescribed dofs' diagonal (after every
-  /// contribution is added): the mean free diagonal of the velocity rows, or
-  /// of the pressure rows, so the rows are neither tiny nor huge for a solver.
+  /// Decouples the prescribed dofs (after every contribution is added): their
+  /// rows and columns are cleared and their diagonal is the mean free
+  /// diagonal of the velocity rows, or of the pressure rows, so the rows are
+  /// neither tiny nor huge for a solver.
   void finish_tangent();
   int colour_count() const { return static_cast<int>(colours_.size()); }
 
@@ -85,6 +86,7 @@ private:
   int entry(int row_node, int d, int col_node, int c) const;
 
   const DofMap& dofs_;
+  const std::vector<mesh::Tet>& tets_; ///< the mesh's elements (the assembler lives with its mesh)
   SparseMatrix tangent_;
   Eigen::VectorXd pressure_mass_;
   std::vector<std::vector<int>> colours_; ///< element indices per colour
@@ -94,10 +96,14 @@ private:
   /// (kept per element so the sums are in a fixed order, whatever the threads).
   std::vector<char> bad_;
   std::vector<double> bubble_sq_;
+  /// Per element, where its 4×4 node blocks start in the tangent's values
+  /// (row node b, column node a at 4b + a): assembly needs no search.
+  std::vector<std::array<int, 16>> element_blocks_;
   std::vector<std::vector<int>> element_neighbours_; ///< per node, the nodes it shares an element with (sorted)
   std::vector<std::vector<int>> neighbours_;         ///< the same with the contact couplings: the pattern
   std::vector<std::pair<int, int>> couplings_;       ///< the contact couplings in the pattern
   std::vector<int> diagonal_;                        ///< per dof, the index of its diagonal entry
+  std::vector<int> constrained_entries_;             ///< entries in a prescribed row or column
 };
 
 } // namespace anvil::fem
