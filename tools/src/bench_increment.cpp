@@ -13,8 +13,11 @@
 //                sticking base; away from the punch the block is a rigid
 //                zone (viscosity contrast about 3e3 at the regularisation).
 //
-//   anvil_bench PROBLEM NODES SOLVER [PETSc options]
+//   anvil_bench PROBLEM NODES SOLVER [--newton N] [--schur bfbt|mass]
+//               [--no-reuse] [--verbose] [PETSc options]
 //   SOLVER: fgmres | mumps | umfpack | minres | cholmod_ldlt | eigen_ldlt | auto
+//   --newton N   at most N Newton iterations (default 60): per-iteration
+//                figures of a long solve without waiting for its end
 #include "anvil/core/Timers.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
@@ -29,6 +32,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 using namespace anvil;
 
@@ -70,28 +74,42 @@ Problem make_problem(const std::string& name, long target_nodes) {
   return p;
 }
 
+constexpr const char* kUsage =
+    "usage: anvil_bench newtonian|norton_hoff NODES SOLVER [--newton N] [--schur bfbt|mass] [--no-reuse] "
+    "[--verbose] [PETSc options]\n";
+
 } // namespace
 
 int main(int argc, char** argv) {
   if (argc < 4) {
-    std::fprintf(stderr, "usage: anvil_bench newtonian|norton_hoff NODES SOLVER [PETSc options]\n");
+    std::fputs(kUsage, stderr);
     return 2;
   }
   try {
-    solver::PetscSession petsc(argc, argv);
+    solver::LinearSolverSettings linear{solver::linear_solver_kind(argv[3])};
+    solver::NewtonSettings settings;
+    settings.max_iterations = 60;
+    settings.verbose = false;
+    std::vector<char*> petsc_arguments = {argv[0]};
+    for (int i = 4; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--newton" && i + 1 < argc) settings.max_iterations = std::atoi(argv[++i]);
+      else if (arg == "--schur" && i + 1 < argc) linear.schur = solver::schur_approximation(argv[++i]);
+      else if (arg == "--no-reuse") linear.reuse_preconditioner = false;
+      else if (arg == "--verbose") settings.verbose = true; // Newton's lines, for a look
+      else if (solver::is_petsc_option_name(arg)) petsc_arguments.push_back(argv[i]);
+      else if (petsc_arguments.size() > 1) petsc_arguments.push_back(argv[i]); // a PETSc option's value
+      else throw InputError("unknown argument '" + arg + "'\n" + kUsage);
+    }
+    int petsc_argc = static_cast<int>(petsc_arguments.size());
+    petsc_arguments.push_back(nullptr);
+    char** petsc_argv = petsc_arguments.data();
+    solver::PetscSession petsc(petsc_argc, petsc_argv);
     const Problem problem = make_problem(argv[1], std::atol(argv[2]));
-    const solver::LinearSolverKind kind = solver::linear_solver_kind(argv[3]);
     Timers timers;
-    const bool verbose = std::getenv("ANVIL_BENCH_VERBOSE") != nullptr; // Newton's lines, for a look
-    log::set_quiet(!verbose);
-    solver::LinearSolverSettings linear{kind};
-    linear.reuse_preconditioner = std::getenv("ANVIL_BENCH_NO_REUSE") == nullptr;
-    if (const char* schur = std::getenv("ANVIL_BENCH_SCHUR")) linear.schur = solver::schur_approximation(schur);
+    log::set_quiet(!settings.verbose);
     solver::IncrementSolver solver(problem.mesh, problem.imposed.prescribed, linear, timers);
     fem::BodyUnknowns unknowns{problem.imposed.values, Eigen::VectorXd::Zero(3 * problem.mesh.tet_count())};
-    solver::NewtonSettings settings;
-    settings.verbose = verbose;
-    if (const char* budget = std::getenv("ANVIL_BENCH_NEWTON")) settings.max_iterations = std::atoi(budget);
     const auto report =
         solver.solve(*problem.law, {}, problem.imposed.nodal_forces, {}, settings, unknowns);
 
