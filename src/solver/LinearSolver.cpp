@@ -17,8 +17,9 @@
 namespace anvil::solver {
 
 namespace {
-/// The SuiteSparse and Eigen direct solvers take compressed columns.
-using ColumnMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+/// The SuiteSparse and Eigen direct solvers take compressed columns; 64-bit
+/// indices, so UMFPACK runs its long version (the int one fails past ~2 GB of factors).
+using ColumnMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, long>;
 } // namespace
 
 struct LinearSolver::Backend {
@@ -27,7 +28,7 @@ struct LinearSolver::Backend {
   ColumnMatrix columns; ///< copy of the tangent for the comparison solvers
   Eigen::UmfPackLU<ColumnMatrix> umfpack;
   Eigen::CholmodSimplicialLDLT<ColumnMatrix, Eigen::Lower> cholmod;
-  Eigen::SimplicialLDLT<ColumnMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> eigen;
+  Eigen::SimplicialLDLT<ColumnMatrix, Eigen::Lower, Eigen::AMDOrdering<long>> eigen;
   Eigen::MINRES<fem::SparseMatrix, Eigen::Lower | Eigen::Upper, BlockPreconditioner> minres;
 };
 
