@@ -728,6 +728,7 @@ void Run::write_outputs(bool force) {
     Timers::Scope checkpoint(timers_, "checkpoint");
     write_checkpoint(out_ + "/checkpoint.h5", state_);
     last_checkpoint_ = state_.increment;
+    if (solver_) solver_->restart_linear_solver(); // as a run resumed from here starts: --resume stays exact
   }
 }
 

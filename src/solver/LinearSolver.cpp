@@ -69,12 +69,22 @@ LinearSolverKind resolve(LinearSolverKind kind, int unknowns) {
 }
 
 LinearSolver::LinearSolver(const LinearSolverSettings& settings, int unknowns)
-    : settings_(settings), kind_(resolve(settings.kind, unknowns)), backend_(std::make_unique<Backend>()) {
-  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings.schur);
-  if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace();
-  backend_->minres.setMaxIterations(20000);
+    : settings_(settings), unknowns_(unknowns) {
+  restart();
 }
 LinearSolver::~LinearSolver() = default;
+
+void LinearSolver::restart() {
+  kind_ = resolve(settings_.kind, unknowns_);
+  backend_ = std::make_unique<Backend>();
+  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings_.schur);
+  if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace();
+  backend_->minres.setMaxIterations(20000);
+  analysed_ = false;
+  setup_rate_ = 0.0;
+  refresh_ = true;
+  reused_ = false;
+}
 
 namespace {
 template <class Solver> bool factorize_with(Solver& s, const ColumnMatrix& a, bool& analysed, int& analyses) {

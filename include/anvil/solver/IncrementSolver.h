@@ -79,6 +79,7 @@ public:
   const fem::DofMap& dofs() const { return dofs_; }
   int free_count() const { return dofs_.free_count(); }
   const LinearSolver& linear_solver() const { return linear_solver_; }
+  void restart_linear_solver() { linear_solver_.restart(); } ///< see LinearSolver::restart
 
 private:
   /// Squared residual norms, absolute: velocity rows (N²), pressure rows

@@ -67,6 +67,11 @@ public:
   bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance);
   /// The pattern of the next matrix differs (direct solvers analyse it again).
   void pattern_changed() { analysed_ = false; }
+  /// Back to the state of a new solver: no kept preconditioner, no MUMPS
+  /// fallback. A run resumed from a checkpoint starts with a new solver; the
+  /// uninterrupted run restarts its own at each checkpoint, so both solve the
+  /// next increment alike (a kept preconditioner changes an inexact solve).
+  void restart();
 
   /// The solver in use (mumps after a fallback).
   LinearSolverKind kind() const { return kind_; }
@@ -80,6 +85,7 @@ public:
 private:
   struct Backend;
   LinearSolverSettings settings_;
+  int unknowns_;
   LinearSolverKind kind_;
   std::unique_ptr<Backend> backend_;
   const fem::SparseMatrix* matrix_ = nullptr;   ///< of the last factorize(), for a fallback
