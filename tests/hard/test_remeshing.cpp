@@ -45,22 +45,15 @@ void check_remeshes_keep_volume_and_strain(const RemeshedRun& run) {
   }
 }
 
-/// A bound the case must meet, or, as a known shortfall, one reported on
-/// every run without failing it (CHECK_NOFAIL).
-void check_bound(bool within, bool known_shortfall) {
-  if (known_shortfall) CHECK_NOFAIL(within);
-  else CHECK(within);
-}
-
 /// Issue 5: the volume changes by less than 1 % over the run: the
 /// material's (the mesh less its overlap with the dies), which the volume
 /// compensation holds, and the mesh's, which carries that overlap besides.
-void check_run_volume(const RemeshedRun& run, bool known_shortfall) {
+void check_run_volume(const RemeshedRun& run) {
   const double material = std::abs(run.out.summary_number("material_relative_change"));
   const double mesh_volume = std::abs(run.out.summary_number("relative_change"));
   INFO("volume change over the run: material " << 100.0 * material << " %, mesh " << 100.0 * mesh_volume << " %");
-  check_bound(material < 0.01, known_shortfall);
-  check_bound(mesh_volume < 0.01, known_shortfall);
+  CHECK(material < 0.01);
+  CHECK(mesh_volume < 0.01);
 }
 
 /// Max ε̄ within 2 % across each remesh. The transfer keeps old peaks in the
@@ -72,25 +65,26 @@ void check_max_strain(const RemeshedRun& run) {
   }
 }
 
-/// Issue 5: no jump above 3 % in the load-stroke curve at a remesh. The jump
+/// No jump above `bound` in the load-stroke curve at a remesh (3 % is the
+/// aim; a case short of it is bounded at its measured worst). The jump
 /// at equal geometry (remeshing.check_load): the press load of the increment
 /// after the remesh, solved on the old mesh and on the new one at the same
 /// die positions and Δt. Newton stops at a residual far below 3 % of the load.
-void check_load_jump(const RemeshedRun& run, bool known_shortfall) {
+void check_load_jump(const RemeshedRun& run, double bound) {
   REQUIRE(run.c.remeshing.check_load);
   for (const scene::RemeshRecord& r : run.end.remeshes) {
     INFO("remesh after increment " << r.increment << ": press load " << r.load_old_mesh << " N on the old mesh, "
                                    << r.load_new_mesh << " N on the new");
     REQUIRE(std::isfinite(r.load_old_mesh));
     REQUIRE(std::isfinite(r.load_new_mesh));
-    check_bound(std::abs(r.load_jump()) < 0.03, known_shortfall);
+    CHECK(std::abs(r.load_jump()) < bound);
   }
 }
 
-/// The load on `surface` just after each remesh within 3 % of the straight
+/// The load on `surface` just after each remesh within `bound` of the straight
 /// line through the two loads before: the jump and the curve's own bend
 /// over one increment together.
-void check_load_trend(const RemeshedRun& run, const std::string& surface, bool known_shortfall) {
+void check_load_trend(const RemeshedRun& run, const std::string& surface, double bound) {
   const std::vector<LoadRow> load = run.out.loads(surface);
   for (const scene::RemeshRecord& r : run.end.remeshes) {
     const std::size_t k = static_cast<std::size_t>(r.increment) - 1; // row of the remesh increment
@@ -98,28 +92,30 @@ void check_load_trend(const RemeshedRun& run, const std::string& surface, bool k
     const LoadRow &a = load[k - 1], &b = load[k], &after = load[k + 1];
     const double predicted = b.force.z() + (b.force.z() - a.force.z()) / (b.stroke - a.stroke) * (after.stroke - b.stroke);
     INFO("remesh after increment " << r.increment << ": load " << after.force.z() << " N, trend " << predicted << " N");
-    check_bound(std::abs(after.force.z() / predicted - 1.0) < 0.03, known_shortfall);
+    CHECK(std::abs(after.force.z() / predicted - 1.0) < bound);
   }
 }
 
 } // namespace
 
 // Each case runs once (one test case: ctest runs every test case in its own
-// process). Known shortfall, reported but not failing: the load jump at equal
-// geometry. Round-off alone (BLAS threads, linear solver) moves the remeshes
-// by a few increments and the worst jump between 1.7 and 3.4 %; neither a
-// finer mesh (h 1.2 or 1 mm) nor an earlier remesh (quality 0.2) brings it
-// reliably under 3 %. The trend check bounds the jump as the curve sees it.
+// process). The load jump at equal geometry is short of 3 %: round-off alone
+// (BLAS threads, linear solver) moves the remeshes by a few increments and
+// the worst jump of a run between 1.4 and 3.37 % (single-threaded BLAS, as
+// the suite runs); neither a finer mesh (h 1.2 or 1 mm) nor an earlier
+// remesh (quality 0.2) brings it reliably under 3 %. Bounded at 3.5 %.
 TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/upsetting_75.yaml", "anvil_hard_upsetting_75"); // 20 s
   check_remeshes_keep_volume_and_strain(run);
-  check_run_volume(run, false);
+  check_run_volume(run);
   check_max_strain(run);
-  check_load_jump(run, true);
-  check_load_trend(run, "top", false);
+  check_load_jump(run, 0.035);
+  check_load_trend(run, "top", 0.03);
 }
 
-// Known shortfall, reported but not failing: the load jump. At equal
+// Short of 3 %, bounded at the measured worst: the load jump (8.28 % in a
+// single-threaded-BLAS run, 5.0 % in an earlier suite run) and the trend
+// just after a remesh (6.0 %, 4.3 % before). At equal
 // geometry the press load moves by -4.8, -5.0, -3.0 and -3.8 % across 4 of
 // 20 remeshes in a suite run, at most 2.9 % across the others; -4.0 % at
 // most (3 of 15 above 3 %) in a run alone. Since each remesh keeps the
@@ -143,8 +139,8 @@ TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshe
           "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash"); // 10 min
   check_remeshes_keep_volume_and_strain(run);
-  check_run_volume(run, false);
+  check_run_volume(run);
   check_max_strain(run);
-  check_load_jump(run, true);
-  check_load_trend(run, "upper", true);
+  check_load_jump(run, 0.10);
+  check_load_trend(run, "upper", 0.07);
 }
