@@ -301,8 +301,8 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     const double sense = p.on_slave ? 1.0 : -1.0;
     const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
     const FrictionStress f = friction_stress(
-        law, {sense * tangent_projector * relative_velocity(p, nodal), sigma_n, weaker_side(*increment_.flow_stress, p),
-              weaker_side(*increment_.consistency, p), increment_.regularisation, rho});
+        law, {sense * tangent_projector * relative_velocity(p, nodal), sigma_n, weaker_side(increment_.flow_stress, p),
+              weaker_side(increment_.consistency, p), increment_.regularisation, rho});
     // w = sense P (v_node − Σ N_j v_j): coefficient of node a in w is c_a P.
     const std::array<int, 4> nodes{p.node, p.facet[0], p.facet[1], p.facet[2]};
     const std::array<double, 4> coefficient{sense, -sense * p.shape[0], -sense * p.shape[1], -sense * p.shape[2]};

@@ -85,8 +85,8 @@ void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     const FrictionLaw& law = dies_[c.die].friction;
     if (law.kind != FrictionKind::frictionless) {
       const FrictionStress f = friction_stress(
-          law, {tangent_projector * relative, sigma_n, (*increment_.flow_stress)[c.node],
-                (*increment_.consistency)[c.node], increment_.regularisation, rho});
+          law, {tangent_projector * relative, sigma_n, increment_.flow_stress[c.node],
+                increment_.consistency[c.node], increment_.regularisation, rho});
       r += c.area * f.stress;
       k += c.area * (f.d_sliding * tangent_projector - rho * f.d_normal_pressure * n.transpose());
     }

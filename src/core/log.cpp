@@ -6,6 +6,22 @@ namespace anvil::log {
 namespace {
 std::FILE* mirror = nullptr;
 bool quiet_terminal = false;
+bool verbose_terminal = false;
+
+void write(bool to_terminal, const char* format, va_list args) {
+  char line[2048];
+  std::vsnprintf(line, sizeof line, format, args);
+  if (to_terminal && !quiet_terminal) {
+    std::fputs(line, stdout);
+    std::fputc('\n', stdout);
+    std::fflush(stdout);
+  }
+  if (mirror) {
+    std::fputs(line, mirror);
+    std::fputc('\n', mirror);
+  }
+}
+
 } // namespace
 
 void open_file(const std::string& path, bool append) {
@@ -20,21 +36,20 @@ void close_file() {
 
 void set_quiet(bool quiet) { quiet_terminal = quiet; }
 
+void set_verbose(bool verbose) { verbose_terminal = verbose; }
+
 void info(const char* format, ...) {
-  char line[2048];
   va_list args;
   va_start(args, format);
-  std::vsnprintf(line, sizeof line, format, args);
+  write(true, format, args);
   va_end(args);
-  if (!quiet_terminal) {
-    std::fputs(line, stdout);
-    std::fputc('\n', stdout);
-    std::fflush(stdout);
-  }
-  if (mirror) {
-    std::fputs(line, mirror);
-    std::fputc('\n', mirror);
-  }
+}
+
+void detail(const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  write(verbose_terminal, format, args);
+  va_end(args);
 }
 
 } // namespace anvil::log

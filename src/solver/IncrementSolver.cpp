@@ -144,7 +144,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     if (settings.verbose)
       for (const auto& stand_in : stand_ins)
         if (stand_in)
-          log::info("    predictor: Newtonian solve at viscosity %.4g MPa.s (rate %.3g 1/s)", stand_in->consistency(),
+          log::detail("    predictor: Newtonian solve at viscosity %.4g MPa.s (rate %.3g 1/s)", stand_in->consistency(),
                     reference_rate);
   }
 
@@ -254,7 +254,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       note += "  (" + std::to_string(linear_solver_.iterations()) + " " + to_string(linear_solver_.kind()) +
               " iterations, tolerance " + format_tolerance(forcing) + ")";
     if (settings.verbose)
-      log::info("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g%s", it,
+      log::detail("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g%s", it,
                 record.force_residual, record.flux_residual, record.increment, record.step, note.c_str());
     if (!std::isfinite(record.force_residual + record.flux_residual + record.increment)) {
       report.failure = "the residual is not finite";
@@ -274,7 +274,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
         // problem; go on from it with the new set.
         merit = evaluate(problem, unknowns);
         scale = force_scale(problem);
-        if (settings.verbose) log::info("    active set changed at convergence: Newton goes on");
+        if (settings.verbose) log::detail("    active set changed at convergence: Newton goes on");
         continue;
       }
       report.converged = true;

@@ -14,8 +14,8 @@ struct ContactIncrement {
   double regularisation;  ///< friction w₀ (mm/s)
   double gap_tolerance;   ///< mm/s: the active set changes at convergence only beyond ±this
   double recovery_time;   ///< s: a penetration present at the start is removed over at least this (the nominal Δt)
-  const std::vector<double>* flow_stress = nullptr; ///< σ₀ per node (MPa), for Tresca
-  const std::vector<double>* consistency = nullptr; ///< K per node, for Norton friction
+  std::vector<double> flow_stress{}; ///< σ₀ per node (MPa), for Tresca (contact_scales)
+  std::vector<double> consistency{}; ///< K per node, for Norton friction
 
   /// The time t over which a gap δ₀ (mm) is closed in the condition
   /// δ₀ + t (v − v_die)·n ≥ 0 (paper eq. 4, linearised): Δt for an open gap,

@@ -11,7 +11,13 @@ void open_file(const std::string& path, bool append = false);
 void close_file();
 /// Silence the terminal (tests); the file mirror, if open, still receives lines.
 void set_quiet(bool quiet);
+/// Show detail lines on the terminal too (`anvil run --verbose`).
+void set_verbose(bool verbose);
 
+/// A line for the terminal and the file.
 void info(const char* format, ...) __attribute__((format(printf, 1, 2)));
+/// A line for the file, and for the terminal only when verbose (Newton
+/// iterations, per-increment mesh quality).
+void detail(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
 } // namespace anvil::log

@@ -11,18 +11,18 @@ namespace anvil::mesh {
 
 class QualityGuard {
 public:
-  /// Keeps a reference: `mesh` must outlive the guard and keep its elements.
-  explicit QualityGuard(TetMesh& mesh);
+  /// The elements around each node of `mesh`: the guard serves any mesh with
+  /// these elements (the same mesh, or a copy whose nodes moved).
+  explicit QualityGuard(const TetMesh& mesh);
 
-  /// Smallest quality (mesh::quality) among the elements around `node`.
-  double worst_around(int node) const;
+  /// Smallest quality (mesh::quality) among the elements around `node` of `mesh`.
+  double worst_around(const TetMesh& mesh, int node) const;
 
-  /// Moves `node` to `to` unless an element around it would end worse than
-  /// `floor` or than it is now, whichever is lower. Returns whether it moved.
-  bool move(int node, const Point& to, double floor);
+  /// Moves `node` of `mesh` to `to` unless an element around it would end
+  /// worse than `floor` or than it is now, whichever is lower. Returns whether it moved.
+  bool move(TetMesh& mesh, int node, const Point& to, double floor) const;
 
 private:
-  TetMesh& mesh_;
   std::vector<std::vector<int>> tets_of_; ///< the elements around each node
 };
 

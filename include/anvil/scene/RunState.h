@@ -1,6 +1,7 @@
 // Everything the time loop carries from one increment to the next, and
 // nothing else: what an HDF5 checkpoint stores, so that a resumed run
-// continues exactly (bit for bit) as the uninterrupted one would.
+// continues exactly (bit for bit) as the uninterrupted one would, and one
+// measure of the geometry the checkpoint does not need to store.
 #pragma once
 #include "anvil/fem/Assembler.h"
 #include "anvil/io/VtkSeries.h"
@@ -42,7 +43,7 @@ struct VolumeBudget {
   double largest_increment = 0.0; ///< largest |relative change| in one increment
 };
 
-/// One remesh of one body (issue 5 point 4): what it changed.
+/// One remesh of one body: what it changed.
 struct RemeshRecord {
   int increment;         ///< after this increment
   int body;              ///< index into the case's bodies
@@ -57,8 +58,8 @@ struct RemeshRecord {
   /// NaN when not checked or a solve failed).
   double load_old_mesh = std::numeric_limits<double>::quiet_NaN();
   double load_new_mesh = std::numeric_limits<double>::quiet_NaN();
-  /// The jump the remesh puts in the load-stroke curve, relative (issue 5
-  /// bounds it by 3 %); NaN when not measured.
+  /// The jump the remesh puts in the load-stroke curve, relative; NaN when
+  /// not measured.
   double load_jump() const { return load_new_mesh / load_old_mesh - 1.0; }
   /// Relative change of the body's material (its mesh less the part inside
   /// the dies) by the remesh, put-back and give-back included; NaN from a
@@ -84,6 +85,9 @@ struct RunState {
   std::vector<std::array<int, 2>> iterations;
   std::vector<RemeshRecord> remeshes;
   std::vector<io::VtkSeries::Entry> outputs;
+  /// mm³ per body of its mesh inside the dies (die::overlap_volume), measured
+  /// whenever the mesh or the dies move; not stored: measured again on resume.
+  std::vector<double> inside_dies;
 };
 
 /// Writes `state` to `path` through a temporary file and a rename, so a

@@ -15,13 +15,13 @@ TEST_CASE("A guarded move keeps the elements around the node", "[unit][mesh]") {
     if ((box.nodes[i] - mesh::Point(1, 1, 1)).norm() < 1e-12) centre = i;
   REQUIRE(centre >= 0);
   mesh::QualityGuard guard(box);
-  const double before = guard.worst_around(centre);
+  const double before = guard.worst_around(box, centre);
   // Nearly onto a corner of its cells: elements around it go flat.
-  CHECK_FALSE(guard.move(centre, {0.05, 0.05, 0.05}, 0.1));
+  CHECK_FALSE(guard.move(box, centre, {0.05, 0.05, 0.05}, 0.1));
   CHECK(box.nodes[centre] == mesh::Point(1, 1, 1));
-  CHECK(guard.worst_around(centre) == before);
+  CHECK(guard.worst_around(box, centre) == before);
   // A small shift keeps every element above the floor.
-  CHECK(guard.move(centre, {1.05, 1.0, 1.0}, 0.1));
+  CHECK(guard.move(box, centre, {1.05, 1.0, 1.0}, 0.1));
   CHECK(box.nodes[centre] == mesh::Point(1.05, 1.0, 1.0));
-  CHECK(guard.worst_around(centre) >= 0.1);
+  CHECK(guard.worst_around(box, centre) >= 0.1);
 }

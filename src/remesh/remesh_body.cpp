@@ -174,7 +174,7 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   const std::vector<char> on_boundary = mesh::boundary_node_flags(out);
   mesh::QualityGuard guard(out);
   for (std::size_t n = 0; n < out.nodes.size(); ++n)
-    if (on_boundary[n]) guard.move(int(n), old_surface.closest(out.nodes[n]).point, settings.quality_floor);
+    if (on_boundary[n]) guard.move(out, int(n), old_surface.closest(out.nodes[n]).point, settings.quality_floor);
   // A node on the border of a flat patch may land on the curved face next
   // to it (off a symmetry plane by 0.4 µm in the flash case, enough to make
   // the plane's faces no longer coplanar): flat patches keep their nodes.

@@ -1,0 +1,43 @@
+// Remeshing in the time loop: when a body needs a new mesh (remesh_due),
+// and making it (remesh_bodies): CGAL's mesh of the deformed body, the
+// fields transferred onto it, its boundary put onto the dies and its
+// material given back (fit_to_dies), each remesh recorded in the run state.
+#pragma once
+#include "anvil/core/Timers.h"
+#include "anvil/scene/RunState.h"
+#include "anvil/scene/Scene.h"
+#include "anvil/scene/TimeStepControl.h"
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace anvil::remesh {
+
+/// A body due for a remesh, and why (for the log).
+struct RemeshDue {
+  int body;
+  std::string why;
+};
+
+/// The bodies of `state` to remesh after an increment of `dt` (s), by the
+/// case's triggers: worst quality below remeshing.quality, an element that
+/// would invert in a next increment alike, every N increments, a die vertex
+/// deeper than die_penetration × the element size inside the body. Elastic
+/// bodies keep their mesh. Logs each body's quality.
+std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt);
+
+/// Remeshes the bodies of `due` in `state`: a new mesh, the nodal (v, p)
+/// interpolated (the next Newton guess), ε̄ remapped conservatively, the
+/// boundary fitted to the dies, a RemeshRecord per body, the volume budget
+/// and inside_dies updated. `touching_die` (per node of state.mesh: the die
+/// it presses on, or −1) and `rate` (ε̄̇ per element of state.mesh) are those
+/// of the increment just accepted. The run must then be discretised again.
+/// With remeshing.check_load, the press load of the increment `next` solved
+/// on the old mesh and on the new one goes into the records (a measurement,
+/// on copies: the run goes on as without it).
+void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
+            std::span<const int> touching_die, std::span<const double> rate, const scene::TimeStep& next,
+            Timers& timers);
+
+} // namespace anvil::remesh

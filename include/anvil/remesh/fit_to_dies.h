@@ -1,0 +1,42 @@
+// A new body mesh made to sit on the dies as the old one did: its boundary
+// nodes put onto the dies, and the material that costs given back on its
+// free surface. Both keep the next increment from having to correct the
+// remesh at once (a jump of the active set, of the volume, of the load).
+#pragma once
+#include "anvil/mesh/TetMesh.h"
+#include "anvil/scene/RunState.h"
+#include "anvil/scene/Scene.h"
+
+#include <span>
+#include <vector>
+
+namespace anvil::remesh {
+
+/// What put_onto_dies did.
+struct PutBack {
+  int nodes = 0;        ///< boundary nodes put onto a die from inside it
+  double deepest = 0.0; ///< the deepest of them was (mm)
+  int closed = 0;       ///< boundary nodes put onto a die across a gap, where the old surface touched it
+  double widest = 0.0;  ///< the widest such gap (mm)
+};
+
+/// Puts boundary nodes of `fresh`, the new mesh of body `body`, onto the dies
+/// at `dies_now`: those inside a die (by less than `element_size`, mm), and
+/// those within a quarter element of a die where the old mesh `old` touched
+/// it (`touching_die`, per node of `old`: the die it presses on, or −1).
+/// Nodes on a symmetry plane of the body stay on it. A move that would leave
+/// an element around the node worse than `quality_floor` (or than it was) is
+/// not made: the next increment's contact takes that node.
+PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<const int> touching_die,
+                      const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
+                      double element_size, double quality_floor);
+
+/// Gives `fresh`, the new mesh of body `body`, the material `material` (mm³:
+/// its volume less its overlap with the dies at `dies_now`) by moving its
+/// free surface (boundary nodes off the symmetry planes and more than a
+/// tenth of `element_size` off the dies) along its normal. Returns the
+/// distance moved (mm; 0 when the scene has no dies).
+double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
+                     double material, double element_size);
+
+} // namespace anvil::remesh

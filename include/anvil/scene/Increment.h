@@ -1,0 +1,57 @@
+// One increment of the time loop (DESIGN §4): solve it on the current
+// geometry, then accept it. Solving leaves the run state untouched, and
+// accepting is all-or-nothing, so a failed try is simply dropped.
+#pragma once
+#include "anvil/core/Timers.h"
+#include "anvil/fem/element_fields.h"
+#include "anvil/scene/Discretisation.h"
+#include "anvil/scene/RunState.h"
+#include "anvil/scene/Scene.h"
+#include "anvil/scene/TimeStepControl.h"
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace anvil::scene {
+
+/// An increment solved and not yet accepted.
+struct IncrementOutcome {
+  double time_step = 0.0;     ///< s, as solved (a contact event may end it before the step tried)
+  fem::BodyUnknowns unknowns; ///< the solution
+  solver::NewtonReport report;
+  std::vector<Eigen::Vector3d> forces; ///< N, on each load surface (Scene::surfaces) at the solution
+  double compensation = 0.0;  ///< mm³ the volume compensation asked the flow to restore
+  /// ε̄̇ and σ per element on the geometry solved on (converged only): what
+  /// ε̄ and elastic bodies integrate, and what the remeshing size field reads.
+  fem::ElementFields fields;
+  std::string failure;        ///< why it cannot be accepted; empty when it can
+
+  bool converged() const { return report.converged; }
+};
+
+/// What a free node that reaches a die within the step does.
+enum class ContactEvents {
+  end_increment, ///< the increment is solved again up to that moment (TimeStepControl::ends_at_contact)
+  ignore         ///< the step is kept (a measurement at a given Δt)
+};
+
+/// Solves the increment `step` from `state` (its unknowns are the Newton
+/// guess): contact search, contact scales, volume compensation, Newton on
+/// (v, p). Uses `disc`'s contact terms and solver; `state` is not changed.
+IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
+                                 Timers& timers, ContactEvents events = ContactEvents::end_increment);
+
+/// Accepts a converged increment into `state`: x ← x + Δt v, the dies
+/// moved, contact nodes projected onto them, the loads recorded, ε̄ and the
+/// stress of elastic bodies updated, a load-limited press slowed down.
+/// Returns false, with `inc.failure` set and `state` untouched, when an
+/// element would invert.
+bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome& inc, RunState& state,
+                      Timers& timers);
+
+/// Accepts the solution of a case without a time loop: increment 1 at t = 0,
+/// the geometry as it is.
+void accept_without_motion(const Scene& scene, const IncrementOutcome& inc, RunState& state);
+
+} // namespace anvil::scene

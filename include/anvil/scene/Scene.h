@@ -1,0 +1,94 @@
+// The scene a case describes, built once at the start of a run (and again,
+// identically, on --resume): the bodies with their laws and conditions, the
+// dies, the load surfaces of loads.csv, the effects and the process scales.
+// The time loop reads it and never changes it.
+#pragma once
+#include "anvil/core/Timers.h"
+#include "anvil/material/Material.h"
+#include "anvil/mesh/TetMesh.h"
+#include "anvil/scene/BoundaryCondition.h"
+#include "anvil/scene/Case.h"
+#include "anvil/scene/Die.h"
+#include "anvil/scene/RunState.h"
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace anvil::scene {
+
+/// A deformable body of the scene.
+struct Body {
+  std::string name;
+  std::string material_file;
+  std::unique_ptr<material::Material> law;
+  /// An elastic body solved with flowing ones or over time: its law in
+  /// velocity form (null otherwise). Its Δt is that of the increment being
+  /// solved: solve_increment sets it before each solve.
+  std::unique_ptr<material::IncrementalElastic> increment_law;
+  material::PointState state; ///< the body's temperature (isothermal)
+  std::vector<BoundaryCondition> conditions; ///< the case's conditions on this body
+  /// What they impose on the mesh as the case builds it (faces chosen on the
+  /// initial geometry: a plane condition on a moving face is found there once).
+  ImposedConditions initial_imposed;
+  double initial_volume = 0.0; ///< mm³, of the mesh as built
+  double remesh_size = 0.0;    ///< mm, target edge of a remesh: the case's, else the mean boundary edge as built
+
+  /// The law its elements are solved with.
+  const material::Material& element_law() const {
+    return increment_law ? static_cast<const material::Material&>(*increment_law) : *law;
+  }
+};
+
+/// A load surface of loads.csv: a die, or a velocity condition (a plate).
+struct LoadSurface {
+  std::string name;
+  int die = -1;       ///< index into Scene::dies, or −1
+  int condition = -1; ///< index into Scene::conditions, or −1
+};
+
+struct Scene {
+  /// Builds the scene of `c`. Throws InputError (a material card, a mesh, an
+  /// STL die, a boundary condition that selects nothing, nothing moving).
+  Scene(const Case& c, Timers& timers);
+
+  const Case& input; ///< the checked case file, as read
+  std::vector<Body> bodies;
+  std::vector<BoundaryCondition> conditions; ///< every body's, in body order
+  std::vector<Die> dies;
+  std::vector<LoadSurface> surfaces; ///< the dies, then the velocity conditions
+  std::vector<std::string> effects;  ///< resolve_effects
+  mesh::TetMesh initial_mesh; ///< the bodies as built: one mesh of disjoint parts
+  std::vector<mesh::MeshRange> initial_ranges; ///< each body in initial_mesh
+  /// Every body elastic and no time loop: the unknown is the displacement
+  /// (mm); otherwise it is the velocity (mm/s) and elastic bodies carry σ.
+  bool solve_displacement = false;
+  bool carries_stress = false;      ///< some body is elastic in velocity form
+  bool compensate_volume = false;   ///< the volume_compensation effect
+  double body_size = 0.0;           ///< mm, diagonal of the initial bounding box
+  double reference_length = 0.0;    ///< mm, mean boundary edge of the initial mesh
+  double reference_velocity = 0.0;  ///< mm/s, fastest die or imposed velocity at t = 0
+  int upper_die = 0;                ///< with a final gap: the die above
+  double die_gap0 = 0.0;            ///< mm, gap between the two dies at zero displacement
+
+  bool has_contact() const { return !dies.empty() || !input.contact_pairs.empty(); }
+  /// ε̇ of the process (1/s): v_ref over the scene size.
+  double reference_rate() const { return reference_velocity / body_size; }
+  /// Distance between the two dies along z (mm), for the gap stop criterion.
+  double die_gap(std::span<const DieState> dies_now) const;
+};
+
+/// The state of a run that starts: the bodies as built, at rest, t = 0.
+RunState initial_state(const Scene& scene);
+
+/// Throws InputError when a checkpoint's state does not belong to the scene.
+void check_resumable(const Scene& scene, const RunState& state);
+
+/// mm³ of body `body`, as `range` of `mesh` holds it, inside the dies at `dies_now`.
+double inside_dies(const Scene& scene, const mesh::TetMesh& mesh, const mesh::MeshRange& range, int body,
+                   std::span<const DieState> dies_now);
+/// The same for every body of `state` (RunState::inside_dies).
+std::vector<double> inside_dies(const Scene& scene, const RunState& state);
+
+} // namespace anvil::scene

@@ -1,0 +1,51 @@
+// Δt of each increment, its cuts after a failure, and when the run stops
+// (DESIGN §4). The time loop asks it; it never solves anything.
+#pragma once
+#include "anvil/scene/RunState.h"
+#include "anvil/scene/Scene.h"
+
+#include <optional>
+#include <string>
+
+namespace anvil::scene {
+
+/// The lengths of one increment (s).
+struct TimeStep {
+  /// The stroke increment at the current press speed: contact recovery and
+  /// volume compensation act over at least this, whatever Δt is.
+  double nominal = 0.0;
+  double planned = 0.0; ///< Δt chosen for the increment, before contact events and cuts
+  double length = 0.0;  ///< Δt tried
+};
+
+class TimeStepControl {
+public:
+  /// Reads the scene's time section; `scene` must outlive the control.
+  explicit TimeStepControl(const Scene& scene);
+
+  /// The next increment from `state`: the nominal step, shortened so that no
+  /// node moves more than max_displacement × its local element size (at the
+  /// velocity of the last increment), and so that a stop criterion is met
+  /// exactly, without a sliver of an increment before it.
+  TimeStep next_step(const RunState& state) const;
+  /// Δt after a failed try of `length`, or nothing when `cuts_done` halvings
+  /// were made already (time.max_cuts).
+  std::optional<double> cut(double length, int cuts_done) const;
+  /// Whether a free node reaching a die at time `touch` (s) into `step` ends
+  /// the increment there: not when it leaves a sliver of the step, below
+  /// min_step_fraction of the planned Δt, before or after it.
+  bool ends_at_contact(const TimeStep& step, double touch) const;
+  /// Why the run stops at `state`, empty while it goes on.
+  std::string stop_reason(const RunState& state) const;
+  /// Fraction of the run done at `state` (the stop criterion nearest to being met).
+  double progress(const RunState& state) const;
+
+private:
+  /// Speed of the fastest moving part at the current press time (mm/s).
+  double press_speed(const RunState& state) const;
+
+  const Scene& scene_;
+  const TimeSpec& time_;
+};
+
+} // namespace anvil::scene

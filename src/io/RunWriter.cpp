@@ -1,0 +1,267 @@
+#include "anvil/io/RunWriter.h"
+
+#include "anvil/core/error.h"
+#include "anvil/core/log.h"
+#include "anvil/fem/element_fields.h"
+#include "anvil/io/JsonWriter.h"
+#include "anvil/io/atomic_file.h"
+#include "anvil/material/mandel.h"
+#include "anvil/mesh/tet_geometry.h"
+
+#include <cmath>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+
+namespace anvil::io {
+namespace {
+
+void put_load_rows(std::ostream& out, const scene::Scene& scene, const std::vector<scene::LoadRecord>& loads,
+                   std::size_t first) {
+  out.precision(10);
+  for (std::size_t i = first; i < loads.size(); ++i) {
+    const scene::LoadRecord& r = loads[i];
+    out << r.increment << "," << r.time << "," << scene.surfaces[r.surface].name << "," << r.stroke << ","
+        << r.force.x() << "," << r.force.y() << "," << r.force.z() << "\n";
+  }
+}
+
+} // namespace
+
+RunWriter::RunWriter(std::string directory, const scene::RunState& state, bool resume)
+    : directory_(std::move(directory)), series_(directory_, "anvil") {
+  if (!resume) return;
+  series_.resume(state.outputs, state.time);
+  last_vtk_ = last_checkpoint_ = state.increment;
+}
+
+bool RunWriter::write(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state, bool force,
+                      Timers& timers) {
+  {
+    Timers::Scope scope(timers, "output");
+    write_loads(scene, state);
+    const bool vtk_due = scene.input.write_vtk && (force || state.increment % scene.input.vtk_every == 0);
+    if (vtk_due && last_vtk_ != state.increment) {
+      write_vtk(scene, disc, state);
+      if (disc.pair_contact) write_interface(scene, disc, state);
+      state.outputs = series_.entries();
+      last_vtk_ = state.increment;
+    }
+  }
+  const int every = scene.input.checkpoint_every;
+  const bool checkpoint_due = scene.input.time.enabled && every > 0 && (force || state.increment % every == 0);
+  if (!checkpoint_due || last_checkpoint_ == state.increment) return false;
+  Timers::Scope scope(timers, "checkpoint");
+  scene::write_checkpoint(directory_ + "/checkpoint.h5", state);
+  last_checkpoint_ = state.increment;
+  return true;
+}
+
+void RunWriter::write_loads(const scene::Scene& scene, const scene::RunState& state) {
+  const std::string path = directory_ + "/loads.csv";
+  if (!loads_started_) {
+    std::ostringstream whole;
+    whole << "increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N\n";
+    put_load_rows(whole, scene, state.loads, 0);
+    write_file_atomically(path, whole.str());
+    loads_started_ = true;
+  } else if (loads_written_ < state.loads.size()) {
+    std::ofstream out(path, std::ios::app);
+    put_load_rows(out, scene, state.loads, loads_written_);
+    out.flush();
+    if (!out) throw RunError("cannot append to " + path);
+  }
+  loads_written_ = state.loads.size();
+}
+
+void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state) {
+  const mesh::TetMesh& mesh = state.mesh;
+  const bool elastic = scene.solve_displacement;
+  const fem::ElementFields fields = fem::element_fields(mesh, disc.element_laws, disc.point_states, state.unknowns);
+  Field velocity{elastic ? "displacement" : "velocity", 3, {}}, pressure{"pressure", 1, {}};
+  Field contact_status{"contact_status", 1, std::vector<double>(mesh.nodes.size(), 0.0)};
+  Field contact_pressure{"contact_pressure", 1, std::vector<double>(mesh.nodes.size(), 0.0)};
+  Field gap{"gap", 1, std::vector<double>(mesh.nodes.size(), -1.0)};
+  for (int i = 0; i < mesh.node_count(); ++i) {
+    for (int k = 0; k < 3; ++k) velocity.values.push_back(state.unknowns.nodal[4 * i + k]);
+    pressure.values.push_back(state.unknowns.nodal[4 * i + 3]);
+  }
+  if (disc.pair_contact) {
+    // Body pairs: the same fields at the nodes projected onto the other body.
+    const auto& points = disc.pair_contact->points();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const int node = points[i].node;
+      const double p = disc.pair_contact->pressure(int(i), state.unknowns.nodal);
+      contact_status.values[node] = std::max(contact_status.values[node], p > 0.0 ? 2.0 : 1.0);
+      contact_pressure.values[node] = std::max(contact_pressure.values[node], p);
+      gap.values[node] = std::max(points[i].gap, 0.0);
+    }
+  }
+  if (!scene.dies.empty()) {
+    // Status: 0 far from dies, 1 candidate (near a die), 2 in contact. Gap at
+    // the start of the increment (mm), −1 where no die is near.
+    const auto& candidates = disc.die_contact.candidates();
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      const int node = candidates[i].node;
+      const double p = disc.die_contact.pressure(int(i), state.unknowns.nodal);
+      contact_status.values[node] = p > 0.0 ? 2.0 : 1.0;
+      contact_pressure.values[node] = p;
+      gap.values[node] = std::max(candidates[i].gap, 0.0);
+    }
+  }
+  Field stress{"stress", 6, {}}, rate{elastic ? "equivalent_strain" : "equivalent_strain_rate", 1, {}},
+      strain{"equivalent_strain", 1, {}}, body_id{"body_id", 1, {}}, quality{"element_quality", 1, {}};
+  for (int e = 0; e < mesh.tet_count(); ++e) {
+    const material::Vec6 s = material::to_components(fields.stress[e]);
+    stress.values.insert(stress.values.end(), s.data(), s.data() + 6);
+    rate.values.push_back(fields.rate[e]);
+    strain.values.push_back(state.equivalent_strain[e]);
+    body_id.values.push_back(0.0);
+    quality.values.push_back(mesh::quality(mesh, e));
+  }
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    std::fill_n(body_id.values.begin() + state.bodies[b].first_tet, state.bodies[b].tet_count, double(b));
+  std::vector<Field> cell_fields{stress, rate, body_id, quality};
+  if (!elastic && scene.input.time.enabled) cell_fields.push_back(strain);
+  // Von Mises stress: what a die designer reads off a deformable die.
+  Field von_mises{"von_mises_stress", 1, {}};
+  for (const material::Vec6& sigma : fields.stress) von_mises.values.push_back(material::von_mises(sigma));
+  cell_fields.push_back(von_mises);
+  std::vector<Field> point_fields{velocity, pressure};
+  if (scene.has_contact()) point_fields.insert(point_fields.end(), {contact_status, contact_pressure, gap});
+  std::string names = scene.bodies.front().name;
+  for (std::size_t b = 1; b < scene.bodies.size(); ++b) names += "+" + scene.bodies[b].name;
+  series_.write(state.increment, state.time, 0, names, mesh, point_fields, cell_fields);
+  for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+    const die::SurfaceTriangles& t = scene.dies[d].surface->triangles();
+    std::vector<mesh::Point> moved = t.vertices;
+    for (auto& p : moved) p += state.dies[d].displacement;
+    series_.write_surface(state.increment, state.time, int(d) + 1, scene.dies[d].name, moved, t.faces);
+  }
+}
+
+void RunWriter::write_interface(const scene::Scene& scene, const scene::Discretisation& disc,
+                                const scene::RunState& state) const {
+  // Per interface node of either body, whatever the formulation: its
+  // tributary area, its signed distance to the other body (< 0 penetrating)
+  // and the rate at which it opens (< 0 closing), the normal stress it
+  // transmits (its nodal contact force over its tributary area, N/mm² = MPa)
+  // and its velocity. The nodes are found by projecting both sides (a
+  // symmetric search, for output only: master/slave itself never looks at
+  // master nodes, and that is where its errors show). The reach is the
+  // solver's own floor (0.05 of an edge): a node pressed deeper than a hair
+  // into a soft body is still on the interface.
+  const Eigen::VectorXd& nodal = state.unknowns.nodal;
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(nodal.size());
+  disc.pair_contact->add(nodal, force, nullptr); // residual = minus the force on the body
+  std::vector<contact::BodyPair> both_sides = disc.pair_contact->pairs();
+  for (contact::BodyPair& pair : both_sides) pair.formulation = contact::PairFormulation::symmetric;
+  contact::BodyContact probe(both_sides);
+  probe.search(state.mesh, 0.05 * scene.reference_length);
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "pair,body,node,x_mm,y_mm,z_mm,area_mm2,gap_mm,gap_rate_mm_s,normal_stress_MPa,vx,vy,vz\n";
+  for (const contact::ContactPoint& p : probe.points()) {
+    const scene::ContactPairSpec& pair = scene.input.contact_pairs[p.pair];
+    const int body = p.on_slave ? pair.slave : pair.master;
+    // The contact force pushes the node away from the facet it projects onto: along +n.
+    const double stress = -force.segment<3>(4 * p.node).dot(p.normal) / p.area;
+    const mesh::Point& x = state.mesh.nodes[p.node];
+    csv << probe.pairs()[p.pair].name << "," << scene.bodies[body].name << ","
+        << p.node - state.bodies[body].first_node + 1 << "," << x.x() << "," << x.y() << "," << x.z() << "," << p.area
+        << "," << p.gap << "," << contact::relative_velocity(p, nodal).dot(p.normal) << "," << stress << ","
+        << nodal[4 * p.node] << "," << nodal[4 * p.node + 1] << "," << nodal[4 * p.node + 2] << "\n";
+  }
+  write_file_atomically(directory_ + "/interface.csv", csv.str());
+}
+
+void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state,
+                              const solver::NewtonReport& last, const Timers& timers, double total) const {
+  const double volume_end = mesh::volume(state.mesh);
+  const double inside_dies = std::accumulate(state.inside_dies.begin(), state.inside_dies.end(), 0.0);
+  const double initial = state.volume.initial;
+  JsonWriter json;
+  json.begin_object()
+      .member("case", scene.input.path)
+      .member("title", scene.input.title)
+      .member("anvil_version", ANVIL_VERSION)
+      .key("bodies")
+      .begin_array();
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    json.begin_object()
+        .member("name", scene.bodies[b].name)
+        .member("nodes", state.bodies[b].node_count)
+        .member("elements", state.bodies[b].tet_count)
+        .member("volume_mm3", mesh::volume(state.mesh, state.bodies[b]))
+        .end_object();
+  json.end_array();
+  std::vector<int> newton, krylov;
+  for (const auto& i : state.iterations) newton.push_back(i[0]), krylov.push_back(i[1]);
+  json.member("unknowns", disc.solver->free_count())
+      .member("increments", state.increment)
+      .member("time_s", state.time)
+      .member("newton_iterations", state.newton_iterations)
+      .member("linear_solver", solver::to_string(disc.solver->linear_solver().kind()))
+      .member("krylov_iterations", std::accumulate(krylov.begin(), krylov.end(), 0L))
+      .key("iterations_per_increment")
+      .begin_object()
+      .array("newton", newton)
+      .array("krylov", krylov)
+      .end_object();
+  if (!last.iterations.empty())
+    json.key("final_residual")
+        .begin_object()
+        .member("force", last.iterations.back().force_residual)
+        .member("div", last.iterations.back().flux_residual)
+        .end_object();
+  json.key("volume_mm3")
+      .begin_object()
+      .member("start", initial)
+      .member("end", volume_end)
+      .member("change_solver", state.volume.solver)
+      .member("of_which_compensation", state.volume.compensation)
+      .member("change_contact_projection", state.volume.projection)
+      .member("change_remeshing", state.volume.remeshing)
+      .member("largest_relative_change_per_increment", state.volume.largest_increment)
+      .member("relative_change", initial > 0 ? volume_end / initial - 1.0 : 0.0)
+      .member("inside_dies_end", inside_dies)
+      .member("material_relative_change", initial > 0 ? (volume_end - inside_dies) / initial - 1.0 : 0.0)
+      .end_object();
+  if (scene.input.remeshing.enabled) {
+    double seconds = 0.0;
+    for (const scene::RemeshRecord& r : state.remeshes) seconds += r.seconds;
+    json.key("remeshing").begin_object().member("count", static_cast<long>(state.remeshes.size())).member("seconds", seconds);
+    json.key("remeshes").begin_array();
+    for (const scene::RemeshRecord& r : state.remeshes) {
+      json.begin_object()
+          .member("increment", r.increment)
+          .member("body", scene.bodies[r.body].name)
+          .member("nodes_before", r.nodes_before)
+          .member("nodes_after", r.nodes_after)
+          .member("worst_quality_before", r.worst_quality_before)
+          .member("worst_quality_after", r.worst_quality_after)
+          .member("volume_change", r.volume_change)
+          .member("strain_integral_change", r.strain_integral_change)
+          .member("strain_max_change", r.strain_max_change)
+          .member("seconds", r.seconds);
+      if (!std::isnan(r.material_change)) json.member("material_change", r.material_change);
+      if (!std::isnan(r.load_old_mesh) && !std::isnan(r.load_new_mesh))
+        json.member("load_old_mesh_N", r.load_old_mesh)
+            .member("load_new_mesh_N", r.load_new_mesh)
+            .member("load_jump", r.load_jump());
+      json.end_object();
+    }
+    json.end_array().end_object();
+  }
+  json.key("dies").begin_array();
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    json.begin_object().member("name", scene.dies[d].name).member("stroke_mm", state.dies[d].stroke).end_object();
+  json.end_array().key("effects").begin_array();
+  for (const std::string& effect : scene.effects) json.value(effect);
+  json.end_array().key("wall_time_s").begin_object();
+  for (const auto& [phase, seconds] : timers.all()) json.member(phase, seconds);
+  json.member("total", total).end_object().end_object();
+  write_file_atomically(directory_ + "/summary.json", json.str());
+}
+
+} // namespace anvil::io

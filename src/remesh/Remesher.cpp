@@ -1,0 +1,245 @@
+#include "anvil/remesh/Remesher.h"
+
+#include "anvil/core/log.h"
+#include "anvil/mesh/TetMesh.h"
+#include "anvil/remesh/die_feature_depth.h"
+#include "anvil/remesh/field_transfer.h"
+#include "anvil/remesh/fit_to_dies.h"
+#include "anvil/remesh/load_check.h"
+#include "anvil/remesh/quality.h"
+#include "anvil/remesh/remesh_body.h"
+#include "anvil/remesh/size_field.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace anvil::remesh {
+namespace {
+
+/// One body's new mesh, the best of up to three tries.
+struct Remeshed {
+  mesh::TetMesh remeshed;       ///< CGAL's mesh of the old body: the fields are transferred onto it
+  mesh::TetMesh mesh;           ///< the same, fitted to the dies
+  double edge_length = 0.0;     ///< mm
+  double worst = 0.0;           ///< worst quality of `mesh`
+  PutBack put_back;
+  double volume_put_back = 0.0; ///< mm³, of `mesh` after the put-back, before keep_material
+  double given_back = 0.0;      ///< mm, keep_material's move of the free surface
+};
+
+/// Remeshes `part`, body `b` of `state` (`in_old` locates points in it), fitted to the dies.
+Remeshed remesh_part(const scene::Scene& scene, const scene::RunState& state, int b, const mesh::TetMesh& part,
+                     const PointLocator& in_old, std::span<const int> touching_die, std::span<const double> rate,
+                     double material) {
+  const scene::RemeshSpec& spec = scene.input.remeshing;
+  const scene::Body& body = scene.bodies[b];
+  const double smallest = spec.smallest_size > 0.0 ? spec.smallest_size : 0.5 * body.remesh_size;
+  const auto size_field =
+      spec.adaptive ? adaptive_size(part, in_old, rate, scene, state.dies, body.remesh_size, smallest) : nullptr;
+  auto make = [&](double scale) {
+    RemeshSettings settings;
+    settings.edge_length = scale * body.remesh_size;
+    settings.feature_angle = spec.feature_angle;
+    settings.iterations = spec.iterations;
+    settings.quality_floor = spec.quality;
+    if (size_field) {
+      settings.smallest_edge_length = scale * smallest;
+      settings.size = [&size_field, scale](const mesh::Point& x) { return size_field(x, scale); };
+    }
+    Remeshed t;
+    t.remeshed = remesh_body(part, settings);
+    t.mesh = t.remeshed;
+    t.edge_length = settings.edge_length;
+    t.put_back = put_onto_dies(t.mesh, part, touching_die, scene, b, state.dies, settings.edge_length, spec.quality);
+    t.volume_put_back = mesh::volume(t.mesh);
+    t.given_back = keep_material(t.mesh, scene, b, state.dies, material, settings.edge_length);
+    t.worst = worst_quality(t.mesh);
+    return t;
+  };
+  // A result whose worst element is below the trigger would be due again at
+  // once: CGAL can keep elements whose four nodes lie on patch borders. It
+  // is remade with edges 5 % and then 10 % shorter, which changes where
+  // CGAL splits; the best of the tries is kept.
+  Remeshed best = make(1.0);
+  for (double scale : {0.95, 0.9}) {
+    if (best.worst >= spec.quality) break;
+    Remeshed again = make(scale);
+    log::info("    remesh of '%s' gave worst quality %.3f (below %g); with h %.3g mm: %.3f", body.name.c_str(), best.worst,
+              spec.quality, again.edge_length, again.worst);
+    if (again.worst > best.worst) best = std::move(again);
+  }
+  return best;
+}
+
+double relative(double after, double before) { return before != 0.0 ? after / before - 1.0 : after - before; }
+
+void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
+                   std::span<const int> touching_die, std::span<const double> rate, Timers& timers) {
+  Timers::Scope scope(timers, "remeshing");
+  const bool carries_stress = !state.elastic_stress.empty();
+  mesh::TetMesh next;
+  std::vector<mesh::MeshRange> ranges;
+  std::vector<double> nodal, strain, stress;
+  auto append_values = [](std::vector<double>& to, const double* first, std::size_t count) {
+    to.insert(to.end(), first, first + count);
+  };
+  // mm³ per body before the remesh: inside the dies, and the material (the mesh less that).
+  const std::vector<double> inside_before = state.inside_dies;
+  std::vector<double> material_before(scene.bodies.size());
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    material_before[b] = mesh::volume(state.mesh, state.bodies[b]) - inside_before[b];
+  const std::size_t first_record = state.remeshes.size();
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const auto start = std::chrono::steady_clock::now();
+    const mesh::MeshRange& range = state.bodies[b];
+    const mesh::TetMesh part = mesh::extract(state.mesh, range);
+    const double* part_nodal = state.unknowns.nodal.data() + 4 * range.first_node;
+    const std::vector<double> part_strain(state.equivalent_strain.begin() + range.first_tet,
+                                          state.equivalent_strain.begin() + range.first_tet + range.tet_count);
+    const auto why = std::find_if(due.begin(), due.end(), [&](const RemeshDue& d) { return d.body == int(b); });
+    if (why == due.end()) {
+      ranges.push_back(mesh::append(next, part));
+      append_values(nodal, part_nodal, 4 * range.node_count);
+      append_values(strain, part_strain.data(), part_strain.size());
+      if (carries_stress) append_values(stress, &state.elastic_stress[6 * range.first_tet], 6 * range.tet_count);
+      continue;
+    }
+    const PointLocator in_old(part);
+    const Remeshed best = remesh_part(scene, state, int(b), part, in_old,
+                                      touching_die.subspan(range.first_node, range.node_count),
+                                      rate.subspan(range.first_tet, range.tet_count), material_before[b]);
+    const mesh::TetMesh& fresh = best.mesh;
+    const double volume_before = mesh::volume(part), volume_remeshed = mesh::volume(best.remeshed);
+    const double volume_after = mesh::volume(fresh);
+    // Nodal v and p interpolated: the next Newton's first guess. ε̄ by a
+    // conservative remap onto the mesh CGAL made of the old body (the same
+    // domain), its peaks kept; fitting to the dies then moves the elements
+    // with their values, as an increment's update does.
+    const Eigen::VectorXd fresh_nodal = interpolate_nodal(
+        part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count), 4, in_old.locate(fresh.nodes));
+    const std::vector<double> fresh_strain = transfer_element(part, part_strain, in_old, best.remeshed);
+    ranges.push_back(mesh::append(next, fresh));
+    append_values(nodal, fresh_nodal.data(), fresh_nodal.size());
+    append_values(strain, fresh_strain.data(), fresh_strain.size());
+    if (carries_stress) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // a flowing body carries none
+
+    const double strain_remeshed = integral(best.remeshed, fresh_strain); // ∫ε̄ dV before the fit to the dies
+    const scene::RemeshRecord record{state.increment,
+                                     int(b),
+                                     part.node_count(),
+                                     fresh.node_count(),
+                                     worst_quality(part),
+                                     best.worst,
+                                     relative(volume_remeshed, volume_before),
+                                     relative(strain_remeshed, integral(part, part_strain)),
+                                     relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
+                                              *std::max_element(part_strain.begin(), part_strain.end())),
+                                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+    // What the remesh changed (CGAL's mesh, and the material given back),
+    // and apart, what the put-back took off: a contact projection, as after
+    // an increment.
+    state.volume.remeshing += volume_remeshed - volume_before + volume_after - best.volume_put_back;
+    state.volume.projection += best.volume_put_back - volume_remeshed;
+    state.remeshes.push_back(record);
+    log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm; worst quality %.3f -> %.3f; "
+              "volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
+              scene.bodies[b].name.c_str(), why->why.c_str(), record.nodes_before, record.nodes_after, part.tet_count(),
+              fresh.tet_count(), best.edge_length, record.worst_quality_before, record.worst_quality_after,
+              100.0 * record.volume_change, 100.0 * record.strain_integral_change, 100.0 * record.strain_max_change,
+              record.seconds);
+    if (best.put_back.nodes + best.put_back.closed > 0)
+      log::info("    put onto the dies: %d new boundary nodes inside them (deepest %.3g mm), %d off them where the old "
+                "surface touched (widest gap %.3g mm): volume %+.4f%% (contact projection)",
+                best.put_back.nodes, best.put_back.deepest, best.put_back.closed, best.put_back.widest,
+                100.0 * relative(best.volume_put_back, volume_remeshed));
+    if (best.given_back != 0.0)
+      log::info("    material given back: the free surface moved %+.3g mm along its outward normal, volume %+.4f%%",
+                best.given_back, 100.0 * relative(volume_after, best.volume_put_back));
+    if (volume_after != volume_remeshed)
+      log::info("    integral of strain %+.3f%% by these moves (the elements carry their values)",
+                100.0 * relative(integral(fresh, fresh_strain), strain_remeshed));
+  }
+  state.unknowns.nodal = Eigen::Map<const Eigen::VectorXd>(nodal.data(), static_cast<Eigen::Index>(nodal.size()));
+  state.unknowns.bubble = Eigen::VectorXd::Zero(3 * next.tet_count()); // condensed per element: a zero guess
+  state.mesh = std::move(next);
+  state.bodies = std::move(ranges);
+  state.equivalent_strain = std::move(strain);
+  state.elastic_stress = std::move(stress);
+  {
+    Timers::Scope overlap(timers, "die overlap");
+    state.inside_dies = scene::inside_dies(scene, state);
+  }
+  for (std::size_t r = first_record; r < state.remeshes.size(); ++r) {
+    scene::RemeshRecord& record = state.remeshes[r];
+    const int b = record.body;
+    record.material_change = (mesh::volume(state.mesh, state.bodies[b]) - state.inside_dies[b]) / material_before[b] - 1.0;
+    if (!scene.dies.empty())
+      log::info("    '%s' inside the dies: %.3f%% of its initial volume (%.3f%% before the remesh); material %+.4f%%",
+                scene.bodies[b].name.c_str(), 100.0 * state.inside_dies[b] / scene.bodies[b].initial_volume,
+                100.0 * inside_before[b] / scene.bodies[b].initial_volume, 100.0 * record.material_change);
+  }
+}
+
+} // namespace
+
+std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt) {
+  const scene::RemeshSpec& spec = scene.input.remeshing;
+  std::vector<RemeshDue> due;
+  std::vector<std::vector<mesh::Point>> die_vertices; // in place, gathered once when a body needs them
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const scene::Body& body = scene.bodies[b];
+    if (body.law->is_elastic()) continue; // an elastic die keeps its mesh
+    const QualityReport q = assess_quality(state.mesh, state.bodies[b], state.unknowns.nodal, dt, spec.quality);
+    const mesh::Point& at = q.worst_at;
+    log::detail("  quality '%s': worst %.3f (element %d at %.3g, %.3g, %.3g mm), %d below %g; next increment %.3f",
+              body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
+              q.predicted_worst);
+    char why[160] = "";
+    if (q.worst < spec.quality) std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
+    else if (q.predicted_worst <= 0.0)
+      std::snprintf(why, sizeof why, "element %d would invert in the next increment", q.predicted_tet + 1);
+    else if (spec.every > 0 && state.increment % spec.every == 0)
+      std::snprintf(why, sizeof why, "every %d increments", spec.every);
+    else if (!scene.dies.empty()) {
+      for (std::size_t d = die_vertices.size(); d < scene.dies.size(); ++d) {
+        die_vertices.push_back(scene.dies[d].surface->triangles().vertices);
+        for (mesh::Point& x : die_vertices.back()) x += state.dies[d].displacement;
+      }
+      const std::vector<DieFeature> inside = die_feature_depths(state.mesh, state.bodies[b], die_vertices);
+      for (std::size_t d = 0; d < scene.dies.size() && !why[0]; ++d)
+        if (inside[d].depth > spec.die_penetration * body.remesh_size) {
+          const mesh::Point& x = inside[d].vertex;
+          std::snprintf(why, sizeof why, "the vertex of die '%s' at %.3g, %.3g, %.3g mm is %.3g mm inside",
+                        scene.dies[d].name.c_str(), x.x(), x.y(), x.z(), inside[d].depth);
+        }
+    }
+    if (why[0]) due.push_back({int(b), why});
+  }
+  return due;
+}
+
+void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
+            std::span<const int> touching_die, std::span<const double> rate, const scene::TimeStep& next,
+            Timers& timers) {
+  const bool check = scene.input.remeshing.check_load && !scene.surfaces.empty();
+  const double old_mesh = check ? next_increment_load(scene, state, next, 1, timers) : 0.0;
+  const std::size_t first_record = state.remeshes.size();
+  remesh_bodies(scene, state, due, touching_die, rate, timers);
+  if (!check) return;
+  // Twice on the new mesh: friction takes σ₀ from the strain rates of the
+  // solution before, at first the interpolated velocity; the second solve
+  // takes them from the first, as the next increment will.
+  const double new_mesh = next_increment_load(scene, state, next, 2, timers);
+  for (std::size_t r = first_record; r < state.remeshes.size(); ++r)
+    state.remeshes[r].load_old_mesh = old_mesh, state.remeshes[r].load_new_mesh = new_mesh;
+  if (std::isnan(old_mesh) || std::isnan(new_mesh))
+    log::info("    load check: the next increment (dt %.3g s) did not converge on the %s mesh; not measured", next.length,
+              std::isnan(old_mesh) ? "old" : "new");
+  else
+    log::info("    load check, next increment (dt %.3g s) on the old mesh and on the new: %.5g and %.5g kN (%+.2f%%)",
+              next.length, old_mesh / 1e3, new_mesh / 1e3, 100.0 * state.remeshes[first_record].load_jump());
+}
+
+} // namespace anvil::remesh

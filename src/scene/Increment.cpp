@@ -1,0 +1,228 @@
+#include "anvil/scene/Increment.h"
+
+#include "anvil/contact/contact_scales.h"
+#include "anvil/mesh/tet_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace anvil::scene {
+namespace {
+
+/// The external vector of an increment of `dt`: the boundary tractions, and
+/// the volume compensation of the incompressible bodies. The flow of the
+/// increment is asked to restore the volume each lost so far (explicit
+/// update error, O(Δt) over a run, and contact projection): ∫ q div v = ∫ q g
+/// with g = (V₀ − V_m)/(V Δt'), entered as the pressure rows of the external
+/// vector (r_p = −∫N (div v − g)). V_m is the material: the mesh less what
+/// overlaps the dies, which is not material and which a remesh's put-back
+/// cuts off at once. Δt' = max(Δt, nominal) restores it over at least the
+/// nominal increment, so a short increment (a stop criterion, a cut) does
+/// not get a large dilatation. `asked` is Σ g V Δt (mm³).
+Eigen::VectorXd external_vector(const Scene& scene, const Discretisation& disc, const RunState& state, double dt,
+                                double nominal, double& asked) {
+  Eigen::VectorXd external = disc.imposed.nodal_forces;
+  asked = 0.0;
+  if (!scene.compensate_volume) return external;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    if (std::isfinite(scene.bodies[b].law->bulk_modulus())) continue;
+    const mesh::MeshRange& range = state.bodies[b];
+    const double volume = mesh::volume(state.mesh, range);
+    const double material = volume - state.inside_dies[b];
+    const double g = (scene.bodies[b].initial_volume - material) / (volume * std::max(dt, nominal));
+    asked += g * volume * dt;
+    for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e) {
+      const double quarter = 0.25 * mesh::signed_volume(state.mesh, e);
+      for (int node : state.mesh.tets[e]) external[4 * node + 3] -= g * quarter;
+    }
+  }
+  return external;
+}
+
+/// Newton on (v, p) for an increment of `dt` from `state`, with contact scales `scales`.
+IncrementOutcome solve_at(const Scene& scene, Discretisation& disc, const RunState& state, double dt, double nominal,
+                          const contact::ContactScales& scales, Timers& timers) {
+  for (const Body& body : scene.bodies)
+    if (body.increment_law) body.increment_law->set_time_step(dt);
+  // Candidates: boundary nodes that can reach a die or another body within the increment.
+  std::vector<contact::DieView> views;
+  double die_speed = 0.0, body_speed = 0.0;
+  for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+    const Die& die = scene.dies[d];
+    views.push_back({die.surface.get(), state.dies[d].displacement, die.velocity(state.dies[d], dt), die.friction});
+    die_speed = std::max(die_speed, views.back().velocity.norm());
+  }
+  for (int i = 0; i < state.mesh.node_count(); ++i)
+    body_speed = std::max(body_speed, state.unknowns.nodal.segment<3>(4 * i).norm());
+  const double reach = 2.0 * (die_speed + std::max(body_speed, die_speed)) * dt + 0.05 * scene.reference_length;
+  {
+    Timers::Scope scope(timers, "search");
+    if (!scene.dies.empty()) disc.die_contact.search(state.mesh, views, reach);
+    if (disc.pair_contact) disc.pair_contact->search(state.mesh, reach);
+  }
+  // Gap tolerance: a penetration velocity of 1e-4 of the reference speed is
+  // 1e-4 of the stroke over the run, and projection removes it anyway.
+  const contact::ContactIncrement increment{.time_step = dt,
+                                            .penalty = scales.penalty,
+                                            .regularisation = scene.input.contact.regularisation * scene.reference_velocity,
+                                            .gap_tolerance = 1e-4 * scene.reference_velocity,
+                                            .recovery_time = nominal,
+                                            .flow_stress = scales.flow_stress,
+                                            .consistency = scales.consistency};
+  if (!scene.dies.empty()) disc.die_contact.set_increment(increment);
+  if (disc.pair_contact) disc.pair_contact->set_increment(increment);
+
+  IncrementOutcome out;
+  out.time_step = dt;
+  const Eigen::VectorXd external = external_vector(scene, disc, state, dt, nominal, out.compensation);
+  const solver::IncrementProblem problem{disc.element_laws, disc.point_states,       external, {}, disc.contact_terms(scene),
+                                         scene.reference_velocity, scales.reference_force};
+  out.unknowns = state.unknowns;
+  Timers::Scope scope(timers, "newton");
+  out.report = disc.solver->solve(problem, scene.input.newton, out.unknowns);
+  out.failure = out.report.failure;
+  return out;
+}
+
+/// Force (N) on every load surface at `inc`'s solution, in Scene::surfaces order.
+std::vector<Eigen::Vector3d> surface_forces(const Scene& scene, const Discretisation& disc, const IncrementOutcome& inc) {
+  const std::vector<Eigen::Vector3d> die_force =
+      scene.dies.empty() ? std::vector<Eigen::Vector3d>{} : disc.die_contact.die_forces(inc.unknowns.nodal);
+  std::vector<Eigen::Vector3d> forces;
+  for (const LoadSurface& surface : scene.surfaces)
+    // On a plate: minus the reaction on the body.
+    forces.push_back(surface.die >= 0 ? die_force[surface.die]
+                                      : Eigen::Vector3d(-reaction(disc.imposed, surface.condition, disc.solver->residual())));
+  return forces;
+}
+
+/// The loads.csv records of `forces` at the end of increment `increment` (time `time`), the dies at `dies`.
+void append_loads(const Scene& scene, std::span<const DieState> dies, int increment, double time,
+                  const std::vector<Eigen::Vector3d>& forces, std::vector<LoadRecord>& loads) {
+  for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+    const LoadSurface& surface = scene.surfaces[s];
+    double stroke = 0.0;
+    if (surface.die >= 0) {
+      stroke = dies[surface.die].stroke;
+    } else {
+      const auto& v = scene.conditions[surface.condition].velocity;
+      stroke = time * std::sqrt(std::pow(v[0].value_or(0.0), 2) + std::pow(v[1].value_or(0.0), 2) +
+                                std::pow(v[2].value_or(0.0), 2));
+    }
+    loads.push_back({increment, time, int(s), stroke, forces[s]});
+  }
+}
+
+void count_iterations(const solver::NewtonReport& report, RunState& state) {
+  state.newton_iterations += static_cast<int>(report.iterations.size());
+  state.iterations.push_back({static_cast<int>(report.iterations.size()), report.linear_iterations});
+}
+
+} // namespace
+
+IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
+                                 Timers& timers, ContactEvents events) {
+  const contact::ContactScales scales = [&] {
+    if (!scene.has_contact()) return contact::ContactScales{};
+    std::vector<contact::ScaledBody> bodies;
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b) bodies.push_back({state.bodies[b], scene.bodies[b].law.get()});
+    return contact::contact_scales(state.mesh, bodies, disc.element_laws, disc.point_states, state.unknowns,
+                                   scene.reference_rate(), scene.body_size, scene.input.contact.penalty);
+  }();
+  IncrementOutcome out = solve_at(scene, disc, state, step.length, step.nominal, scales, timers);
+  // A free node reaching a die inside the increment ends it there (contact
+  // event): the overshoot left in a longer step is projected by the update.
+  if (out.converged() && events == ContactEvents::end_increment && scene.input.time.enabled && !scene.dies.empty()) {
+    const double touch = disc.die_contact.first_contact_time(out.unknowns.nodal, 1e-3 * scene.reference_length);
+    if (TimeStepControl(scene).ends_at_contact(step, touch))
+      out = solve_at(scene, disc, state, touch, step.nominal, scales, timers);
+  }
+  if (out.converged()) {
+    out.forces = surface_forces(scene, disc, out);
+    out.fields = fem::element_fields(state.mesh, disc.element_laws, disc.point_states, out.unknowns);
+  }
+  return out;
+}
+
+bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome& inc, RunState& state,
+                      Timers& timers) {
+  Timers::Scope scope(timers, "update");
+  const double dt = inc.time_step;
+  // The new geometry is built apart and taken only when no element inverts.
+  mesh::TetMesh moved = state.mesh;
+  std::vector<DieState> dies = state.dies;
+  const double volume_before = mesh::volume(state.mesh);
+  for (int i = 0; i < moved.node_count(); ++i) moved.nodes[i] += dt * inc.unknowns.nodal.segment<3>(4 * i);
+  for (std::size_t d = 0; d < scene.dies.size(); ++d) scene.dies[d].advance(dies[d], dt);
+  const double volume_flow = mesh::volume(moved);
+  // Contact nodes back onto their die at its new position, along the node's
+  // free directions only (a node on a symmetry plane stays on it), and not
+  // where the move would invert an element: a node left inside by a remesh's
+  // put-back, where the die corner needs an element flattened, stays in
+  // until the next remesh rather than ending the run.
+  const auto& candidates = disc.die_contact.candidates();
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const contact::ContactCandidate& c = candidates[i];
+    const Eigen::Vector3d& shift = dies[c.die].displacement;
+    const die::DieSurface& surface = *scene.dies[c.die].surface;
+    const die::SurfaceProjection p = surface.project(moved.nodes[c.node] - shift);
+    if (disc.die_contact.pressure(int(i), inc.unknowns.nodal) <= 0.0 && p.distance >= 0.0) continue;
+    const std::array<bool, 3> free{!disc.imposed.prescribed[4 * c.node], !disc.imposed.prescribed[4 * c.node + 1],
+                                   !disc.imposed.prescribed[4 * c.node + 2]};
+    const mesh::Point& x = moved.nodes[c.node];
+    disc.projection_guard.move(moved, c.node,
+                               shift + die::project_keeping(surface, x - shift, free, 1e-9 * scene.reference_length), 0.0);
+  }
+  for (int e = 0; e < moved.tet_count(); ++e)
+    if (mesh::signed_volume(moved, e) <= 0.0) {
+      inc.failure = "element " + std::to_string(e + 1) + " would invert";
+      return false;
+    }
+
+  const double volume_after = mesh::volume(moved);
+  state.mesh = std::move(moved);
+  state.dies = std::move(dies);
+  state.unknowns = std::move(inc.unknowns);
+  append_loads(scene, state.dies, state.increment + 1, state.time + dt, inc.forces, state.loads);
+  state.volume.solver += volume_flow - volume_before;
+  state.volume.compensation += inc.compensation;
+  state.volume.projection += volume_after - volume_flow;
+  state.volume.largest_increment =
+      std::max(state.volume.largest_increment, std::abs(volume_after - volume_before) / volume_before);
+  {
+    Timers::Scope overlap(timers, "die overlap");
+    state.inside_dies = inside_dies(scene, state);
+  }
+  ++state.increment;
+  state.time += dt;
+  count_iterations(inc.report, state);
+  // ε̄ += Δt ε̄̇ per element, with the rates on the geometry solved on.
+  for (int e = 0; e < state.mesh.tet_count(); ++e) {
+    state.equivalent_strain[e] += dt * inc.fields.rate[e];
+    disc.point_states[e].equivalent_strain = state.equivalent_strain[e];
+  }
+  // σ_{n+1} = σ_n + Δt C:ε̇ in elastic bodies (IncrementalElastic): the stress just solved.
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    if (scene.bodies[b].increment_law)
+      for (int e = state.bodies[b].first_tet; e < state.bodies[b].first_tet + state.bodies[b].tet_count; ++e) {
+        disc.point_states[e].elastic_stress = inc.fields.stress[e];
+        Eigen::Map<material::Vec6>(&state.elastic_stress[6 * e]) = inc.fields.stress[e];
+      }
+  // A load-limited press slows down for the next increment.
+  const double rate_sensitivity = scene.bodies.front().law->rate_sensitivity(disc.point_states.front());
+  for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+    const Eigen::Vector3d v = scene.dies[d].velocity(state.dies[d], dt);
+    if (v.norm() == 0.0) continue;
+    scene.dies[d].limit_speed(state.dies[d], inc.forces[d].dot(-v.normalized()), rate_sensitivity);
+  }
+  return true;
+}
+
+void accept_without_motion(const Scene& scene, const IncrementOutcome& inc, RunState& state) {
+  state.increment = 1;
+  state.unknowns = inc.unknowns;
+  count_iterations(inc.report, state);
+  append_loads(scene, state.dies, 1, 0.0, inc.forces, state.loads);
+}
+
+} // namespace anvil::scene

@@ -1,0 +1,103 @@
+#include "anvil/scene/TimeStepControl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace anvil::scene {
+namespace {
+
+/// Mean length of the edges at each node (mm): the local element size.
+std::vector<double> local_size(const mesh::TetMesh& mesh) {
+  std::vector<double> sum(mesh.nodes.size(), 0.0), count(mesh.nodes.size(), 0.0);
+  for (const mesh::Tet& t : mesh.tets)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        const double l = (mesh.nodes[t[a]] - mesh.nodes[t[b]]).norm();
+        sum[t[a]] += l, sum[t[b]] += l;
+        count[t[a]] += 1.0, count[t[b]] += 1.0;
+      }
+  for (std::size_t i = 0; i < sum.size(); ++i) sum[i] /= count[i];
+  return sum;
+}
+
+} // namespace
+
+TimeStepControl::TimeStepControl(const Scene& scene) : scene_(scene), time_(scene.input.time) {}
+
+double TimeStepControl::press_speed(const RunState& state) const {
+  // The fastest die over a short probe step (an increment is far longer).
+  const double probe = 1e-3 * time_.stroke_increment / scene_.reference_velocity;
+  double speed = scene_.reference_velocity;
+  for (std::size_t d = 0; d < scene_.dies.size(); ++d)
+    speed = std::max(speed, scene_.dies[d].velocity(state.dies[d], probe).norm());
+  return speed;
+}
+
+TimeStep TimeStepControl::next_step(const RunState& state) const {
+  TimeStep step;
+  step.nominal = time_.stroke_increment / press_speed(state);
+  double dt = step.nominal;
+  const std::vector<double> size = local_size(state.mesh);
+  for (int i = 0; i < state.mesh.node_count(); ++i) {
+    const double speed = state.unknowns.nodal.segment<3>(4 * i).norm();
+    if (speed > 0.0) dt = std::min(dt, time_.max_displacement * size[i] / speed);
+  }
+  // A stop less than 1¼ steps away is reached in two equal steps: Δt ≪
+  // nominal would make gap/Δt in the contact terms and the volume
+  // compensation stiff.
+  double to_stop = std::numeric_limits<double>::infinity();
+  if (std::isfinite(time_.end_time)) to_stop = time_.end_time - state.time;
+  if (std::isfinite(time_.final_stroke)) {
+    const int d = time_.stroke_die;
+    const double speed = scene_.dies[d].velocity(state.dies[d], dt).norm();
+    if (speed > 0.0) to_stop = std::min(to_stop, (time_.final_stroke - state.dies[d].stroke) / speed);
+  }
+  if (time_.final_gap > 0.0) {
+    const int upper = scene_.upper_die, lower = 1 - upper;
+    const double closing = scene_.dies[lower].velocity(state.dies[lower], dt).z() -
+                           scene_.dies[upper].velocity(state.dies[upper], dt).z();
+    if (closing > 0.0) to_stop = std::min(to_stop, (scene_.die_gap(state.dies) - time_.final_gap) / closing);
+  }
+  if (to_stop <= dt) dt = to_stop;
+  else if (to_stop < 1.25 * dt) dt = 0.5 * to_stop;
+  step.planned = step.length = dt;
+  return step;
+}
+
+std::optional<double> TimeStepControl::cut(double length, int cuts_done) const {
+  if (cuts_done >= time_.max_cuts) return std::nullopt;
+  return 0.5 * length;
+}
+
+bool TimeStepControl::ends_at_contact(const TimeStep& step, double touch) const {
+  const double sliver = time_.min_step_fraction * step.planned;
+  return touch > sliver && touch < step.length - sliver;
+}
+
+std::string TimeStepControl::stop_reason(const RunState& state) const {
+  const double tolerance = 1e-9;
+  if (state.time >= time_.end_time * (1.0 - tolerance)) return "end time reached";
+  if (std::isfinite(time_.final_stroke) && state.dies[time_.stroke_die].stroke >= time_.final_stroke * (1.0 - tolerance))
+    return "final stroke reached";
+  if (time_.final_gap > 0.0 && scene_.die_gap(state.dies) <= time_.final_gap * (1.0 + tolerance))
+    return "final die gap reached";
+  if (std::isfinite(time_.max_load))
+    for (auto r = state.loads.rbegin(); r != state.loads.rend() && r->increment == state.increment; ++r)
+      if (r->force.norm() >= time_.max_load) return "maximum load reached";
+  for (std::size_t d = 0; d < scene_.dies.size(); ++d)
+    if (state.dies[d].speed_factor < 1e-3) return "press stalled at its load limit (die '" + scene_.dies[d].name + "')";
+  if (state.increment >= time_.max_increments) return "maximum number of increments reached";
+  return "";
+}
+
+double TimeStepControl::progress(const RunState& state) const {
+  double f = 0.0;
+  if (std::isfinite(time_.end_time)) f = std::max(f, state.time / time_.end_time);
+  if (std::isfinite(time_.final_stroke)) f = std::max(f, state.dies[time_.stroke_die].stroke / time_.final_stroke);
+  if (time_.final_gap > 0.0)
+    f = std::max(f, (scene_.die_gap0 - scene_.die_gap(state.dies)) / (scene_.die_gap0 - time_.final_gap));
+  return f;
+}
+
+} // namespace anvil::scene
