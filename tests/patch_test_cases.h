@@ -16,8 +16,8 @@ namespace patch_test {
 
 struct LoadCase {
   const char* name;
-  const char* file;     ///< relative to the source tree
-  double exact_stress;  ///< MPa, the uniform |σzz| of the exact solution
+  const char* file;    ///< relative to the source tree
+  double exact_stress; ///< MPa, the uniform |σzz| of the exact solution
 };
 
 /// Exact stresses: pressure cases 100 MPa; imposed displacement E u/H =
@@ -43,17 +43,18 @@ struct MeshPair {
 
 inline const std::vector<MeshPair>& mesh_pairs() {
   static const std::vector<MeshPair> pairs = {
-      {"matching 4/4", 4, 4},         {"similar 4/5", 4, 5},          {"slave finer 4/7", 4, 7},
-      {"slave finer 1:3.75 4/15", 4, 15}, {"master finer 7/4", 7, 4}, {"master finer 3.75:1 15/4", 15, 4},
+      {"matching 4/4", 4, 4},     {"similar 4/5", 4, 5},
+      {"slave finer 4/7", 4, 7},  {"slave finer 1:3.75 4/15", 4, 15},
+      {"master finer 7/4", 7, 4}, {"master finer 3.75:1 15/4", 15, 4},
   };
   return pairs;
 }
 
 struct Errors {
   double interface_max = 0.0, interface_rms = 0.0; ///< over the interface nodes of both bodies
-  double interior_max = 0.0;                        ///< over the elements of both bodies
+  double interior_max = 0.0;                       ///< over the elements of both bodies
   int interface_nodes = 0;
-  double wall_time = 0.0;                           ///< s
+  double wall_time = 0.0; ///< s
   int newton_iterations = 0;
 };
 
@@ -62,13 +63,13 @@ struct Errors {
 inline Errors run(const LoadCase& load, const MeshPair& meshes, const std::string& formulation,
                   const std::string& source_dir, const std::string& out) {
   auto size = [](int cells) { return std::to_string(10.0 / cells); };
-  anvil::scene::Case c = anvil::scene::read_case(
-      source_dir + "/" + load.file, {"bodies[0].mesh.element_size=" + size(meshes.master_cells),
-                                     "bodies[1].mesh.element_size=" + size(meshes.slave_cells),
-                                     "contact_pairs[0].formulation=" + formulation,
-                                     // the table measures the formulation's error: Newton far below it
-                                     // (the run's default 1e-6 moves the errors' fourth digit)
-                                     "solver.tolerance=1e-10", "solver.increment_tolerance=1e-10"});
+  anvil::scene::Case c = anvil::scene::read_case(source_dir + "/" + load.file,
+                                                 {"bodies[0].mesh.element_size=" + size(meshes.master_cells),
+                                                  "bodies[1].mesh.element_size=" + size(meshes.slave_cells),
+                                                  "contact_pairs[0].formulation=" + formulation,
+                                                  // the table measures the formulation's error: Newton far below it
+                                                  // (the run's default 1e-6 moves the errors' fourth digit)
+                                                  "solver.tolerance=1e-10", "solver.increment_tolerance=1e-10"});
   std::filesystem::remove_all(out);
   anvil::scene::run(c, {out});
   Errors e;

@@ -5,4 +5,6 @@
 #include <string>
 
 /// Absolute path of a file in the source tree.
-inline std::string source_path(const std::string& relative) { return std::string(ANVIL_SOURCE_DIR) + "/" + relative; }
+inline std::string source_path(const std::string& relative) {
+  return std::string(ANVIL_SOURCE_DIR) + "/" + relative;
+}

@@ -52,12 +52,15 @@ inline Outcome run(const Setup& s, const std::string& source_dir, const std::str
     if (row.normal_stress <= 0.0) ++o.unloaded_master;
     o.master_closing = std::max(o.master_closing, -row.gap_rate);
   }
-  for (int b = 0; b < 2; ++b) o.interface_velocity[b] = weighted[b] / area[b];
+  for (int b = 0; b < 2; ++b)
+    o.interface_velocity[b] = weighted[b] / area[b];
   o.newton_iterations = static_cast<int>(anvil::io::read_summary_number(out, "newton_iterations"));
   return o;
 }
 
 /// Relative change of a quantity when the roles are swapped.
-inline double change(double before, double after) { return std::abs(after - before) / std::abs(before); }
+inline double change(double before, double after) {
+  return std::abs(after - before) / std::abs(before);
+}
 
 } // namespace two_cubes

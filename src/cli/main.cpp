@@ -1,6 +1,7 @@
 // anvil: command-line entry point. Catches every error once, prints one
 // clear message and exits non-zero (STYLE "Input and errors").
 #include "anvil/core/error.h"
+#include "anvil/core/log.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Simulation.h"
 #include "anvil/scene/effects.h"
@@ -20,6 +21,8 @@ constexpr const char* kUsage = R"(anvil — 3D metal-forming simulator (P1+/P1 v
 usage:
   anvil run CASE.yaml [-o DIR]   run a case; results go to DIR (default: the
                                  case's output.directory, else out/<case name>)
+  anvil run CASE.yaml --verbose  also show each Newton iteration and the mesh
+                                 quality on the terminal (always in anvil.log)
   anvil run CASE.yaml --resume DIR
                                  continue a stopped or killed run from the last
                                  checkpoint in DIR (DIR/checkpoint.h5)
@@ -70,7 +73,8 @@ int main(int argc, char** argv) {
   }
   if (command == "--list") {
     std::puts("Effects (built only when a scene calls for them):");
-    for (const auto& e : anvil::scene::effect_registry()) std::printf("  %-20s %s\n", e.name.c_str(), e.doc.c_str());
+    for (const auto& e : anvil::scene::effect_registry())
+      std::printf("  %-20s %s\n", e.name.c_str(), e.doc.c_str());
     return 0;
   }
   if (command != "run" && command != "output-dir") return usage_error("unknown command '" + command + "'");
@@ -84,6 +88,8 @@ int main(int argc, char** argv) {
     if (arg == "-o" || arg == "--output") {
       if (i + 1 >= argc) return usage_error(arg + " needs a directory");
       options.output_directory = argv[++i];
+    } else if (arg == "--verbose") {
+      anvil::log::set_verbose(true);
     } else if (arg == "--resume") {
       if (i + 1 >= argc) return usage_error("--resume needs the directory of the run to continue");
       options.output_directory = argv[++i];

@@ -21,9 +21,12 @@ PairFormulation pair_formulation(const std::string& name) {
 
 std::string to_string(PairFormulation formulation) {
   switch (formulation) {
-  case PairFormulation::master_slave: return "master_slave";
-  case PairFormulation::symmetric: return "symmetric";
-  case PairFormulation::quasi_symmetric: return "quasi_symmetric";
+  case PairFormulation::master_slave:
+    return "master_slave";
+  case PairFormulation::symmetric:
+    return "symmetric";
+  case PairFormulation::quasi_symmetric:
+    return "quasi_symmetric";
   }
   return "?";
 }
@@ -51,7 +54,8 @@ mesh::Point point_on(const mesh::TetMesh& mesh, const mesh::Triangle& f, const E
 /// Outward unit normal of a body at a boundary node: the area-weighted mean of its boundary faces.
 Eigen::Vector3d own_normal(const mesh::TetMesh& mesh, const std::vector<int>& faces) {
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  for (int f : faces) n += mesh::area_vector(mesh, mesh.boundary_faces[f]);
+  for (int f : faces)
+    n += mesh::area_vector(mesh, mesh.boundary_faces[f]);
   return n.normalized();
 }
 
@@ -68,7 +72,8 @@ double weaker_side(const std::vector<double>& nodal_value, const ContactPoint& p
 
 Eigen::Vector3d relative_velocity(const ContactPoint& p, const Eigen::VectorXd& nodal) {
   Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * p.node);
-  for (int j = 0; j < 3; ++j) relative -= p.shape[j] * nodal.segment<3>(kDofsPerNode * p.facet[j]);
+  for (int j = 0; j < 3; ++j)
+    relative -= p.shape[j] * nodal.segment<3>(kDofsPerNode * p.facet[j]);
   return relative;
 }
 
@@ -76,7 +81,8 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
   points_.clear();
   std::vector<std::vector<int>> node_faces(mesh.nodes.size());
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
-    for (int node : mesh.boundary_faces[f]) node_faces[node].push_back(static_cast<int>(f));
+    for (int node : mesh.boundary_faces[f])
+      node_faces[node].push_back(static_cast<int>(f));
 
   for (std::size_t q = 0; q < pairs_.size(); ++q) {
     const BodyPair& pair = pairs_[q];
@@ -235,16 +241,23 @@ double BodyContact::mean_gap_velocity(std::size_t index, const Eigen::VectorXd& 
 }
 
 const std::vector<double>& BodyContact::gaps(const Eigen::VectorXd& nodal) {
-  for (std::size_t m = 0; m < multipliers_.size(); ++m) gap_[m] = mean_gap_velocity(m, nodal);
+  for (std::size_t m = 0; m < multipliers_.size(); ++m)
+    gap_[m] = mean_gap_velocity(m, nodal);
   return gap_;
 }
 
-void BodyContact::start(const Eigen::VectorXd& nodal) { active_.start(gaps(nodal)); }
-bool BodyContact::consistent(const Eigen::VectorXd& nodal) { return active_.consistent(gaps(nodal)); }
+void BodyContact::start(const Eigen::VectorXd& nodal) {
+  active_.start(gaps(nodal));
+}
+bool BodyContact::consistent(const Eigen::VectorXd& nodal) {
+  return active_.consistent(gaps(nodal));
+}
 bool BodyContact::linear() const {
   return std::all_of(pairs_.begin(), pairs_.end(), [](const BodyPair& p) { return is_linear(p.friction); });
 }
-std::string BodyContact::accept(const Eigen::VectorXd& nodal) { return active_.accept(gaps(nodal), "pair constraints"); }
+std::string BodyContact::accept(const Eigen::VectorXd& nodal) {
+  return active_.accept(gaps(nodal), "pair constraints");
+}
 
 double BodyContact::pressure(int i, const Eigen::VectorXd& nodal) const {
   const ContactPoint& p = points_[i];
@@ -310,7 +323,8 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
       residual.segment<3>(kDofsPerNode * nodes[a]) += coefficient[a] * p.share * p.area * f.stress;
       if (!blocks) continue;
       for (int b = 0; b < 4; ++b)
-        blocks->push_back({nodes[a], nodes[b], coefficient[a] * coefficient[b] * p.share * p.area * f.d_sliding * tangent_projector});
+        blocks->push_back(
+            {nodes[a], nodes[b], coefficient[a] * coefficient[b] * p.share * p.area * f.d_sliding * tangent_projector});
       if (f.d_normal_pressure.isZero()) continue;
       // Coulomb: τ depends on σn = Σ_m W λ_m, λ_m = ρ C_m/G_m.
       for (int k = 0; k < 3; ++k)
@@ -318,7 +332,8 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
           const Multiplier& mult = multipliers_[m];
           const double gain = coefficient[a] * p.share * p.area * p.multiplier_weight[k] * rho / mult.node_weight;
           for (int s = mult.first; s < mult.first + mult.count; ++s)
-            blocks->push_back({nodes[a], support_[s].node, gain * f.d_normal_pressure * support_[s].normal.transpose()});
+            blocks->push_back(
+                {nodes[a], support_[s].node, gain * f.d_normal_pressure * support_[s].normal.transpose()});
         }
     }
   }
@@ -331,13 +346,15 @@ std::vector<std::pair<int, int>> BodyContact::couplings() const {
   };
   for (const Multiplier& m : multipliers_)
     for (int s = m.first; s < m.first + m.count; ++s)
-      for (int t = s + 1; t < m.first + m.count; ++t) couple(support_[s].node, support_[t].node);
+      for (int t = s + 1; t < m.first + m.count; ++t)
+        couple(support_[s].node, support_[t].node);
   for (const ContactPoint& p : points_) {
     const FrictionKind kind = pairs_[p.pair].friction.kind;
     if (kind == FrictionKind::frictionless || kind == FrictionKind::sticking) continue;
     const std::array<int, 4> nodes{p.node, p.facet[0], p.facet[1], p.facet[2]};
     for (int a = 0; a < 4; ++a) {
-      for (int b = a + 1; b < 4; ++b) couple(nodes[a], nodes[b]);
+      for (int b = a + 1; b < 4; ++b)
+        couple(nodes[a], nodes[b]);
       if (kind != FrictionKind::coulomb) continue;
       for (int k = 0; k < 3; ++k)
         if (const int m = p.multiplier[k]; m >= 0)

@@ -19,7 +19,9 @@ FrictionStress friction_stress(const FrictionLaw& law, const FrictionInput& in) 
   const double tresca = law.tresca_factor * in.flow_stress / std::sqrt(3.0);
   bool coulomb_uncapped = false;
   switch (law.kind) {
-  case FrictionKind::tresca: c = tresca; break;
+  case FrictionKind::tresca:
+    c = tresca;
+    break;
   case FrictionKind::coulomb:
     c = law.coefficient * in.normal_pressure;
     coulomb_uncapped = !(law.tresca_factor > 0.0 && c > tresca);
@@ -29,7 +31,8 @@ FrictionStress friction_stress(const FrictionLaw& law, const FrictionInput& in) 
     c = law.coefficient * in.consistency;
     q = law.exponent;
     break;
-  default: break;
+  default:
+    break;
   }
   const double s = std::sqrt(w.squaredNorm() + in.regularisation * in.regularisation);
   const double sq1 = std::pow(s, q - 1.0);
@@ -42,13 +45,18 @@ FrictionStress friction_stress(const FrictionLaw& law, const FrictionInput& in) 
 std::string describe(const FrictionLaw& law) {
   char text[160];
   switch (law.kind) {
-  case FrictionKind::frictionless: return "frictionless";
-  case FrictionKind::sticking: return "sticking";
-  case FrictionKind::tresca: std::snprintf(text, sizeof text, "Tresca, m = %g", law.tresca_factor); break;
+  case FrictionKind::frictionless:
+    return "frictionless";
+  case FrictionKind::sticking:
+    return "sticking";
+  case FrictionKind::tresca:
+    std::snprintf(text, sizeof text, "Tresca, m = %g", law.tresca_factor);
+    break;
   case FrictionKind::coulomb:
     if (law.tresca_factor > 0.0)
       std::snprintf(text, sizeof text, "Coulomb, mu = %g, capped by Tresca m = %g", law.coefficient, law.tresca_factor);
-    else std::snprintf(text, sizeof text, "Coulomb, mu = %g", law.coefficient);
+    else
+      std::snprintf(text, sizeof text, "Coulomb, mu = %g", law.coefficient);
     break;
   case FrictionKind::norton:
     std::snprintf(text, sizeof text, "viscoplastic (Norton), alpha = %g, q = %g", law.coefficient, law.exponent);

@@ -15,7 +15,8 @@ std::vector<double> boundary_node_areas(const mesh::TetMesh& mesh) {
   std::vector<double> area(mesh.node_count(), 0.0);
   for (const mesh::Triangle& f : mesh.boundary_faces) {
     const double third = mesh::area_vector(mesh, f).norm() / 3.0;
-    for (int k = 0; k < 3; ++k) area[f[k]] += third;
+    for (int k = 0; k < 3; ++k)
+      area[f[k]] += third;
   }
   return area;
 }
@@ -51,7 +52,8 @@ double RigidContact::pressure(int i, const Eigen::VectorXd& nodal) const {
 }
 
 const std::vector<double>& RigidContact::gaps(const Eigen::VectorXd& nodal) {
-  for (std::size_t i = 0; i < candidates_.size(); ++i) gap_[i] = gap_velocity(candidates_[i], nodal);
+  for (std::size_t i = 0; i < candidates_.size(); ++i)
+    gap_[i] = gap_velocity(candidates_[i], nodal);
   return gap_;
 }
 
@@ -60,13 +62,17 @@ void RigidContact::start(const Eigen::VectorXd& nodal) {
   active_.start(gaps(nodal));
 }
 
-bool RigidContact::consistent(const Eigen::VectorXd& nodal) { return active_.consistent(gaps(nodal)); }
+bool RigidContact::consistent(const Eigen::VectorXd& nodal) {
+  return active_.consistent(gaps(nodal));
+}
 
 bool RigidContact::linear() const {
   return std::all_of(dies_.begin(), dies_.end(), [](const DieView& d) { return is_linear(d.friction); });
 }
 
-std::string RigidContact::accept(const Eigen::VectorXd& nodal) { return active_.accept(gaps(nodal), "contact nodes"); }
+std::string RigidContact::accept(const Eigen::VectorXd& nodal) {
+  return active_.accept(gaps(nodal), "contact nodes");
+}
 
 void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
                        std::vector<solver::NodeBlock>* blocks) const {
@@ -84,9 +90,9 @@ void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     Eigen::Matrix3d k = c.area * rho * n * n.transpose();
     const FrictionLaw& law = dies_[c.die].friction;
     if (law.kind != FrictionKind::frictionless) {
-      const FrictionStress f = friction_stress(
-          law, {tangent_projector * relative, sigma_n, increment_.flow_stress[c.node],
-                increment_.consistency[c.node], increment_.regularisation, rho});
+      const FrictionStress f =
+          friction_stress(law, {tangent_projector * relative, sigma_n, increment_.flow_stress[c.node],
+                                increment_.consistency[c.node], increment_.regularisation, rho});
       r += c.area * f.stress;
       k += c.area * (f.d_sliding * tangent_projector - rho * f.d_normal_pressure * n.transpose());
     }
@@ -100,7 +106,8 @@ std::vector<Eigen::Vector3d> RigidContact::die_forces(const Eigen::VectorXd& nod
   Eigen::VectorXd residual = Eigen::VectorXd::Zero(nodal.size());
   std::vector<Eigen::Vector3d> force(dies_.size(), Eigen::Vector3d::Zero());
   add(nodal, residual, nullptr);
-  for (const ContactCandidate& c : candidates_) force[c.die] += residual.segment<3>(kDofsPerNode * c.node);
+  for (const ContactCandidate& c : candidates_)
+    force[c.die] += residual.segment<3>(kDofsPerNode * c.node);
   return force;
 }
 

@@ -15,7 +15,9 @@ using Iterator = std::vector<Triangle3>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-Kernel::Point_3 to_cgal(const mesh::Point& p) { return {p.x(), p.y(), p.z()}; }
+Kernel::Point_3 to_cgal(const mesh::Point& p) {
+  return {p.x(), p.y(), p.z()};
+}
 } // namespace
 
 struct SurfaceSearch::Tree {

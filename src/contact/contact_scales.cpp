@@ -9,7 +9,8 @@ namespace anvil::contact {
 
 ContactScales contact_scales(const mesh::TetMesh& mesh, std::span<const ScaledBody> bodies,
                              const fem::ElementLaws& laws, std::span<const material::PointState> states,
-                             const fem::BodyUnknowns& u, double reference_rate, double body_size, double penalty_factor) {
+                             const fem::BodyUnknowns& u, double reference_rate, double body_size,
+                             double penalty_factor) {
   const fem::ElementFields fields = fem::element_fields(mesh, laws, states, u);
   ContactScales out;
   out.flow_stress.assign(mesh.nodes.size(), 0.0);
@@ -20,8 +21,10 @@ ContactScales contact_scales(const mesh::TetMesh& mesh, std::span<const ScaledBo
     if (body.law->is_elastic()) {
       // An elastic body does not flow: friction against it is bounded by the
       // other body's shear strength (BodyContact takes the weaker side).
-      std::fill(out.flow_stress.begin() + first, out.flow_stress.begin() + end, std::numeric_limits<double>::infinity());
-      std::fill(out.consistency.begin() + first, out.consistency.begin() + end, std::numeric_limits<double>::infinity());
+      std::fill(out.flow_stress.begin() + first, out.flow_stress.begin() + end,
+                std::numeric_limits<double>::infinity());
+      std::fill(out.consistency.begin() + first, out.consistency.begin() + end,
+                std::numeric_limits<double>::infinity());
       continue;
     }
     for (int e = body.range.first_tet; e < body.range.first_tet + body.range.tet_count; ++e) {
@@ -29,9 +32,11 @@ ContactScales contact_scales(const mesh::TetMesh& mesh, std::span<const ScaledBo
       // elements take the process rate instead.
       const double rate = fields.rate[e] > 0.0 ? fields.rate[e] : reference_rate;
       const double flow = laws[e]->flow_stress(rate, states[e]), k = laws[e]->consistency(states[e]);
-      for (int node : mesh.tets[e]) out.flow_stress[node] += flow, out.consistency[node] += k, weight[node] += 1.0;
+      for (int node : mesh.tets[e])
+        out.flow_stress[node] += flow, out.consistency[node] += k, weight[node] += 1.0;
     }
-    for (int i = first; i < end; ++i) out.flow_stress[i] /= weight[i], out.consistency[i] /= weight[i];
+    for (int i = first; i < end; ++i)
+      out.flow_stress[i] /= weight[i], out.consistency[i] /= weight[i];
   }
   // The softest body sets ρ: a stiff die's modulus (an elastic body's secant
   // viscosity is its shear modulus) would make the system needlessly

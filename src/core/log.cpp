@@ -34,9 +34,13 @@ void close_file() {
   mirror = nullptr;
 }
 
-void set_quiet(bool quiet) { quiet_terminal = quiet; }
+void set_quiet(bool quiet) {
+  quiet_terminal = quiet;
+}
 
-void set_verbose(bool verbose) { verbose_terminal = verbose; }
+void set_verbose(bool verbose) {
+  verbose_terminal = verbose;
+}
 
 void info(const char* format, ...) {
   va_list args;

@@ -19,7 +19,8 @@ TableMotion::TableMotion(const Eigen::Vector3d& direction, std::vector<double> t
                          Quantity q)
     : direction_(direction.normalized()), times_(std::move(times)), values_(std::move(values)), quantity_(q) {
   ANVIL_ASSERT(times_.size() == values_.size() && !times_.empty());
-  for (std::size_t i = 1; i < times_.size(); ++i) ANVIL_ASSERT(times_[i] > times_[i - 1]);
+  for (std::size_t i = 1; i < times_.size(); ++i)
+    ANVIL_ASSERT(times_[i] > times_[i - 1]);
 }
 
 Eigen::Vector3d TableMotion::displacement(double t) const {
@@ -69,9 +70,9 @@ Eigen::Vector3d CrankPress::displacement(double t) const {
 
 std::string CrankPress::describe() const {
   char text[200];
-  std::snprintf(text, sizeof text, "crank press, crank radius %g mm, rod %g mm, %g rpm, from %g deg after top dead centre",
-                crank_radius_, rod_length_, angular_speed_ * 60.0 / (2.0 * std::numbers::pi),
-                start_angle_ * 180.0 / std::numbers::pi);
+  std::snprintf(text, sizeof text,
+                "crank press, crank radius %g mm, rod %g mm, %g rpm, from %g deg after top dead centre", crank_radius_,
+                rod_length_, angular_speed_ * 60.0 / (2.0 * std::numbers::pi), start_angle_ * 180.0 / std::numbers::pi);
   return text;
 }
 

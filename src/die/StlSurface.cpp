@@ -43,7 +43,8 @@ public:
     for (auto f : mesh_.faces()) {
       std::array<int, 3> ids{};
       int k = 0;
-      for (auto v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_)) ids[k++] = static_cast<int>(v.idx());
+      for (auto v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_))
+        ids[k++] = static_cast<int>(v.idx());
       triangles_.faces.push_back(ids);
       const mesh::Point &a = triangles_.vertices[ids[0]], &b = triangles_.vertices[ids[1]],
                         &c = triangles_.vertices[ids[2]];
@@ -90,7 +91,8 @@ std::unique_ptr<DieSurface> read_stl_surface(const std::string& path, const std:
   if (!CGAL::IO::read_polygon_soup(path, points, triangles) || triangles.empty())
     throw InputError(at + ": not a readable STL surface (ASCII or binary) with at least one facet");
   const Vector3 shift(offset.x(), offset.y(), offset.z());
-  for (Point3& p : points) p = p + shift;
+  for (Point3& p : points)
+    p = p + shift;
   const std::size_t read = triangles.size();
   // Degenerate (zero-area, repeated-vertex) and duplicate facets are dropped and reported.
   std::vector<std::array<std::size_t, 3>> kept;
@@ -109,7 +111,8 @@ std::unique_ptr<DieSurface> read_stl_surface(const std::string& path, const std:
   if (!PMP::orient_polygon_soup(points, triangles))
     log::info("  %s: non-manifold vertices were duplicated to orient the surface", at.c_str());
   std::size_t flipped = 0;
-  for (std::size_t i = 0; i < std::min(before.size(), triangles.size()); ++i) flipped += before[i] != triangles[i];
+  for (std::size_t i = 0; i < std::min(before.size(), triangles.size()); ++i)
+    flipped += before[i] != triangles[i];
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, triangles, mesh);
   if (!CGAL::is_triangle_mesh(mesh) || mesh.number_of_faces() == 0)

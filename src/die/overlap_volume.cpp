@@ -10,7 +10,7 @@ namespace {
 constexpr int n = 4; ///< a face is cut into n² sub-triangles
 
 /// The sub-triangles' centroids, in barycentric coordinates (b, c) of a face (a, b, c).
-const std::array<Eigen::Vector2d, n * n> samples = [] {
+const std::array<Eigen::Vector2d, n* n> samples = [] {
   std::array<Eigen::Vector2d, n * n> at{};
   int k = 0;
   for (int i = 0; i < n; ++i)

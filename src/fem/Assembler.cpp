@@ -21,7 +21,8 @@ std::vector<std::vector<int>> colour_elements(const mesh::TetMesh& mesh) {
     int colour = 0;
     for (int w = 0; w < kWords; ++w) {
       std::uint64_t taken = 0;
-      for (int v : mesh.tets[e]) taken |= used[static_cast<std::size_t>(v) * kWords + w];
+      for (int v : mesh.tets[e])
+        taken |= used[static_cast<std::size_t>(v) * kWords + w];
       if (~taken != 0) {
         colour = 64 * w + __builtin_ctzll(~taken);
         break;
@@ -29,7 +30,8 @@ std::vector<std::vector<int>> colour_elements(const mesh::TetMesh& mesh) {
       colour = -1;
     }
     ANVIL_ASSERT(colour >= 0);
-    for (int v : mesh.tets[e]) used[static_cast<std::size_t>(v) * kWords + colour / 64] |= std::uint64_t{1} << (colour % 64);
+    for (int v : mesh.tets[e])
+      used[static_cast<std::size_t>(v) * kWords + colour / 64] |= std::uint64_t{1} << (colour % 64);
     if (colour >= static_cast<int>(colours.size())) colours.resize(static_cast<std::size_t>(colour) + 1);
     colours[colour].push_back(e);
   }
@@ -52,7 +54,8 @@ Assembler::Assembler(const mesh::TetMesh& mesh, const DofMap& dofs)
   ANVIL_ASSERT(dofs.dof_count() == kDofsPerNode * mesh.node_count());
   for (const mesh::Tet& t : mesh.tets)
     for (int a : t)
-      for (int b : t) element_neighbours_[a].push_back(b);
+      for (int b : t)
+        element_neighbours_[a].push_back(b);
   sort_unique(element_neighbours_);
   neighbours_ = element_neighbours_;
   build_pattern();
@@ -62,7 +65,8 @@ bool Assembler::set_couplings(const std::vector<std::pair<int, int>>& couplings)
   if (couplings == couplings_) return false;
   couplings_ = couplings;
   neighbours_ = element_neighbours_;
-  for (const auto& [a, b] : couplings) neighbours_[a].push_back(b), neighbours_[b].push_back(a);
+  for (const auto& [a, b] : couplings)
+    neighbours_[a].push_back(b), neighbours_[b].push_back(a);
   sort_unique(neighbours_);
   build_pattern();
   return true;
@@ -71,7 +75,8 @@ bool Assembler::set_couplings(const std::vector<std::pair<int, int>>& couplings)
 void Assembler::build_pattern() {
   // Every row of node b holds the 4 columns of each neighbour of b, in node order.
   long nnz = 0;
-  for (const auto& n : neighbours_) nnz += 16 * static_cast<long>(n.size());
+  for (const auto& n : neighbours_)
+    nnz += 16 * static_cast<long>(n.size());
   if (nnz > std::numeric_limits<int>::max())
     throw RunError("the system has " + std::to_string(nnz) +
                    " matrix entries, more than the 32-bit indices of this build hold (2^31 - 1)");
@@ -81,7 +86,8 @@ void Assembler::build_pattern() {
   for (std::size_t node = 0; node < neighbours_.size(); ++node)
     for (int d = 0; d < kDofsPerNode; ++d) {
       for (int other : neighbours_[node])
-        for (int c = 0; c < kDofsPerNode; ++c) inner.push_back(kDofsPerNode * other + c);
+        for (int c = 0; c < kDofsPerNode; ++c)
+          inner.push_back(kDofsPerNode * other + c);
       outer[kDofsPerNode * node + d + 1] = static_cast<int>(inner.size());
     }
   std::vector<double> zeros(inner.size(), 0.0);
@@ -97,7 +103,8 @@ void Assembler::build_pattern() {
       if (dofs_.prescribed(row) || dofs_.prescribed(tangent_.innerIndexPtr()[k])) constrained_entries_.push_back(k);
   for (std::size_t e = 0; e < element_blocks_.size(); ++e)
     for (int b = 0; b < 4; ++b)
-      for (int a = 0; a < 4; ++a) element_blocks_[e][4 * b + a] = entry(tets_[e][b], 0, tets_[e][a], 0);
+      for (int a = 0; a < 4; ++a)
+        element_blocks_[e][4 * b + a] = entry(tets_[e][b], 0, tets_[e][a], 0);
 }
 
 int Assembler::entry(int row_node, int d, int col_node, int c) const {
@@ -112,13 +119,15 @@ void Assembler::add_velocity_block(int row_node, int col_node, const Eigen::Matr
   const int row_length = kDofsPerNode * static_cast<int>(neighbours_[row_node].size());
   double* values = tangent_.valuePtr();
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) values[first + i * row_length + j] += block(i, j);
+    for (int j = 0; j < 3; ++j)
+      values[first + i * row_length + j] += block(i, j);
 }
 
 void Assembler::finish_tangent() {
   // Prescribed rows and columns out, then the mean free diagonal per kind on them.
   double* values = tangent_.valuePtr();
-  for (int k : constrained_entries_) values[k] = 0.0;
+  for (int k : constrained_entries_)
+    values[k] = 0.0;
   double sum[2] = {0.0, 0.0};
   int count[2] = {0, 0};
   for (int dof = 0; dof < dofs_.dof_count(); ++dof) {
@@ -172,7 +181,8 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
           result.residual.segment<4>(kDofsPerNode * t[a]) += system.residual.segment<4>(4 * a);
         if (!with_tangent) continue;
         if (system.viscosity > 0.0)
-          for (int a = 0; a < 4; ++a) pressure_mass_[t[a]] += 0.25 * system.volume / system.viscosity;
+          for (int a = 0; a < 4; ++a)
+            pressure_mass_[t[a]] += 0.25 * system.volume / system.viscosity;
         // Every entry, prescribed ones too: finish_tangent() takes those out.
         const std::array<int, 16>& blocks = element_blocks_[e];
         for (int b = 0; b < 4; ++b) {
@@ -180,7 +190,8 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
           for (int a = 0; a < 4; ++a) {
             double* block = values + blocks[4 * b + a]; // row 4 t[b], column 4 t[a]
             for (int d = 0; d < 4; ++d)
-              for (int c = 0; c < 4; ++c) block[d * row_length + c] += system.tangent(4 * b + d, 4 * a + c);
+              for (int c = 0; c < 4; ++c)
+                block[d * row_length + c] += system.tangent(4 * b + d, 4 * a + c);
           }
         }
       }
@@ -199,7 +210,8 @@ void Assembler::bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorX
   tbb::parallel_for(tbb::blocked_range<int>(0, mesh.tet_count(), 256), [&](const auto& range) {
     Vec16 local;
     for (int e = range.begin(); e != range.end(); ++e) {
-      for (int a = 0; a < 4; ++a) local.segment<4>(4 * a) = delta.segment<4>(kDofsPerNode * mesh.tets[e][a]);
+      for (int a = 0; a < 4; ++a)
+        local.segment<4>(4 * a) = delta.segment<4>(kDofsPerNode * mesh.tets[e][a]);
       const auto& c = bubble_condensation_[e];
       bubble_delta.segment<3>(3 * e) = -(c.col(16) + c.leftCols<16>() * local);
     }

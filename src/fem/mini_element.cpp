@@ -8,9 +8,9 @@
 namespace anvil::fem {
 namespace {
 
+using material::kSqrt2;
 using material::Mat6;
 using material::Vec6;
-using material::kSqrt2;
 
 /// Mandel strain of the velocity field v ⊗ g (one shape-function gradient g
 /// times a unit vector per column): 6×3 block.
@@ -20,9 +20,12 @@ Eigen::Matrix<double, 6, 3> strain_operator(const Vec3& g) {
   b(0, 0) = g.x();
   b(1, 1) = g.y();
   b(2, 2) = g.z();
-  b(3, 0) = s * g.y(); b(3, 1) = s * g.x();
-  b(4, 1) = s * g.z(); b(4, 2) = s * g.y();
-  b(5, 0) = s * g.z(); b(5, 2) = s * g.x();
+  b(3, 0) = s * g.y();
+  b(3, 1) = s * g.x();
+  b(4, 1) = s * g.z();
+  b(4, 2) = s * g.y();
+  b(5, 0) = s * g.z();
+  b(5, 2) = s * g.x();
   return b;
 }
 
@@ -41,13 +44,15 @@ bool geometry(const MiniElementInput& in, Geometry& g) {
   if (!(p1.volume > 0.0)) return false; // inverted or flat: the gradients are meaningless
   g.grad = p1.grad;
   g.volume = p1.volume;
-  for (int a = 0; a < 4; ++a) g.linear_strain.block<6, 3>(0, 3 * a) = strain_operator(g.grad.row(a).transpose());
+  for (int a = 0; a < 4; ++a)
+    g.linear_strain.block<6, 3>(0, 3 * a) = strain_operator(g.grad.row(a).transpose());
   return true;
 }
 
 Eigen::Matrix<double, 12, 1> stack(const std::array<Vec3, 4>& nodal) {
   Eigen::Matrix<double, 12, 1> v;
-  for (int a = 0; a < 4; ++a) v.segment<3>(3 * a) = nodal[a];
+  for (int a = 0; a < 4; ++a)
+    v.segment<3>(3 * a) = nodal[a];
   return v;
 }
 
@@ -92,14 +97,16 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
       const mesh::Point x =
           l[0] * in.vertices[0] + l[1] * in.vertices[1] + l[2] * in.vertices[2] + l[3] * in.vertices[3];
       const Vec3 f = body_force(x);
-      for (int a = 0; a < 4; ++a) r_l_force.segment<3>(3 * a) -= w * l[a] * f;
+      for (int a = 0; a < 4; ++a)
+        r_l_force.segment<3>(3 * a) -= w * l[a] * f;
       r_b -= w * 256.0 * l[0] * l[1] * l[2] * l[3] * f;
     }
   }
 
   // Pressure coupling, exact: G_l[(a,j),k] = −(V/4) ∂jλa, G_b[j,k] = (∫b) ∂jλk.
   Eigen::Matrix<double, 12, 4> g_l;
-  for (int a = 0; a < 4; ++a) g_l.block<3, 4>(3 * a, 0).colwise() = -0.25 * volume * g.grad.row(a).transpose();
+  for (int a = 0; a < 4; ++a)
+    g_l.block<3, 4>(3 * a, 0).colwise() = -0.25 * volume * g.grad.row(a).transpose();
   const Eigen::Matrix<double, 3, 4> g_b = kBubbleIntegral * volume * g.grad.transpose();
   Eigen::Matrix4d c = Eigen::Matrix4d::Zero(); // ∫ N_k N_l / κ = V (1 + δkl) / (20 κ)
   const double kappa = law.bulk_modulus();
@@ -111,8 +118,8 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
   // An elastic body's pressure equation is div v + (p − p_n)/κ = 0 (κ = bulk
   // modulus × Δt), p_n the pressure it carries in (zero for other laws).
   const double carried_pressure = -in.state.elastic_stress.head<3>().sum() / 3.0;
-  const Eigen::Vector4d r_p =
-      g_l.transpose() * v_lin + g_b.transpose() * in.bubble_velocity - c * (p - Eigen::Vector4d::Constant(carried_pressure));
+  const Eigen::Vector4d r_p = g_l.transpose() * v_lin + g_b.transpose() * in.bubble_velocity -
+                              c * (p - Eigen::Vector4d::Constant(carried_pressure));
 
   // Condense the bubble: Δb = −K_bb⁻¹ (r_b + K_bl Δl + G_b Δp).
   const Eigen::Matrix<double, 12, 3> k_lb = g.linear_strain.transpose().lazyProduct(tangent_bubble_sum);

@@ -7,9 +7,13 @@
 
 namespace anvil::io {
 
-JsonWriter::JsonWriter() { out_.precision(10); }
+JsonWriter::JsonWriter() {
+  out_.precision(10);
+}
 
-void JsonWriter::newline() { out_ << '\n' << std::string(2 * levels_.size(), ' '); }
+void JsonWriter::newline() {
+  out_ << '\n' << std::string(2 * levels_.size(), ' ');
+}
 
 void JsonWriter::next_item(bool is_object_value) {
   if (after_key_) {
@@ -19,8 +23,10 @@ void JsonWriter::next_item(bool is_object_value) {
   if (levels_.empty()) return;
   Level& level = levels_.back();
   if (!level.empty) out_ << ',';
-  if (level.object || is_object_value) newline();
-  else if (!level.empty) out_ << ' ';
+  if (level.object || is_object_value)
+    newline();
+  else if (!level.empty)
+    out_ << ' ';
   level.empty = false;
 }
 
@@ -62,8 +68,10 @@ JsonWriter& JsonWriter::key(std::string_view name) {
 
 JsonWriter& JsonWriter::value(double number) {
   next_item(false);
-  if (std::isfinite(number)) out_ << number;
-  else out_ << "null";
+  if (std::isfinite(number))
+    out_ << number;
+  else
+    out_ << "null";
   return *this;
 }
 
@@ -82,12 +90,14 @@ JsonWriter& JsonWriter::value(std::string_view text) {
 void JsonWriter::write_string(std::string_view text) {
   out_ << '"';
   for (const char ch : text) {
-    if (ch == '"' || ch == '\\') out_ << '\\' << ch;
+    if (ch == '"' || ch == '\\')
+      out_ << '\\' << ch;
     else if (static_cast<unsigned char>(ch) < 0x20) {
       char escaped[8];
       std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(ch));
       out_ << escaped;
-    } else out_ << ch;
+    } else
+      out_ << ch;
   }
   out_ << '"';
 }

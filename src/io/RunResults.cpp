@@ -29,7 +29,8 @@ void for_each_csv_row(const std::string& path, std::size_t count, const char* he
   for (int number = 2; std::getline(in, line); ++number) {
     cols.clear();
     std::istringstream split(line);
-    for (std::string col; std::getline(split, col, ',');) cols.push_back(col);
+    for (std::string col; std::getline(split, col, ',');)
+      cols.push_back(col);
     try {
       if (cols.size() != count) throw std::invalid_argument("columns");
       parse(cols);
@@ -43,12 +44,13 @@ void for_each_csv_row(const std::string& path, std::size_t count, const char* he
 
 std::vector<LoadRow> read_loads(const std::string& directory, const std::string& surface) {
   std::vector<LoadRow> rows;
-  for_each_csv_row(directory + "/loads.csv", 7, "increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N",
-                   [&](const std::vector<std::string>& c) {
-                     if (c[2] == surface)
-                       rows.push_back({std::stoi(c[0]), std::stod(c[1]), std::stod(c[3]),
-                                       {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}});
-                   });
+  for_each_csv_row(
+      directory + "/loads.csv", 7, "increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N",
+      [&](const std::vector<std::string>& c) {
+        if (c[2] == surface)
+          rows.push_back(
+              {std::stoi(c[0]), std::stod(c[1]), std::stod(c[3]), {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}});
+      });
   return rows;
 }
 
@@ -57,8 +59,14 @@ std::vector<InterfaceRow> read_interface(const std::string& directory) {
   for_each_csv_row(directory + "/interface.csv", 13,
                    "pair,body,node,x_mm,y_mm,z_mm,area_mm2,gap_mm,gap_rate_mm_s,normal_stress_MPa,vx,vy,vz",
                    [&](const std::vector<std::string>& c) {
-                     rows.push_back({c[0], c[1], std::stoi(c[2]), {std::stod(c[3]), std::stod(c[4]), std::stod(c[5])},
-                                     std::stod(c[6]), std::stod(c[7]), std::stod(c[8]), std::stod(c[9]),
+                     rows.push_back({c[0],
+                                     c[1],
+                                     std::stoi(c[2]),
+                                     {std::stod(c[3]), std::stod(c[4]), std::stod(c[5])},
+                                     std::stod(c[6]),
+                                     std::stod(c[7]),
+                                     std::stod(c[8]),
+                                     std::stod(c[9]),
                                      {std::stod(c[10]), std::stod(c[11]), std::stod(c[12])}});
                    });
   return rows;
@@ -83,7 +91,8 @@ std::vector<double> read_last_cell_field(const std::string& directory, const std
                      " components");
   std::vector<double> values(static_cast<std::size_t>(array->GetNumberOfTuples() * components));
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
-    for (int c = 0; c < components; ++c) values[static_cast<std::size_t>(i * components + c)] = array->GetComponent(i, c);
+    for (int c = 0; c < components; ++c)
+      values[static_cast<std::size_t>(i * components + c)] = array->GetComponent(i, c);
   return values;
 }
 

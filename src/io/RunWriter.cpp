@@ -83,7 +83,8 @@ void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation
   Field contact_pressure{"contact_pressure", 1, std::vector<double>(mesh.nodes.size(), 0.0)};
   Field gap{"gap", 1, std::vector<double>(mesh.nodes.size(), -1.0)};
   for (int i = 0; i < mesh.node_count(); ++i) {
-    for (int k = 0; k < 3; ++k) velocity.values.push_back(state.unknowns.nodal[4 * i + k]);
+    for (int k = 0; k < 3; ++k)
+      velocity.values.push_back(state.unknowns.nodal[4 * i + k]);
     pressure.values.push_back(state.unknowns.nodal[4 * i + 3]);
   }
   if (disc.pair_contact) {
@@ -125,17 +126,20 @@ void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation
   if (!elastic && scene.input.time.enabled) cell_fields.push_back(strain);
   // Von Mises stress: what a die designer reads off a deformable die.
   Field von_mises{"von_mises_stress", 1, {}};
-  for (const material::Vec6& sigma : fields.stress) von_mises.values.push_back(material::von_mises(sigma));
+  for (const material::Vec6& sigma : fields.stress)
+    von_mises.values.push_back(material::von_mises(sigma));
   cell_fields.push_back(von_mises);
   std::vector<Field> point_fields{velocity, pressure};
   if (scene.has_contact()) point_fields.insert(point_fields.end(), {contact_status, contact_pressure, gap});
   std::string names = scene.bodies.front().name;
-  for (std::size_t b = 1; b < scene.bodies.size(); ++b) names += "+" + scene.bodies[b].name;
+  for (std::size_t b = 1; b < scene.bodies.size(); ++b)
+    names += "+" + scene.bodies[b].name;
   series_.write(state.increment, state.time, 0, names, mesh, point_fields, cell_fields);
   for (std::size_t d = 0; d < scene.dies.size(); ++d) {
     const die::SurfaceTriangles& t = scene.dies[d].surface->triangles();
     std::vector<mesh::Point> moved = t.vertices;
-    for (auto& p : moved) p += state.dies[d].displacement;
+    for (auto& p : moved)
+      p += state.dies[d].displacement;
     series_.write_surface(state.increment, state.time, int(d) + 1, scene.dies[d].name, moved, t.faces);
   }
 }
@@ -155,7 +159,8 @@ void RunWriter::write_interface(const scene::Scene& scene, const scene::Discreti
   Eigen::VectorXd force = Eigen::VectorXd::Zero(nodal.size());
   disc.pair_contact->add(nodal, force, nullptr); // residual = minus the force on the body
   std::vector<contact::BodyPair> both_sides = disc.pair_contact->pairs();
-  for (contact::BodyPair& pair : both_sides) pair.formulation = contact::PairFormulation::symmetric;
+  for (contact::BodyPair& pair : both_sides)
+    pair.formulation = contact::PairFormulation::symmetric;
   contact::BodyContact probe(both_sides);
   probe.search(state.mesh, 0.05 * scene.reference_length);
   std::ostringstream csv;
@@ -175,8 +180,9 @@ void RunWriter::write_interface(const scene::Scene& scene, const scene::Discreti
   write_file_atomically(directory_ + "/interface.csv", csv.str());
 }
 
-void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state,
-                              const solver::NewtonReport& last, const Timers& timers, double total) const {
+void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisation& disc,
+                              const scene::RunState& state, const solver::NewtonReport& last, const Timers& timers,
+                              double total) const {
   const double volume_end = mesh::volume(state.mesh);
   const double inside_dies = std::accumulate(state.inside_dies.begin(), state.inside_dies.end(), 0.0);
   const double initial = state.volume.initial;
@@ -196,7 +202,8 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
         .end_object();
   json.end_array();
   std::vector<int> newton, krylov;
-  for (const auto& i : state.iterations) newton.push_back(i[0]), krylov.push_back(i[1]);
+  for (const auto& i : state.iterations)
+    newton.push_back(i[0]), krylov.push_back(i[1]);
   json.member("unknowns", disc.solver->free_count())
       .member("increments", state.increment)
       .member("time_s", state.time)
@@ -229,8 +236,12 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
       .end_object();
   if (scene.input.remeshing.enabled) {
     double seconds = 0.0;
-    for (const scene::RemeshRecord& r : state.remeshes) seconds += r.seconds;
-    json.key("remeshing").begin_object().member("count", static_cast<long>(state.remeshes.size())).member("seconds", seconds);
+    for (const scene::RemeshRecord& r : state.remeshes)
+      seconds += r.seconds;
+    json.key("remeshing")
+        .begin_object()
+        .member("count", static_cast<long>(state.remeshes.size()))
+        .member("seconds", seconds);
     json.key("remeshes").begin_array();
     for (const scene::RemeshRecord& r : state.remeshes) {
       json.begin_object()
@@ -257,9 +268,11 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
   for (std::size_t d = 0; d < scene.dies.size(); ++d)
     json.begin_object().member("name", scene.dies[d].name).member("stroke_mm", state.dies[d].stroke).end_object();
   json.end_array().key("effects").begin_array();
-  for (const std::string& effect : scene.effects) json.value(effect);
+  for (const std::string& effect : scene.effects)
+    json.value(effect);
   json.end_array().key("wall_time_s").begin_object();
-  for (const auto& [phase, seconds] : timers.all()) json.member(phase, seconds);
+  for (const auto& [phase, seconds] : timers.all())
+    json.member(phase, seconds);
   json.member("total", total).end_object().end_object();
   write_file_atomically(directory_ + "/summary.json", json.str());
 }

@@ -24,7 +24,8 @@ vtkNew<vtkDoubleArray> to_vtk(const Field& f, std::size_t count) {
   if (f.values.size() != count * static_cast<std::size_t>(f.components))
     throw RunError("VTK output: field '" + f.name + "' has the wrong size");
   for (double v : f.values)
-    if (!std::isfinite(v)) throw RunError("VTK output: field '" + f.name + "' holds a non-finite value; nothing written");
+    if (!std::isfinite(v))
+      throw RunError("VTK output: field '" + f.name + "' holds a non-finite value; nothing written");
   vtkNew<vtkDoubleArray> a;
   a->SetName(f.name.c_str());
   a->SetNumberOfComponents(f.components);
@@ -35,13 +36,15 @@ vtkNew<vtkDoubleArray> to_vtk(const Field& f, std::size_t count) {
 
 } // namespace
 
-VtkSeries::VtkSeries(std::string directory, std::string name) : directory_(std::move(directory)), name_(std::move(name)) {}
+VtkSeries::VtkSeries(std::string directory, std::string name)
+    : directory_(std::move(directory)), name_(std::move(name)) {}
 
 void VtkSeries::write(int increment, double time, int body, const std::string& body_name, const mesh::TetMesh& mesh,
                       const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields) {
   std::vector<long> connectivity;
   connectivity.reserve(4 * mesh.tets.size());
-  for (const mesh::Tet& t : mesh.tets) connectivity.insert(connectivity.end(), t.begin(), t.end());
+  for (const mesh::Tet& t : mesh.tets)
+    connectivity.insert(connectivity.end(), t.begin(), t.end());
   write_grid(increment, time, body, body_name, mesh.nodes, VTK_TETRA, 4, connectivity, point_fields, cell_fields);
 }
 
@@ -49,7 +52,8 @@ void VtkSeries::write_surface(int increment, double time, int part, const std::s
                               const std::vector<mesh::Point>& vertices, const std::vector<std::array<int, 3>>& faces) {
   std::vector<long> connectivity;
   connectivity.reserve(3 * faces.size());
-  for (const auto& f : faces) connectivity.insert(connectivity.end(), f.begin(), f.end());
+  for (const auto& f : faces)
+    connectivity.insert(connectivity.end(), f.begin(), f.end());
   write_grid(increment, time, part, part_name, vertices, VTK_TRIANGLE, 3, connectivity, {}, {});
 }
 
@@ -60,7 +64,8 @@ void VtkSeries::write_grid(int increment, double time, int part, const std::stri
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(nodes.size()));
-  for (std::size_t i = 0; i < nodes.size(); ++i) points->SetPoint(static_cast<vtkIdType>(i), nodes[i].data());
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    points->SetPoint(static_cast<vtkIdType>(i), nodes[i].data());
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(static_cast<vtkIdType>(connectivity_in.size()));
   for (std::size_t i = 0; i < connectivity_in.size(); ++i)
@@ -71,8 +76,10 @@ void VtkSeries::write_grid(int increment, double time, int part, const std::stri
   grid->SetPoints(points);
   grid->SetCells(cell_type, cells);
   const std::size_t cell_count = connectivity_in.size() / static_cast<std::size_t>(nodes_per_cell);
-  for (const Field& f : point_fields) grid->GetPointData()->AddArray(to_vtk(f, nodes.size()));
-  for (const Field& f : cell_fields) grid->GetCellData()->AddArray(to_vtk(f, cell_count));
+  for (const Field& f : point_fields)
+    grid->GetPointData()->AddArray(to_vtk(f, nodes.size()));
+  for (const Field& f : cell_fields)
+    grid->GetCellData()->AddArray(to_vtk(f, cell_count));
 
   char file[256];
   std::snprintf(file, sizeof file, "%s_%s_%06d.vtu", name_.c_str(), part_name.c_str(), increment);
@@ -105,7 +112,8 @@ void VtkSeries::write_collection() const {
          "  <Collection>\n";
   pvd.precision(17);
   for (const Entry& e : entries_)
-    pvd << "    <DataSet timestep=\"" << e.time << "\" group=\"\" part=\"" << e.part << "\" file=\"" << e.file << "\"/>\n";
+    pvd << "    <DataSet timestep=\"" << e.time << "\" group=\"\" part=\"" << e.part << "\" file=\"" << e.file
+        << "\"/>\n";
   pvd << "  </Collection>\n</VTKFile>\n";
   write_file_atomically(directory_ + "/" + name_ + ".pvd", pvd.str());
 }

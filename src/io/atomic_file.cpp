@@ -18,7 +18,8 @@ void write_file_atomically(const std::string& path, const std::string& text) {
 }
 
 void commit_temporary(const std::string& path) {
-  if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0) throw RunError(path + ": cannot rename the temporary file into place");
+  if (std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
+    throw RunError(path + ": cannot rename the temporary file into place");
 }
 
 } // namespace anvil::io

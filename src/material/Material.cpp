@@ -45,8 +45,7 @@ double NortonHoff::viscosity(double equivalent_rate) const {
   return norton_hoff_viscosity(consistency_, sensitivity_, regularisation_rate_, equivalent_rate);
 }
 
-void NortonHoff::deviatoric_stress(const Vec6& strain_rate, const PointState&, Vec6& stress,
-                                   Mat6& tangent) const {
+void NortonHoff::deviatoric_stress(const Vec6& strain_rate, const PointState&, Vec6& stress, Mat6& tangent) const {
   norton_hoff_stress(consistency_, sensitivity_, regularisation_rate_, strain_rate, stress, tangent);
 }
 

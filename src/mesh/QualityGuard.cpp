@@ -10,7 +10,8 @@ QualityGuard::QualityGuard(const TetMesh& mesh) : tets_of_(tets_around_nodes(mes
 
 double QualityGuard::worst_around(const TetMesh& mesh, int node) const {
   double worst = 1.0;
-  for (int e : tets_of_[node]) worst = std::min(worst, quality(mesh, e));
+  for (int e : tets_of_[node])
+    worst = std::min(worst, quality(mesh, e));
   return worst;
 }
 

@@ -30,7 +30,8 @@ void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged, const st
     }
   }
   std::map<std::array<int, 3>, int> tag_of;
-  for (std::size_t i = 0; i < tagged.size(); ++i) tag_of[sorted(tagged[i])] = tags[i];
+  for (std::size_t i = 0; i < tagged.size(); ++i)
+    tag_of[sorted(tagged[i])] = tags[i];
 
   mesh.boundary_faces.clear();
   mesh.boundary_tags.clear();
@@ -61,16 +62,15 @@ void validate(const TetMesh& mesh, const std::string& source) {
                            std::to_string(t[a] + 1));
     const double q = quality(mesh, e);
     if (!std::isfinite(q) || q <= 0.0)
-      throw InputError(source + ": tetrahedron " + std::to_string(e + 1) +
-                       (q < 0.0 ? " is inverted (negative volume: det[x1-x0,x2-x0,x3-x0] < 0)"
-                                : " is degenerate (zero volume)"));
+      throw InputError(
+          source + ": tetrahedron " + std::to_string(e + 1) +
+          (q < 0.0 ? " is inverted (negative volume: det[x1-x0,x2-x0,x3-x0] < 0)" : " is degenerate (zero volume)"));
     if (q < 1e-8)
       throw InputError(source + ": tetrahedron " + std::to_string(e + 1) + " is degenerate (quality " +
                        std::to_string(q) + ", volume " + std::to_string(signed_volume(mesh, e)) + " mm3)");
   }
   for (int i = 0; i < n; ++i) {
-    if (!used[i])
-      throw InputError(source + ": node " + std::to_string(i + 1) + " is not used by any tetrahedron");
+    if (!used[i]) throw InputError(source + ": node " + std::to_string(i + 1) + " is not used by any tetrahedron");
     if (!mesh.nodes[i].allFinite())
       throw InputError(source + ": node " + std::to_string(i + 1) + " has a non-finite coordinate");
   }
@@ -78,21 +78,24 @@ void validate(const TetMesh& mesh, const std::string& source) {
 
 double volume(const TetMesh& mesh) {
   double v = 0.0;
-  for (int e = 0; e < mesh.tet_count(); ++e) v += signed_volume(mesh, e);
+  for (int e = 0; e < mesh.tet_count(); ++e)
+    v += signed_volume(mesh, e);
   return v;
 }
 
 std::vector<char> boundary_node_flags(const TetMesh& mesh) {
   std::vector<char> on_boundary(mesh.nodes.size(), 0);
   for (const Triangle& f : mesh.boundary_faces)
-    for (int node : f) on_boundary[node] = 1;
+    for (int node : f)
+      on_boundary[node] = 1;
   return on_boundary;
 }
 
 std::vector<std::vector<int>> tets_around_nodes(const TetMesh& mesh) {
   std::vector<std::vector<int>> around(mesh.nodes.size());
   for (int e = 0; e < mesh.tet_count(); ++e)
-    for (int v : mesh.tets[e]) around[v].push_back(e);
+    for (int v : mesh.tets[e])
+      around[v].push_back(e);
   return around;
 }
 
@@ -101,15 +104,21 @@ MeshRange whole_range(const TetMesh& mesh) {
 }
 
 MeshRange append(TetMesh& mesh, const TetMesh& part) {
-  const MeshRange range{mesh.node_count(), part.node_count(), mesh.tet_count(), part.tet_count(),
-                        static_cast<int>(mesh.boundary_faces.size()), static_cast<int>(part.boundary_faces.size())};
+  const MeshRange range{mesh.node_count(),
+                        part.node_count(),
+                        mesh.tet_count(),
+                        part.tet_count(),
+                        static_cast<int>(mesh.boundary_faces.size()),
+                        static_cast<int>(part.boundary_faces.size())};
   mesh.nodes.insert(mesh.nodes.end(), part.nodes.begin(), part.nodes.end());
   for (Tet t : part.tets) {
-    for (int& v : t) v += range.first_node;
+    for (int& v : t)
+      v += range.first_node;
     mesh.tets.push_back(t);
   }
   for (Triangle f : part.boundary_faces) {
-    for (int& v : f) v += range.first_node;
+    for (int& v : f)
+      v += range.first_node;
     mesh.boundary_faces.push_back(f);
   }
   mesh.boundary_tags.insert(mesh.boundary_tags.end(), part.boundary_tags.begin(), part.boundary_tags.end());
@@ -121,12 +130,14 @@ TetMesh extract(const TetMesh& mesh, const MeshRange& range) {
   part.nodes.assign(mesh.nodes.begin() + range.first_node, mesh.nodes.begin() + range.first_node + range.node_count);
   for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e) {
     Tet t = mesh.tets[e];
-    for (int& v : t) v -= range.first_node;
+    for (int& v : t)
+      v -= range.first_node;
     part.tets.push_back(t);
   }
   for (int f = range.first_face; f < range.first_face + range.face_count; ++f) {
     Triangle t = mesh.boundary_faces[f];
-    for (int& v : t) v -= range.first_node;
+    for (int& v : t)
+      v -= range.first_node;
     part.boundary_faces.push_back(t);
     part.boundary_tags.push_back(mesh.boundary_tags[f]);
   }
@@ -135,7 +146,8 @@ TetMesh extract(const TetMesh& mesh, const MeshRange& range) {
 
 double volume(const TetMesh& mesh, const MeshRange& range) {
   double v = 0.0;
-  for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e) v += signed_volume(mesh, e);
+  for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e)
+    v += signed_volume(mesh, e);
   return v;
 }
 

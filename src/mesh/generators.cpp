@@ -20,8 +20,7 @@ void orient_positive(TetMesh& mesh) {
 }
 
 /// Tags each boundary face by its outward normal's dominant direction.
-template <class TagOfNormal>
-void tag_by_normal(TetMesh& mesh, TagOfNormal tag_of_normal) {
+template <class TagOfNormal> void tag_by_normal(TetMesh& mesh, TagOfNormal tag_of_normal) {
   build_boundary(mesh);
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
     mesh.boundary_tags[f] = tag_of_normal(area_vector(mesh, mesh.boundary_faces[f]).normalized());
@@ -32,9 +31,9 @@ void tag_by_normal(TetMesh& mesh, TagOfNormal tag_of_normal) {
 
 TetMesh make_box(const Point& origin, const Point& size, double element_size) {
   if (!(element_size > 0.0)) throw InputError("box mesh: element_size must be > 0");
-  return make_box(origin, size,
-                  {cells_for(size.x(), element_size), cells_for(size.y(), element_size),
-                   cells_for(size.z(), element_size)});
+  return make_box(
+      origin, size,
+      {cells_for(size.x(), element_size), cells_for(size.y(), element_size), cells_for(size.z(), element_size)});
 }
 
 TetMesh make_box(const Point& origin, const Point& size, const std::array<int, 3>& cells) {
@@ -93,7 +92,8 @@ TetMesh make_cylinder(double radius, double height, double element_size) {
   for (int k = 1; k <= rings; ++k) {
     const int n_out = 6 * k, out0 = ring_start[k];
     if (k == 1) {
-      for (int j = 0; j < n_out; ++j) triangles.push_back({0, out0 + j, out0 + (j + 1) % n_out});
+      for (int j = 0; j < n_out; ++j)
+        triangles.push_back({0, out0 + j, out0 + (j + 1) % n_out});
       continue;
     }
     const int n_in = 6 * (k - 1), in0 = ring_start[k - 1];
@@ -113,7 +113,8 @@ TetMesh make_cylinder(double radius, double height, double element_size) {
   TetMesh mesh;
   const int per_layer = static_cast<int>(disc.size());
   for (int l = 0; l <= layers; ++l)
-    for (const auto& p : disc) mesh.nodes.emplace_back(p.x(), p.y(), height * l / layers);
+    for (const auto& p : disc)
+      mesh.nodes.emplace_back(p.x(), p.y(), height * l / layers);
   for (int l = 0; l < layers; ++l) {
     for (Triangle tri : triangles) {
       std::sort(tri.begin(), tri.end());

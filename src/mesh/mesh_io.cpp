@@ -38,12 +38,11 @@ public:
 
   /// Skips tokens up to and including `keyword`.
   void skip_to(const std::string& keyword) {
-    while (word() != keyword) {}
+    while (word() != keyword) {
+    }
   }
 
-  [[noreturn]] void fail(const std::string& message) const {
-    throw InputError(where(path_, line_) + ": " + message);
-  }
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(where(path_, line_) + ": " + message); }
 
 private:
   bool fill() {
@@ -90,13 +89,15 @@ struct RawMesh {
     };
     for (std::size_t e = 0; e < tets.size(); ++e) {
       Tet t;
-      for (int a = 0; a < 4; ++a) t[a] = index(tets[e][a], "tetrahedron", e);
+      for (int a = 0; a < 4; ++a)
+        t[a] = index(tets[e][a], "tetrahedron", e);
       mesh.tets.push_back(t);
     }
     std::vector<Triangle> tagged;
     for (std::size_t f = 0; f < triangles.size(); ++f) {
       Triangle t;
-      for (int a = 0; a < 3; ++a) t[a] = index(triangles[f][a], "triangle", f);
+      for (int a = 0; a < 3; ++a)
+        t[a] = index(triangles[f][a], "triangle", f);
       tagged.push_back(t);
     }
     validate(mesh, path);
@@ -130,9 +131,11 @@ void read_gmsh2(Tokens& tokens, RawMesh& raw) {
         }
         const int node_count = type == 4 ? 4 : type == 2 ? 3 : type == 15 ? 1 : type == 1 ? 2 : -1;
         if (node_count < 0)
-          tokens.fail("element type " + std::to_string(type) + " is not supported (linear tets, triangles, lines, points)");
+          tokens.fail("element type " + std::to_string(type) +
+                      " is not supported (linear tets, triangles, lines, points)");
         std::array<long, 4> v{};
-        for (int a = 0; a < node_count; ++a) v[a] = tokens.number<long>("a node id");
+        for (int a = 0; a < node_count; ++a)
+          v[a] = tokens.number<long>("a node id");
         if (type == 4) raw.tets.push_back(v);
         if (type == 2) {
           raw.triangles.push_back({v[0], v[1], v[2]});
@@ -153,11 +156,13 @@ void read_gmsh4(Tokens& tokens, RawMesh& raw) {
     const std::string section = tokens.word();
     if (section == "$Entities") {
       long counts[4];
-      for (auto& c : counts) c = tokens.number<long>("an entity count");
+      for (auto& c : counts)
+        c = tokens.number<long>("an entity count");
       for (int dim = 0; dim < 4; ++dim)
         for (long i = 0; i < counts[dim]; ++i) {
           const int tag = tokens.number<int>("an entity tag");
-          for (int c = 0; c < (dim == 0 ? 3 : 6); ++c) tokens.number<double>("a bounding coordinate");
+          for (int c = 0; c < (dim == 0 ? 3 : 6); ++c)
+            tokens.number<double>("a bounding coordinate");
           const long physical_count = tokens.number<long>("a physical tag count");
           for (long p = 0; p < physical_count; ++p) {
             const int physical = tokens.number<int>("a physical tag");
@@ -165,7 +170,8 @@ void read_gmsh4(Tokens& tokens, RawMesh& raw) {
           }
           if (dim > 0) {
             const long bounding = tokens.number<long>("a bounding entity count");
-            for (long b = 0; b < bounding; ++b) tokens.number<long>("a bounding entity tag");
+            for (long b = 0; b < bounding; ++b)
+              tokens.number<long>("a bounding entity tag");
           }
         }
       tokens.skip_to("$EndEntities");
@@ -180,7 +186,8 @@ void read_gmsh4(Tokens& tokens, RawMesh& raw) {
         if (tokens.number<int>("the parametric flag") != 0) tokens.fail("parametric nodes are not supported");
         const long n = tokens.number<long>("a node count");
         std::vector<long> ids(static_cast<std::size_t>(n));
-        for (auto& id : ids) id = tokens.number<long>("a node tag");
+        for (auto& id : ids)
+          id = tokens.number<long>("a node tag");
         for (long id : ids) {
           const double x = tokens.number<double>("x"), y = tokens.number<double>("y"), z = tokens.number<double>("z");
           raw.add_node(id, Point(x, y, z), tokens);
@@ -189,7 +196,8 @@ void read_gmsh4(Tokens& tokens, RawMesh& raw) {
       tokens.skip_to("$EndNodes");
     } else if (section == "$Elements") {
       const long blocks = tokens.number<long>("a block count");
-      for (int c = 0; c < 3; ++c) tokens.number<long>("an element count or tag");
+      for (int c = 0; c < 3; ++c)
+        tokens.number<long>("an element count or tag");
       for (long b = 0; b < blocks; ++b) {
         tokens.number<int>("an entity dimension");
         const int entity = tokens.number<int>("an entity tag");
@@ -197,11 +205,13 @@ void read_gmsh4(Tokens& tokens, RawMesh& raw) {
         const long n = tokens.number<long>("an element count");
         const int node_count = type == 4 ? 4 : type == 2 ? 3 : type == 15 ? 1 : type == 1 ? 2 : -1;
         if (node_count < 0)
-          tokens.fail("element type " + std::to_string(type) + " is not supported (linear tets, triangles, lines, points)");
+          tokens.fail("element type " + std::to_string(type) +
+                      " is not supported (linear tets, triangles, lines, points)");
         for (long i = 0; i < n; ++i) {
           tokens.number<long>("an element tag");
           std::array<long, 4> v{};
-          for (int a = 0; a < node_count; ++a) v[a] = tokens.number<long>("a node tag");
+          for (int a = 0; a < node_count; ++a)
+            v[a] = tokens.number<long>("a node tag");
           if (type == 4) raw.tets.push_back(v);
           if (type == 2) {
             raw.triangles.push_back({v[0], v[1], v[2]});
@@ -228,13 +238,17 @@ TetMesh read_gmsh(const std::string& path) {
   Tokens tokens(path);
   if (tokens.word() != "$MeshFormat") tokens.fail("expected $MeshFormat: not a Gmsh ASCII file");
   const std::string version = tokens.word();
-  if (tokens.number<int>("the file type (0 = ASCII)") != 0) tokens.fail("binary Gmsh files are not supported; save as ASCII");
+  if (tokens.number<int>("the file type (0 = ASCII)") != 0)
+    tokens.fail("binary Gmsh files are not supported; save as ASCII");
   tokens.number<int>("the data size");
   tokens.skip_to("$EndMeshFormat");
   RawMesh raw;
-  if (version.rfind("2.2", 0) == 0) read_gmsh2(tokens, raw);
-  else if (version.rfind("4.1", 0) == 0) read_gmsh4(tokens, raw);
-  else tokens.fail("Gmsh format " + version + " is not supported (2.2 or 4.1)");
+  if (version.rfind("2.2", 0) == 0)
+    read_gmsh2(tokens, raw);
+  else if (version.rfind("4.1", 0) == 0)
+    read_gmsh4(tokens, raw);
+  else
+    tokens.fail("Gmsh format " + version + " is not supported (2.2 or 4.1)");
   return raw.finish(path);
 }
 
@@ -260,7 +274,8 @@ TetMesh read_medit(const std::string& path) {
       const long n = tokens.number<long>("a triangle count");
       for (long i = 0; i < n; ++i) {
         std::array<long, 3> v{};
-        for (auto& x : v) x = tokens.number<long>("a vertex number");
+        for (auto& x : v)
+          x = tokens.number<long>("a vertex number");
         raw.triangles.push_back(v);
         raw.triangle_tags.push_back(tokens.number<int>("a triangle reference"));
       }
@@ -268,14 +283,16 @@ TetMesh read_medit(const std::string& path) {
       const long n = tokens.number<long>("a tetrahedron count");
       for (long i = 0; i < n; ++i) {
         std::array<long, 4> v{};
-        for (auto& x : v) x = tokens.number<long>("a vertex number");
+        for (auto& x : v)
+          x = tokens.number<long>("a vertex number");
         tokens.number<int>("a tetrahedron reference");
         raw.tets.push_back(v);
       }
     } else if (keyword == "edges" || keyword == "corners" || keyword == "ridges" || keyword == "requiredvertices") {
       const long n = tokens.number<long>("a count");
       const int per = keyword == "edges" ? 3 : 1;
-      for (long i = 0; i < n * per; ++i) tokens.number<long>("an entry");
+      for (long i = 0; i < n * per; ++i)
+        tokens.number<long>("an entry");
     } else {
       tokens.fail("unknown Medit keyword '" + keyword + "'");
     }

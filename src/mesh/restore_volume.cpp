@@ -3,10 +3,12 @@
 namespace anvil::mesh {
 
 double restore_volume(TetMesh& mesh, double target, const std::vector<char>& movable) {
-  std::vector<Point> normal(mesh.nodes.size(), Point::Zero()); // Σ face area vectors / 3: the node's share of the surface
+  std::vector<Point> normal(mesh.nodes.size(),
+                            Point::Zero()); // Σ face area vectors / 3: the node's share of the surface
   for (const Triangle& face : mesh.boundary_faces) {
     const Point third = area_vector(mesh, face) / 3.0;
-    for (int v : face) normal[v] += third;
+    for (int v : face)
+      normal[v] += third;
   }
   double area = 0.0;
   for (std::size_t v = 0; v < mesh.nodes.size(); ++v)

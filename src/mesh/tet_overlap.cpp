@@ -14,8 +14,7 @@ struct Pieces {
   int count = 0;
   void add(const Point& p0, const Point& p1, const Point& p2, const Point& p3) { tets[count++] = {p0, p1, p2, p3}; }
   /// A triangular prism, a_i joined to b_i by planar quads, as three tets.
-  void add_prism(const Point& a0, const Point& a1, const Point& a2, const Point& b0, const Point& b1,
-                 const Point& b2) {
+  void add_prism(const Point& a0, const Point& a1, const Point& a2, const Point& b0, const Point& b1, const Point& b2) {
     add(a0, a1, a2, b0);
     add(a1, a2, b0, b1);
     add(a2, b0, b1, b2);
@@ -36,13 +35,17 @@ void clip(const TetCorners& t, const HalfSpace& h, Pieces& out) {
   int n_in = 0, n_out = 0;
   for (int k = 0; k < 4; ++k) {
     d[k] = h.distance(t[k]);
-    if (d[k] <= 0.0) in[n_in++] = k;
-    else outside[n_out++] = k;
+    if (d[k] <= 0.0)
+      in[n_in++] = k;
+    else
+      outside[n_out++] = k;
   }
   // Where the edge from kept vertex i to cut vertex o crosses the plane (d_o > 0 ≥ d_i).
   auto cut = [&](int i, int o) { return Point(t[i] + d[i] / (d[i] - d[o]) * (t[o] - t[i])); };
   switch (n_in) {
-  case 4: out.add(t[0], t[1], t[2], t[3]); break;
+  case 4:
+    out.add(t[0], t[1], t[2], t[3]);
+    break;
   case 3: { // the tet less a corner: prism between the kept face and the cut
     const int o = outside[0];
     out.add_prism(t[in[0]], t[in[1]], t[in[2]], cut(in[0], o), cut(in[1], o), cut(in[2], o));
@@ -53,8 +56,11 @@ void clip(const TetCorners& t, const HalfSpace& h, Pieces& out) {
     out.add_prism(t[i], cut(i, a), cut(i, b), t[j], cut(j, a), cut(j, b));
     break;
   }
-  case 1: out.add(t[in[0]], cut(in[0], outside[0]), cut(in[0], outside[1]), cut(in[0], outside[2])); break;
-  default: break; // all cut away
+  case 1:
+    out.add(t[in[0]], cut(in[0], outside[0]), cut(in[0], outside[1]), cut(in[0], outside[2]));
+    break;
+  default:
+    break; // all cut away
   }
 }
 
@@ -72,7 +78,8 @@ Overlap tet_overlap(const TetCorners& a, const TetCorners& b) {
     h.offset = h.normal.dot(p);
     Pieces& next = buffers[1 - current];
     next.count = 0;
-    for (int k = 0; k < buffers[current].count; ++k) clip(buffers[current].tets[k], h, next);
+    for (int k = 0; k < buffers[current].count; ++k)
+      clip(buffers[current].tets[k], h, next);
     current = 1 - current;
   }
   Overlap o;

@@ -20,10 +20,10 @@ namespace {
 
 /// One body's new mesh, the best of up to three tries.
 struct Remeshed {
-  mesh::TetMesh remeshed;       ///< CGAL's mesh of the old body: the fields are transferred onto it
-  mesh::TetMesh mesh;           ///< the same, fitted to the dies
-  double edge_length = 0.0;     ///< mm
-  double worst = 0.0;           ///< worst quality of `mesh`
+  mesh::TetMesh remeshed;   ///< CGAL's mesh of the old body: the fields are transferred onto it
+  mesh::TetMesh mesh;       ///< the same, fitted to the dies
+  double edge_length = 0.0; ///< mm
+  double worst = 0.0;       ///< worst quality of `mesh`
   PutBack put_back;
   double volume_put_back = 0.0; ///< mm³, of `mesh` after the put-back, before keep_material
   double given_back = 0.0;      ///< mm, keep_material's move of the free surface
@@ -66,14 +66,16 @@ Remeshed remesh_part(const scene::Scene& scene, const scene::RunState& state, in
   for (double scale : {0.95, 0.9}) {
     if (best.worst >= spec.quality) break;
     Remeshed again = make(scale);
-    log::info("    remesh of '%s' gave worst quality %.3f (below %g); with h %.3g mm: %.3f", body.name.c_str(), best.worst,
-              spec.quality, again.edge_length, again.worst);
+    log::info("    remesh of '%s' gave worst quality %.3f (below %g); with h %.3g mm: %.3f", body.name.c_str(),
+              best.worst, spec.quality, again.edge_length, again.worst);
     if (again.worst > best.worst) best = std::move(again);
   }
   return best;
 }
 
-double relative(double after, double before) { return before != 0.0 ? after / before - 1.0 : after - before; }
+double relative(double after, double before) {
+  return before != 0.0 ? after / before - 1.0 : after - before;
+}
 
 void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
                    std::span<const int> touching_die, std::span<const double> rate, Timers& timers) {
@@ -107,9 +109,9 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       continue;
     }
     const PointLocator in_old(part);
-    const Remeshed best = remesh_part(scene, state, int(b), part, in_old,
-                                      touching_die.subspan(range.first_node, range.node_count),
-                                      rate.subspan(range.first_tet, range.tet_count), material_before[b]);
+    const Remeshed best =
+        remesh_part(scene, state, int(b), part, in_old, touching_die.subspan(range.first_node, range.node_count),
+                    rate.subspan(range.first_tet, range.tet_count), material_before[b]);
     const mesh::TetMesh& fresh = best.mesh;
     const double volume_before = mesh::volume(part), volume_remeshed = mesh::volume(best.remeshed);
     const double volume_after = mesh::volume(fresh);
@@ -174,7 +176,8 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
   for (std::size_t r = first_record; r < state.remeshes.size(); ++r) {
     scene::RemeshRecord& record = state.remeshes[r];
     const int b = record.body;
-    record.material_change = (mesh::volume(state.mesh, state.bodies[b]) - state.inside_dies[b]) / material_before[b] - 1.0;
+    record.material_change =
+        (mesh::volume(state.mesh, state.bodies[b]) - state.inside_dies[b]) / material_before[b] - 1.0;
     if (!scene.dies.empty())
       log::info("    '%s' inside the dies: %.3f%% of its initial volume (%.3f%% before the remesh); material %+.4f%%",
                 scene.bodies[b].name.c_str(), 100.0 * state.inside_dies[b] / scene.bodies[b].initial_volume,
@@ -194,10 +197,11 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     const QualityReport q = assess_quality(state.mesh, state.bodies[b], state.unknowns.nodal, dt, spec.quality);
     const mesh::Point& at = q.worst_at;
     log::detail("  quality '%s': worst %.3f (element %d at %.3g, %.3g, %.3g mm), %d below %g; next increment %.3f",
-              body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
-              q.predicted_worst);
+                body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
+                q.predicted_worst);
     char why[160] = "";
-    if (q.worst < spec.quality) std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
+    if (q.worst < spec.quality)
+      std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
     else if (q.predicted_worst <= 0.0)
       std::snprintf(why, sizeof why, "element %d would invert in the next increment", q.predicted_tet + 1);
     else if (spec.every > 0 && state.increment % spec.every == 0)
@@ -205,7 +209,8 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     else if (!scene.dies.empty()) {
       for (std::size_t d = die_vertices.size(); d < scene.dies.size(); ++d) {
         die_vertices.push_back(scene.dies[d].surface->triangles().vertices);
-        for (mesh::Point& x : die_vertices.back()) x += state.dies[d].displacement;
+        for (mesh::Point& x : die_vertices.back())
+          x += state.dies[d].displacement;
       }
       const std::vector<DieFeature> inside = die_feature_depths(state.mesh, state.bodies[b], die_vertices);
       for (std::size_t d = 0; d < scene.dies.size() && !why[0]; ++d)
@@ -235,8 +240,8 @@ void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const R
   for (std::size_t r = first_record; r < state.remeshes.size(); ++r)
     state.remeshes[r].load_old_mesh = old_mesh, state.remeshes[r].load_new_mesh = new_mesh;
   if (std::isnan(old_mesh) || std::isnan(new_mesh))
-    log::info("    load check: the next increment (dt %.3g s) did not converge on the %s mesh; not measured", next.length,
-              std::isnan(old_mesh) ? "old" : "new");
+    log::info("    load check: the next increment (dt %.3g s) did not converge on the %s mesh; not measured",
+              next.length, std::isnan(old_mesh) ? "old" : "new");
   else
     log::info("    load check, next increment (dt %.3g s) on the old mesh and on the new: %.5g and %.5g kN (%+.2f%%)",
               next.length, old_mesh / 1e3, new_mesh / 1e3, 100.0 * state.remeshes[first_record].load_jump());

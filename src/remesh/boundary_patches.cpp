@@ -20,7 +20,8 @@ std::vector<int> boundary_patches(const mesh::TetMesh& body, double feature_angl
   std::vector<int> parent(faces);
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int f) {
-    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    while (parent[f] != f)
+      f = parent[f] = parent[parent[f]];
     return f;
   };
   const double smooth = std::cos(feature_angle * M_PI / 180.0);

@@ -24,12 +24,15 @@ namespace {
 std::array<double, 4> barycentric(const mesh::TetMesh& m, int e, const mesh::Point& x) {
   const mesh::Tet& t = m.tets[e];
   Eigen::Matrix3d jacobian;
-  for (int k = 0; k < 3; ++k) jacobian.col(k) = m.nodes[t[k + 1]] - m.nodes[t[0]];
+  for (int k = 0; k < 3; ++k)
+    jacobian.col(k) = m.nodes[t[k + 1]] - m.nodes[t[0]];
   const Eigen::Vector3d local = jacobian.partialPivLu().solve(x - m.nodes[t[0]]);
   std::array<double, 4> w{1.0 - local.sum(), local[0], local[1], local[2]};
   double sum = 0.0;
-  for (double& v : w) sum += (v = std::max(v, 0.0));
-  for (double& v : w) v /= sum;
+  for (double& v : w)
+    sum += (v = std::max(v, 0.0));
+  for (double& v : w)
+    v /= sum;
   return w;
 }
 
@@ -45,7 +48,8 @@ struct PointLocator::Vtk {
 PointLocator::PointLocator(const mesh::TetMesh& old_mesh) : mesh_(old_mesh), vtk_(std::make_unique<Vtk>()) {
   vtkNew<vtkPoints> vertices;
   vertices->SetNumberOfPoints(old_mesh.node_count());
-  for (int i = 0; i < old_mesh.node_count(); ++i) vertices->SetPoint(i, old_mesh.nodes[i].data());
+  for (int i = 0; i < old_mesh.node_count(); ++i)
+    vertices->SetPoint(i, old_mesh.nodes[i].data());
   vtkNew<vtkCellArray> cells;
   for (const mesh::Tet& t : old_mesh.tets) {
     const vtkIdType ids[4] = {t[0], t[1], t[2], t[3]};
@@ -71,7 +75,8 @@ Location PointLocator::locate(const mesh::Point& p) const {
 std::vector<Location> PointLocator::locate(const std::vector<mesh::Point>& points) const {
   std::vector<Location> out;
   out.reserve(points.size());
-  for (const mesh::Point& p : points) out.push_back(locate(p));
+  for (const mesh::Point& p : points)
+    out.push_back(locate(p));
   return out;
 }
 
@@ -79,13 +84,15 @@ void PointLocator::tets_in_box(const mesh::Point& low, const mesh::Point& high, 
   double box[6] = {low.x(), high.x(), low.y(), high.y(), low.z(), high.z()};
   vtk_->locator->FindCellsWithinBounds(box, vtk_->found);
   tets.resize(vtk_->found->GetNumberOfIds());
-  for (vtkIdType k = 0; k < vtk_->found->GetNumberOfIds(); ++k) tets[k] = static_cast<int>(vtk_->found->GetId(k));
+  for (vtkIdType k = 0; k < vtk_->found->GetNumberOfIds(); ++k)
+    tets[k] = static_cast<int>(vtk_->found->GetId(k));
 }
 
 std::vector<mesh::Point> centroids(const mesh::TetMesh& m) {
   std::vector<mesh::Point> out;
   out.reserve(m.tets.size());
-  for (int e = 0; e < m.tet_count(); ++e) out.push_back(mesh::centroid(m, e));
+  for (int e = 0; e < m.tet_count(); ++e)
+    out.push_back(mesh::centroid(m, e));
   return out;
 }
 
@@ -94,7 +101,8 @@ Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::Ve
   Eigen::VectorXd out = Eigen::VectorXd::Zero(stride * static_cast<Eigen::Index>(at.size()));
   for (std::size_t i = 0; i < at.size(); ++i)
     for (int a = 0; a < 4; ++a)
-      out.segment(stride * i, stride) += at[i].weights[a] * values.segment(stride * old_mesh.tets[at[i].tet][a], stride);
+      out.segment(stride * i, stride) +=
+          at[i].weights[a] * values.segment(stride * old_mesh.tets[at[i].tet][a], stride);
   return out;
 }
 
@@ -109,7 +117,8 @@ NodeRange range_around_nodes(const std::vector<std::vector<int>>& around, const 
   NodeRange r{std::vector<double>(around.size()), std::vector<double>(around.size())};
   for (std::size_t v = 0; v < around.size(); ++v) {
     r.low[v] = r.high[v] = values[around[v].front()];
-    for (int e : around[v]) r.low[v] = std::min(r.low[v], values[e]), r.high[v] = std::max(r.high[v], values[e]);
+    for (int e : around[v])
+      r.low[v] = std::min(r.low[v], values[e]), r.high[v] = std::max(r.high[v], values[e]);
   }
   return r;
 }
@@ -129,7 +138,8 @@ std::vector<double> remap_element(const mesh::TetMesh& old_mesh, const std::vect
     const mesh::Point& c = old_centres[e];
     // Least squares over the elements sharing a node with e: min Σ_n (f_n − f_e − g·(c_n − c_e))².
     patch.clear();
-    for (int v : old_mesh.tets[e]) patch.insert(patch.end(), around[v].begin(), around[v].end());
+    for (int v : old_mesh.tets[e])
+      patch.insert(patch.end(), around[v].begin(), around[v].end());
     std::sort(patch.begin(), patch.end());
     patch.erase(std::unique(patch.begin(), patch.end()), patch.end());
     Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
@@ -147,8 +157,10 @@ std::vector<double> remap_element(const mesh::TetMesh& old_mesh, const std::vect
     // gradient gives at each vertex stays within the range of the elements around it.
     for (int v : old_mesh.tets[e]) {
       const double rise = g.dot(old_mesh.nodes[v] - c);
-      if (rise > 0.0) limit[e] = std::min(limit[e], (range.high[v] - values[e]) / rise);
-      else if (rise < 0.0) limit[e] = std::min(limit[e], (range.low[v] - values[e]) / rise);
+      if (rise > 0.0)
+        limit[e] = std::min(limit[e], (range.high[v] - values[e]) / rise);
+      else if (rise < 0.0)
+        limit[e] = std::min(limit[e], (range.low[v] - values[e]) / rise);
     }
   }
   auto reconstruction = [&](int e, const mesh::Point& x) {
@@ -162,13 +174,16 @@ std::vector<double> remap_element(const mesh::TetMesh& old_mesh, const std::vect
   std::vector<int> candidates;
   mesh::TetCorners corners, old_corners;
   for (int n = 0; n < new_mesh.tet_count(); ++n) {
-    for (int k = 0; k < 4; ++k) corners[k] = new_mesh.nodes[new_mesh.tets[n][k]];
+    for (int k = 0; k < 4; ++k)
+      corners[k] = new_mesh.nodes[new_mesh.tets[n][k]];
     mesh::Point box_low = corners[0], box_high = corners[0];
-    for (const mesh::Point& x : corners) box_low = box_low.cwiseMin(x), box_high = box_high.cwiseMax(x);
+    for (const mesh::Point& x : corners)
+      box_low = box_low.cwiseMin(x), box_high = box_high.cwiseMax(x);
     in_old.tets_in_box(box_low, box_high, candidates);
     double covered = 0.0, sum = 0.0;
     for (int e : candidates) {
-      for (int k = 0; k < 4; ++k) old_corners[k] = old_mesh.nodes[old_mesh.tets[e][k]];
+      for (int k = 0; k < 4; ++k)
+        old_corners[k] = old_mesh.nodes[old_mesh.tets[e][k]];
       const mesh::Overlap common = mesh::tet_overlap(corners, old_corners);
       if (common.volume <= 0.0) continue;
       covered += common.volume;
@@ -190,7 +205,8 @@ void keep_peaks(const mesh::TetMesh& old_mesh, const std::vector<double>& values
   std::unique_ptr<PointLocator> in_new; // built at the first peak
   for (int e = 0; e < old_mesh.tet_count(); ++e) {
     bool peak = true, flat = true;
-    for (int v : old_mesh.tets[e]) peak = peak && values[e] >= range.high[v], flat = flat && range.low[v] == range.high[v];
+    for (int v : old_mesh.tets[e])
+      peak = peak && values[e] >= range.high[v], flat = flat && range.low[v] == range.high[v];
     if (!peak || flat) continue;
     if (!in_new) in_new = std::make_unique<PointLocator>(new_mesh);
     double& value = new_values[in_new->locate(mesh::centroid(old_mesh, e)).tet];
@@ -207,7 +223,8 @@ std::vector<double> transfer_element(const mesh::TetMesh& old_mesh, const std::v
 
 double integral(const mesh::TetMesh& m, const std::vector<double>& values) {
   double sum = 0.0;
-  for (int e = 0; e < m.tet_count(); ++e) sum += values[e] * mesh::signed_volume(m, e);
+  for (int e = 0; e < m.tet_count(); ++e)
+    sum += values[e] * mesh::signed_volume(m, e);
   return sum;
 }
 

@@ -66,15 +66,17 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
       const mesh::Point onto = shift + die::project_keeping(surface, x - shift, free, one_pass);
       if (!guard.move(fresh, int(i), onto, quality_floor)) continue;
       x = onto; // a later die projects the node from where it now is
-      if (inside) ++done.nodes, done.deepest = std::max(done.deepest, -p.distance);
-      else ++done.closed, done.widest = std::max(done.widest, p.distance);
+      if (inside)
+        ++done.nodes, done.deepest = std::max(done.deepest, -p.distance);
+      else
+        ++done.closed, done.widest = std::max(done.widest, p.distance);
     }
   }
   return done;
 }
 
-double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
-                     double material, double element_size) {
+double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body,
+                     std::span<const scene::DieState> dies_now, double material, double element_size) {
   // CGAL's mesh keeps the old mesh's volume (restore_volume) but not its
   // material: its chords cut across die fillets, the restoration pushes
   // nodes on the dies into them, and the put-back then cuts off more than
@@ -88,7 +90,8 @@ double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body, 
   for (const scene::BoundaryCondition& bc : scene.bodies[body].conditions)
     if (bc.kind == scene::BoundaryKind::symmetry)
       for (int f : scene::select_faces(fresh, bc.faces))
-        for (int v : fresh.boundary_faces[f]) free_node[v] = 0;
+        for (int v : fresh.boundary_faces[f])
+          free_node[v] = 0;
   const double off_die = 0.1 * element_size;
   for (std::size_t i = 0; i < fresh.nodes.size(); ++i)
     for (std::size_t d = 0; d < scene.dies.size() && free_node[i]; ++d)

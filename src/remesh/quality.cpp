@@ -23,7 +23,8 @@ QualityReport assess_quality(const mesh::TetMesh& mesh, const mesh::MeshRange& r
 
 double worst_quality(const mesh::TetMesh& m) {
   double worst = 1.0;
-  for (int e = 0; e < m.tet_count(); ++e) worst = std::min(worst, mesh::quality(m, e));
+  for (int e = 0; e < m.tet_count(); ++e)
+    worst = std::min(worst, mesh::quality(m, e));
   return worst;
 }
 

@@ -27,20 +27,24 @@ using VertexHandle = Triangulation::Vertex_handle;
 /// Face key as build_triangulation looks it up: the smallest index first, the rest in order.
 std::array<int, 3> facet_key(const mesh::Triangle& f) {
   int k = 0;
-  while (f[k] != std::min({f[0], f[1], f[2]})) ++k;
+  while (f[k] != std::min({f[0], f[1], f[2]}))
+    ++k;
   return {f[k], f[(k + 1) % 3], f[(k + 2) % 3]};
 }
 /// Tags whose faces are not all in one plane somewhere in `body`: a patch
 /// that is curved (the barrel of an upset billet), where new facets are
 /// chords of the old surface.
-std::set<int> curved_tags(const mesh::TetMesh& body, const std::vector<int>& patch, const std::vector<int>& tag_of_patch) {
+std::set<int> curved_tags(const mesh::TetMesh& body, const std::vector<int>& patch,
+                          const std::vector<int>& tag_of_patch) {
   std::vector<mesh::Point> first_normal(tag_of_patch.size(), mesh::Point::Zero());
   std::set<int> curved;
   for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
     const mesh::Point n = mesh::area_vector(body, body.boundary_faces[f]).normalized();
     mesh::Point& first = first_normal[patch[f]];
-    if (first.isZero()) first = n;
-    else if (first.dot(n) < 1.0 - 1e-9) curved.insert(tag_of_patch[patch[f]]);
+    if (first.isZero())
+      first = n;
+    else if (first.dot(n) < 1.0 - 1e-9)
+      curved.insert(tag_of_patch[patch[f]]);
   }
   return curved;
 }
@@ -61,7 +65,8 @@ std::map<int, std::pair<mesh::Point, double>> flat_tags(const mesh::TetMesh& bod
       if (normal.dot(n) < 1.0 - 1e-9 || std::abs(normal.dot(body.nodes[v]) - offset) > 1e-9 * (1.0 + std::abs(offset)))
         not_flat.insert(tag);
   }
-  for (int tag : not_flat) plane.erase(tag);
+  for (int tag : not_flat)
+    plane.erase(tag);
   return plane;
 }
 
@@ -71,22 +76,24 @@ std::map<int, std::pair<mesh::Point, double>> flat_tags(const mesh::TetMesh& bod
 std::vector<char> inside_curved_patches(const mesh::TetMesh& mesh, const std::set<int>& curved) {
   std::vector<char> movable(mesh.nodes.size(), 0), fixed(mesh.nodes.size(), 0);
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
-    for (int v : mesh.boundary_faces[f]) (curved.count(mesh.boundary_tags[f]) > 0 ? movable : fixed)[v] = 1;
-  for (std::size_t v = 0; v < movable.size(); ++v) movable[v] = movable[v] && !fixed[v];
+    for (int v : mesh.boundary_faces[f])
+      (curved.count(mesh.boundary_tags[f]) > 0 ? movable : fixed)[v] = 1;
+  for (std::size_t v = 0; v < movable.size(); ++v)
+    movable[v] = movable[v] && !fixed[v];
   return movable;
 }
 
 /// The four corners of a CGAL cell.
 std::array<mesh::Point, 4> corners(Triangulation::Cell_handle c) {
   std::array<mesh::Point, 4> x;
-  for (int i = 0; i < 4; ++i) x[i] = mesh::Point(c->vertex(i)->point().x(), c->vertex(i)->point().y(), c->vertex(i)->point().z());
+  for (int i = 0; i < 4; ++i)
+    x[i] = mesh::Point(c->vertex(i)->point().x(), c->vertex(i)->point().y(), c->vertex(i)->point().z());
   return x;
 }
 
 /// One CGAL isotropic remeshing at `length` of the cells `selected` picks
 /// (boundaries remeshed too, patch borders kept where they are).
-template <class Selector>
-void remesh_pass(Triangulation& tr, double length, int iterations, Selector selected) {
+template <class Selector> void remesh_pass(Triangulation& tr, double length, int iterations, Selector selected) {
   CGAL::tetrahedral_isotropic_remeshing(tr, length,
                                         CGAL::parameters::number_of_iterations(iterations)
                                             .remesh_boundaries(true)
@@ -98,10 +105,12 @@ void remesh_pass(Triangulation& tr, double length, int iterations, Selector sele
 mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {
   std::vector<Triangulation::Point> points;
   points.reserve(body.nodes.size());
-  for (const mesh::Point& x : body.nodes) points.emplace_back(x.x(), x.y(), x.z());
+  for (const mesh::Point& x : body.nodes)
+    points.emplace_back(x.x(), x.y(), x.z());
   std::vector<std::array<int, 5>> cells;
   cells.reserve(body.tets.size());
-  for (const mesh::Tet& t : body.tets) cells.push_back({t[0], t[1], t[2], t[3], 1});
+  for (const mesh::Tet& t : body.tets)
+    cells.push_back({t[0], t[1], t[2], t[3], 1});
   const std::vector<int> patch = boundary_patches(body, settings.feature_angle);
   std::map<std::array<int, 3>, int> patch_of_facet;
   std::vector<int> tag_of_patch(1, 0);
@@ -183,7 +192,8 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
     const auto plane = planes.find(out.boundary_tags[f]);
     if (plane == planes.end()) continue;
     const auto& [normal, offset] = plane->second;
-    for (int v : out.boundary_faces[f]) out.nodes[v] -= (normal.dot(out.nodes[v]) - offset) * normal;
+    for (int v : out.boundary_faces[f])
+      out.nodes[v] -= (normal.dot(out.nodes[v]) - offset) * normal;
   }
   mesh::restore_volume(out, mesh::volume(body), inside_curved_patches(out, curved_tags(body, patch, tag_of_patch)));
   mesh::validate(out, "remeshed body");

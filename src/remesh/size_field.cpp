@@ -8,11 +8,12 @@
 
 namespace anvil::remesh {
 
-std::function<double(const mesh::Point&, double scale)> adaptive_size(
-    const mesh::TetMesh& old, const PointLocator& in_old, std::span<const double> rate, const scene::Scene& scene,
-    std::span<const scene::DieState> dies_now, double coarse, double smallest) {
+std::function<double(const mesh::Point&, double scale)>
+adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<const double> rate,
+              const scene::Scene& scene, std::span<const scene::DieState> dies_now, double coarse, double smallest) {
   double mean_rate = 0.0;
-  for (int e = 0; e < old.tet_count(); ++e) mean_rate += rate[e] * mesh::signed_volume(old, e);
+  for (int e = 0; e < old.tet_count(); ++e)
+    mean_rate += rate[e] * mesh::signed_volume(old, e);
   mean_rate /= mesh::volume(old);
   // The distance to the nearest die at the old nodes, interpolated between
   // them: CGAL asks for the size millions of times, far too often for a die
@@ -20,13 +21,15 @@ std::function<double(const mesh::Point&, double scale)> adaptive_size(
   std::vector<double> die_distance(old.nodes.size(), coarse);
   for (std::size_t i = 0; i < old.nodes.size(); ++i)
     for (std::size_t d = 0; d < scene.dies.size(); ++d)
-      die_distance[i] = std::min(
-          die_distance[i], std::max(0.0, scene.dies[d].surface->project(old.nodes[i] - dies_now[d].displacement).distance));
-  return [&old, &in_old, rate, mean_rate, coarse, smallest, die_distance = std::move(die_distance)](
-             const mesh::Point& x, double scale) {
+      die_distance[i] =
+          std::min(die_distance[i],
+                   std::max(0.0, scene.dies[d].surface->project(old.nodes[i] - dies_now[d].displacement).distance));
+  return [&old, &in_old, rate, mean_rate, coarse, smallest,
+          die_distance = std::move(die_distance)](const mesh::Point& x, double scale) {
     const Location at = in_old.locate(x);
     double to_die = 0.0;
-    for (int a = 0; a < 4; ++a) to_die += at.weights[a] * die_distance[old.tets[at.tet][a]];
+    for (int a = 0; a < 4; ++a)
+      to_die += at.weights[a] * die_distance[old.tets[at.tet][a]];
     double wanted = std::min(scale * coarse, to_die);
     const double here = rate[at.tet];
     if (here > 0.0) wanted = std::min(wanted, scale * coarse * std::sqrt(mean_rate / here));

@@ -21,8 +21,10 @@ std::optional<mesh::Point> common_normal(const mesh::TetMesh& mesh, const std::v
   std::optional<mesh::Point> normal;
   for (int f : faces) {
     const mesh::Point n = mesh::area_vector(mesh, mesh.boundary_faces[f]).normalized();
-    if (!normal) normal = n;
-    else if (normal->dot(n) < 1.0 - 1e-6) return std::nullopt;
+    if (!normal)
+      normal = n;
+    else if (normal->dot(n) < 1.0 - 1e-6)
+      return std::nullopt;
   }
   return normal;
 }
@@ -38,7 +40,8 @@ std::vector<int> select_faces(const mesh::TetMesh& mesh, const FaceSelection& s)
       continue;
     }
     const auto& t = mesh.boundary_faces[f];
-    if (std::all_of(t.begin(), t.end(), [&](int v) { return std::abs((mesh.nodes[v] - s.plane_point).dot(n)) <= s.tolerance; }))
+    if (std::all_of(t.begin(), t.end(),
+                    [&](int v) { return std::abs((mesh.nodes[v] - s.plane_point).dot(n)) <= s.tolerance; }))
       faces.push_back(f);
   }
   return faces;
@@ -46,7 +49,8 @@ std::vector<int> select_faces(const mesh::TetMesh& mesh, const FaceSelection& s)
 
 std::vector<int> face_nodes(const mesh::TetMesh& mesh, const std::vector<int>& faces) {
   std::vector<int> nodes;
-  for (int f : faces) nodes.insert(nodes.end(), mesh.boundary_faces[f].begin(), mesh.boundary_faces[f].end());
+  for (int f : faces)
+    nodes.insert(nodes.end(), mesh.boundary_faces[f].begin(), mesh.boundary_faces[f].end());
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;
@@ -67,7 +71,8 @@ ImposedConditions impose(const mesh::TetMesh& mesh, const std::vector<BoundaryCo
     const std::vector<int> faces = select_faces(mesh, bc.faces);
     if (faces.empty())
       throw InputError(bc.source + ": boundary condition '" + bc.name + "' selects no boundary face" +
-                       (bc.faces.tag >= 0 ? " (no face has tag " + std::to_string(bc.faces.tag) + ")" : " (no face lies on the plane)"));
+                       (bc.faces.tag >= 0 ? " (no face has tag " + std::to_string(bc.faces.tag) + ")"
+                                          : " (no face lies on the plane)"));
     const std::vector<int> nodes = face_nodes(mesh, faces);
     out.nodes_of_condition.push_back(nodes);
     switch (bc.kind) {
@@ -86,7 +91,8 @@ ImposedConditions impose(const mesh::TetMesh& mesh, const std::vector<BoundaryCo
       if (axis < 0)
         throw InputError(bc.source + ": '" + bc.name + "' needs its faces on one plane normal to x, y or z");
       const double value = bc.kind == BoundaryKind::symmetry ? 0.0 : bc.velocity[axis].value_or(0.0);
-      for (int v : nodes) prescribe(v, axis, value);
+      for (int v : nodes)
+        prescribe(v, axis, value);
       break;
     }
     case BoundaryKind::traction:
@@ -95,9 +101,11 @@ ImposedConditions impose(const mesh::TetMesh& mesh, const std::vector<BoundaryCo
       for (int f : faces) {
         const auto& t = mesh.boundary_faces[f];
         const mesh::Point area_normal = mesh::area_vector(mesh, t);
-        const Eigen::Vector3d force =
-            bc.kind == BoundaryKind::traction ? Eigen::Vector3d(bc.traction * area_normal.norm()) : Eigen::Vector3d(-bc.pressure * area_normal);
-        for (int v : t) out.nodal_forces.segment<3>(kDofsPerNode * v) += force / 3.0;
+        const Eigen::Vector3d force = bc.kind == BoundaryKind::traction
+                                          ? Eigen::Vector3d(bc.traction * area_normal.norm())
+                                          : Eigen::Vector3d(-bc.pressure * area_normal);
+        for (int v : t)
+          out.nodal_forces.segment<3>(kDofsPerNode * v) += force / 3.0;
       }
       break;
     }
@@ -107,7 +115,8 @@ ImposedConditions impose(const mesh::TetMesh& mesh, const std::vector<BoundaryCo
 
 Eigen::Vector3d reaction(const ImposedConditions& imposed, int c, const Eigen::VectorXd& residual) {
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
-  for (int v : imposed.nodes_of_condition[c]) force += residual.segment<3>(fem::kDofsPerNode * v);
+  for (int v : imposed.nodes_of_condition[c])
+    force += residual.segment<3>(fem::kDofsPerNode * v);
   return force;
 }
 

@@ -27,8 +27,8 @@ BoundaryKind boundary_kind(const std::string& type) {
 }
 
 /// `plane: {point, normal}` under `spec` (e.g. "dies[].plane"); the normal must not be zero.
-std::pair<mesh::Point, Eigen::Vector3d> read_plane(const CheckedYaml& doc, const YAML::Node& plane, const std::string& spec,
-                                                   const std::string& shown) {
+std::pair<mesh::Point, Eigen::Vector3d> read_plane(const CheckedYaml& doc, const YAML::Node& plane,
+                                                   const std::string& spec, const std::string& shown) {
   const mesh::Point point = doc.vector(plane, "point", spec + ".point");
   const Eigen::Vector3d normal = doc.vector(plane, "normal", spec + ".normal");
   if (normal.norm() == 0.0) doc.fail(plane["normal"], shown + ".normal", "the normal must not be zero");
@@ -37,9 +37,9 @@ std::pair<mesh::Point, Eigen::Vector3d> read_plane(const CheckedYaml& doc, const
 
 /// Calls `read(entry, shown)` for each entry of the list `list` (absent: none),
 /// `shown` being "key[i]", the entry as error messages name it.
-template <class Read>
-void for_each_entry(const YAML::Node& list, const std::string& key, Read read) {
-  for (std::size_t i = 0; list && i < list.size(); ++i) read(list[i], key + "[" + std::to_string(i) + "]");
+template <class Read> void for_each_entry(const YAML::Node& list, const std::string& key, Read read) {
+  for (std::size_t i = 0; list && i < list.size(); ++i)
+    read(list[i], key + "[" + std::to_string(i) + "]");
 }
 
 /// Fails when `item`'s name is already used in `defined` (bodies, dies).
@@ -88,7 +88,8 @@ contact::FrictionLaw read_friction(const CheckedYaml& doc, const YAML::Node& ite
 }
 
 /// Index of the body named by `item[key]`.
-int body_index(const CheckedYaml& doc, const Case& c, const YAML::Node& item, const char* key, const std::string& shown) {
+int body_index(const CheckedYaml& doc, const Case& c, const YAML::Node& item, const char* key,
+               const std::string& shown) {
   const std::string name = item[key].Scalar();
   for (std::size_t b = 0; b < c.bodies.size(); ++b)
     if (c.bodies[b].name == name) return static_cast<int>(b);
@@ -103,8 +104,9 @@ void read_contact_pairs(const CheckedYaml& doc, Case& c) {
     if (pair.master == pair.slave) doc.fail(n["slave"], shown + ".slave", "a body cannot be in contact with itself");
     for (const ContactPairSpec& other : c.contact_pairs)
       if (std::minmax(other.master, other.slave) == std::minmax(pair.master, pair.slave))
-        doc.fail(n, shown, "bodies '" + c.bodies[pair.master].name + "' and '" + c.bodies[pair.slave].name +
-                               "' already form a contact pair");
+        doc.fail(n, shown,
+                 "bodies '" + c.bodies[pair.master].name + "' and '" + c.bodies[pair.slave].name +
+                     "' already form a contact pair");
     pair.formulation = contact::pair_formulation(doc.text(n, "formulation", "contact_pairs[].formulation"));
     pair.friction = read_friction(doc, n, "contact_pairs", shown);
     pair.source = doc.at(n);
@@ -138,7 +140,8 @@ void read_dies(const CheckedYaml& doc, Case& c) {
                               "rpm", "start_angle", "load_limit"})
         if (std::find(keys.begin(), keys.end(), key) == keys.end()) doc.forbid(n, key, shown, context);
     };
-    if (d.motion == "fixed") allow_only({});
+    if (d.motion == "fixed")
+      allow_only({});
     else if (d.motion == "constant" || d.motion == "hydraulic") {
       need("velocity");
       d.velocity = doc.vector(n, "velocity", "dies[].velocity");
@@ -146,7 +149,8 @@ void read_dies(const CheckedYaml& doc, Case& c) {
         need("load_limit");
         d.load_limit = doc.number(n, "load_limit", "dies[].load_limit");
         allow_only({"velocity", "load_limit"});
-      } else allow_only({"velocity"});
+      } else
+        allow_only({"velocity"});
     } else if (d.motion == "table") {
       need("time");
       d.table_time = doc.numbers(n, "time");
@@ -155,7 +159,8 @@ void read_dies(const CheckedYaml& doc, Case& c) {
       d.table_is_speed = static_cast<bool>(n["speed"]);
       d.table_values = doc.numbers(n, d.table_is_speed ? "speed" : "displacement");
       if (d.table_values.size() != d.table_time.size())
-        doc.fail(n[d.table_is_speed ? "speed" : "displacement"], shown + (d.table_is_speed ? ".speed" : ".displacement"),
+        doc.fail(n[d.table_is_speed ? "speed" : "displacement"],
+                 shown + (d.table_is_speed ? ".speed" : ".displacement"),
                  "has " + std::to_string(d.table_values.size()) + " values but 'time' has " +
                      std::to_string(d.table_time.size()));
       for (std::size_t k = 1; k < d.table_time.size(); ++k)
@@ -205,7 +210,8 @@ void read_time(const CheckedYaml& doc, Case& c) {
     if (time.stroke_die < 0)
       doc.fail(stop["die"] ? stop["die"] : stop, "time.stop.die",
                stop["die"] ? "no die is named '" + stop["die"].Scalar() + "'" : "a stroke needs a moving die");
-  } else if (stop["die"]) doc.fail(stop["die"], "time.stop.die", "only used with 'stroke'");
+  } else if (stop["die"])
+    doc.fail(stop["die"], "time.stop.die", "only used with 'stroke'");
   if (stop["gap"]) {
     time.final_gap = doc.number(stop, "gap", "time.stop.gap");
     if (c.dies.size() != 2) doc.fail(stop["gap"], "time.stop.gap", "a die gap needs exactly two dies");
@@ -254,14 +260,16 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     const bool has_file = static_cast<bool>(m["file"]), has_generate = static_cast<bool>(m["generate"]);
     if (has_file == has_generate)
       doc.fail(m, shown + ".mesh", "give exactly one of 'file' (a mesh file) or 'generate' (box or cylinder)");
-    if (has_file) mesh.file = relative_to(path, m["file"].Scalar());
+    if (has_file)
+      mesh.file = relative_to(path, m["file"].Scalar());
     else {
       mesh.generate = m["generate"].Scalar();
       mesh.element_size = doc.number(m, "element_size", "bodies[].mesh.element_size");
       if (mesh.generate == "box") {
         mesh.origin = doc.vector(m, "origin", "bodies[].mesh.origin");
         mesh.size = doc.vector(m, "size", "bodies[].mesh.size");
-        if ((mesh.size.array() <= 0.0).any()) doc.fail(m["size"], shown + ".mesh.size", "every edge length must be > 0 mm");
+        if ((mesh.size.array() <= 0.0).any())
+          doc.fail(m["size"], shown + ".mesh.size", "every edge length must be > 0 mm");
       } else {
         mesh.radius = doc.number(m, "radius", "bodies[].mesh.radius");
         if (mesh.generate == "quarter_ring") {
@@ -282,12 +290,14 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     bc.source = doc.at(n);
     bc.kind = boundary_kind(doc.text(n, "type", "boundary[].type"));
     int body = 0;
-    if (n["body"]) body = body_index(doc, c, n, "body", shown);
+    if (n["body"])
+      body = body_index(doc, c, n, "body", shown);
     else if (c.bodies.size() > 1)
       doc.fail(n, shown, "the case has " + std::to_string(c.bodies.size()) + " bodies: say which one with 'body'");
     if (static_cast<bool>(n["tag"]) == static_cast<bool>(n["plane"]))
       doc.fail(n, shown, "give exactly one face selection: 'tag' or 'plane'");
-    if (n["tag"]) bc.faces.tag = doc.integer(n, "tag", "boundary[].tag");
+    if (n["tag"])
+      bc.faces.tag = doc.integer(n, "tag", "boundary[].tag");
     else {
       const YAML::Node plane = n["plane"];
       std::tie(bc.faces.plane_point, bc.faces.plane_normal) =
@@ -307,11 +317,14 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
       if (n["velocity"]) {
         const mesh::Point v = doc.vector(n, "velocity", "boundary[].velocity");
         bc.velocity = {v.x(), v.y(), v.z()};
-      } else bc.velocity = {0.0, 0.0, 0.0};
+      } else
+        bc.velocity = {0.0, 0.0, 0.0};
       forbid("traction"), forbid("pressure");
       break;
     }
-    case BoundaryKind::symmetry: forbid("velocity"), forbid("traction"), forbid("pressure"); break;
+    case BoundaryKind::symmetry:
+      forbid("velocity"), forbid("traction"), forbid("pressure");
+      break;
     case BoundaryKind::traction:
       require("traction", "a traction condition needs traction: [tx, ty, tz] (MPa)");
       bc.traction = doc.vector(n, "traction", "boundary[].traction");

@@ -83,8 +83,8 @@ void write_checkpoint(const std::string& path, const RunState& s) {
     write_attribute(file, "increment", H5T_NATIVE_INT, &s.increment);
     write_attribute(file, "time", H5T_NATIVE_DOUBLE, &s.time);
     write_attribute(file, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
-    const double volume[6] = {s.volume.initial, s.volume.solver, s.volume.projection, s.volume.largest_increment,
-                              s.volume.compensation, s.volume.remeshing};
+    const double volume[6] = {s.volume.initial,           s.volume.solver,       s.volume.projection,
+                              s.volume.largest_increment, s.volume.compensation, s.volume.remeshing};
     write_array(file, "volume", H5T_NATIVE_DOUBLE, volume, 6, 0);
     std::vector<int> ranges;
     for (const mesh::MeshRange& r : s.bodies)
@@ -92,35 +92,39 @@ void write_checkpoint(const std::string& path, const RunState& s) {
     write_array(file, "body_ranges", H5T_NATIVE_INT, ranges.data(), s.bodies.size(), 6);
     std::vector<double> remeshes;
     for (const RemeshRecord& r : s.remeshes)
-      remeshes.insert(remeshes.end(), {double(r.increment), double(r.body), double(r.nodes_before), double(r.nodes_after),
-                                       r.worst_quality_before, r.worst_quality_after, r.volume_change,
-                                       r.strain_integral_change, r.strain_max_change, r.seconds, r.load_old_mesh,
-                                       r.load_new_mesh, r.material_change});
+      remeshes.insert(remeshes.end(),
+                      {double(r.increment), double(r.body), double(r.nodes_before), double(r.nodes_after),
+                       r.worst_quality_before, r.worst_quality_after, r.volume_change, r.strain_integral_change,
+                       r.strain_max_change, r.seconds, r.load_old_mesh, r.load_new_mesh, r.material_change});
     write_array(file, "remeshes", H5T_NATIVE_DOUBLE, remeshes.data(), s.remeshes.size(), 13);
 
     std::vector<double> nodes;
-    for (const mesh::Point& p : s.mesh.nodes) nodes.insert(nodes.end(), p.data(), p.data() + 3);
+    for (const mesh::Point& p : s.mesh.nodes)
+      nodes.insert(nodes.end(), p.data(), p.data() + 3);
     write_array(file, "nodes", H5T_NATIVE_DOUBLE, nodes.data(), s.mesh.nodes.size(), 3);
     std::vector<long long> tets, faces;
-    for (const mesh::Tet& t : s.mesh.tets) tets.insert(tets.end(), t.begin(), t.end());
-    for (const mesh::Triangle& f : s.mesh.boundary_faces) faces.insert(faces.end(), f.begin(), f.end());
+    for (const mesh::Tet& t : s.mesh.tets)
+      tets.insert(tets.end(), t.begin(), t.end());
+    for (const mesh::Triangle& f : s.mesh.boundary_faces)
+      faces.insert(faces.end(), f.begin(), f.end());
     write_array(file, "tets", H5T_NATIVE_LLONG, tets.data(), s.mesh.tets.size(), 4);
     write_array(file, "boundary_faces", H5T_NATIVE_LLONG, faces.data(), s.mesh.boundary_faces.size(), 3);
     write_array(file, "boundary_tags", H5T_NATIVE_INT, s.mesh.boundary_tags.data(), s.mesh.boundary_tags.size(), 0);
     write_array(file, "nodal", H5T_NATIVE_DOUBLE, s.unknowns.nodal.data(), s.unknowns.nodal.size(), 0);
     write_array(file, "bubble", H5T_NATIVE_DOUBLE, s.unknowns.bubble.data(), s.unknowns.bubble.size(), 0);
-    write_array(file, "equivalent_strain", H5T_NATIVE_DOUBLE, s.equivalent_strain.data(), s.equivalent_strain.size(), 0);
+    write_array(file, "equivalent_strain", H5T_NATIVE_DOUBLE, s.equivalent_strain.data(), s.equivalent_strain.size(),
+                0);
     write_array(file, "elastic_stress", H5T_NATIVE_DOUBLE, s.elastic_stress.data(), s.elastic_stress.size() / 6, 6);
 
     std::vector<double> dies;
     for (const DieState& d : s.dies)
-      dies.insert(dies.end(), {d.press_time, d.speed_factor, d.stroke, d.displacement.x(), d.displacement.y(),
-                               d.displacement.z()});
+      dies.insert(dies.end(),
+                  {d.press_time, d.speed_factor, d.stroke, d.displacement.x(), d.displacement.y(), d.displacement.z()});
     write_array(file, "dies", H5T_NATIVE_DOUBLE, dies.data(), s.dies.size(), 6);
     std::vector<double> loads;
     for (const LoadRecord& r : s.loads)
-      loads.insert(loads.end(), {double(r.increment), r.time, double(r.surface), r.stroke, r.force.x(), r.force.y(),
-                                 r.force.z()});
+      loads.insert(loads.end(),
+                   {double(r.increment), r.time, double(r.surface), r.stroke, r.force.x(), r.force.y(), r.force.z()});
     write_array(file, "loads", H5T_NATIVE_DOUBLE, loads.data(), s.loads.size(), 7);
     write_array(file, "iterations", H5T_NATIVE_INT, s.iterations.data(), s.iterations.size(), 2);
     std::vector<double> outputs;
@@ -144,8 +148,9 @@ RunState read_checkpoint(const std::string& path) {
   int format = 0;
   read_attribute(file, path, "format", H5T_NATIVE_INT, &format);
   if (format < 2 || format > 4)
-    throw InputError(path + ": checkpoint format " + std::to_string(format) + ", expected 2 to 4 (written by another "
-                            "version of anvil: run the case again without --resume)");
+    throw InputError(path + ": checkpoint format " + std::to_string(format) +
+                     ", expected 2 to 4 (written by another "
+                     "version of anvil: run the case again without --resume)");
   read_attribute(file, path, "increment", H5T_NATIVE_INT, &s.increment);
   read_attribute(file, path, "time", H5T_NATIVE_DOUBLE, &s.time);
   read_attribute(file, path, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
@@ -169,7 +174,8 @@ RunState read_checkpoint(const std::string& path) {
     if (per_remesh >= 13) s.remeshes.back().material_change = r[12];
   }
   read_array(file, path, "nodes", H5T_NATIVE_DOUBLE, nodes, 3);
-  for (std::size_t i = 0; i < nodes.size(); i += 3) s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);
+  for (std::size_t i = 0; i < nodes.size(); i += 3)
+    s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);
   read_array(file, path, "tets", H5T_NATIVE_LLONG, tets, 4);
   for (std::size_t i = 0; i < tets.size(); i += 4)
     s.mesh.tets.push_back({int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])});
@@ -188,11 +194,13 @@ RunState read_checkpoint(const std::string& path) {
     s.dies.push_back({dies[i], dies[i + 1], dies[i + 2], {dies[i + 3], dies[i + 4], dies[i + 5]}});
   read_array(file, path, "loads", H5T_NATIVE_DOUBLE, loads, 7);
   for (std::size_t i = 0; i < loads.size(); i += 7)
-    s.loads.push_back({int(loads[i]), loads[i + 1], int(loads[i + 2]), loads[i + 3], {loads[i + 4], loads[i + 5], loads[i + 6]}});
+    s.loads.push_back(
+        {int(loads[i]), loads[i + 1], int(loads[i + 2]), loads[i + 3], {loads[i + 4], loads[i + 5], loads[i + 6]}});
   if (H5Lexists(file, "iterations", H5P_DEFAULT) > 0) { // absent in checkpoints written before it
     std::vector<int> iterations;
     read_array(file, path, "iterations", H5T_NATIVE_INT, iterations, 2);
-    for (std::size_t i = 0; i < iterations.size(); i += 2) s.iterations.push_back({iterations[i], iterations[i + 1]});
+    for (std::size_t i = 0; i < iterations.size(); i += 2)
+      s.iterations.push_back({iterations[i], iterations[i + 1]});
   }
   read_array(file, path, "outputs", H5T_NATIVE_DOUBLE, outputs, 2);
   read_array(file, path, "output_files", H5T_NATIVE_CHAR, files, 1);
@@ -210,7 +218,8 @@ RunState read_checkpoint(const std::string& path) {
   }
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
       s.equivalent_strain.size() != s.mesh.tets.size() ||
-      (!s.elastic_stress.empty() && s.elastic_stress.size() != 6 * s.mesh.tets.size()) || s.mesh.boundary_tags.size() != s.mesh.boundary_faces.size())
+      (!s.elastic_stress.empty() && s.elastic_stress.size() != 6 * s.mesh.tets.size()) ||
+      s.mesh.boundary_tags.size() != s.mesh.boundary_faces.size())
     throw InputError(path + ": checkpoint arrays do not match the mesh");
   // The bodies follow one another and make up the whole mesh.
   mesh::MeshRange end;

@@ -35,16 +35,17 @@ Die build_die(const DieSpec& spec, double body_size) {
   Die d;
   d.name = spec.name;
   d.friction = spec.friction;
-  if (!spec.stl_file.empty()) d.surface = die::read_stl_surface(spec.stl_file, spec.source, spec.stl_offset);
+  if (!spec.stl_file.empty())
+    d.surface = die::read_stl_surface(spec.stl_file, spec.source, spec.stl_offset);
   else
-    d.surface = std::make_unique<die::PlaneSurface>(
-        spec.plane_point, spec.plane_normal, spec.plane_half_size > 0.0 ? spec.plane_half_size : body_size);
+    d.surface = std::make_unique<die::PlaneSurface>(spec.plane_point, spec.plane_normal,
+                                                    spec.plane_half_size > 0.0 ? spec.plane_half_size : body_size);
   if (spec.motion == "constant" || spec.motion == "hydraulic")
     d.kinematics = std::make_unique<die::ConstantVelocity>(spec.velocity);
   else if (spec.motion == "table")
-    d.kinematics = std::make_unique<die::TableMotion>(
-        spec.direction, spec.table_time, spec.table_values,
-        spec.table_is_speed ? die::TableMotion::Quantity::speed : die::TableMotion::Quantity::displacement);
+    d.kinematics = std::make_unique<die::TableMotion>(spec.direction, spec.table_time, spec.table_values,
+                                                      spec.table_is_speed ? die::TableMotion::Quantity::speed
+                                                                          : die::TableMotion::Quantity::displacement);
   else if (spec.motion == "crank")
     d.kinematics = std::make_unique<die::CrankPress>(spec.direction, spec.crank_radius, spec.rod_length, spec.rpm,
                                                      spec.start_angle);

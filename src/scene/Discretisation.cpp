@@ -16,7 +16,8 @@ void append(ImposedConditions& all, const ImposedConditions& body, int first_nod
   join(all.values, body.values);
   join(all.nodal_forces, body.nodal_forces);
   for (std::vector<int> nodes : body.nodes_of_condition) {
-    for (int& n : nodes) n += first_node;
+    for (int& n : nodes)
+      n += first_node;
     all.nodes_of_condition.push_back(std::move(nodes));
   }
 }
@@ -62,14 +63,17 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
   std::vector<material::PointState> states(state.mesh.tets.size());
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     std::fill_n(states.begin() + state.bodies[b].first_tet, state.bodies[b].tet_count, scene.bodies[b].state);
-  for (int e = 0; e < state.mesh.tet_count(); ++e) states[e].equivalent_strain = state.equivalent_strain[e];
+  for (int e = 0; e < state.mesh.tet_count(); ++e)
+    states[e].equivalent_strain = state.equivalent_strain[e];
   for (std::size_t e = 0; e < state.elastic_stress.size() / 6; ++e)
     states[e].elastic_stress = Eigen::Map<const material::Vec6>(&state.elastic_stress[6 * e]);
   for (int k = 0; k < imposed.values.size(); ++k)
     if (imposed.prescribed[k]) state.unknowns.nodal[k] = imposed.values[k];
-  auto solver = std::make_unique<solver::IncrementSolver>(state.mesh, imposed.prescribed, scene.input.linear_solver, timers);
-  return Discretisation{std::move(laws),          std::move(imposed), std::move(states), contact::RigidContact{},
-                        std::move(pairs),         mesh::QualityGuard(state.mesh), std::move(solver)};
+  auto solver =
+      std::make_unique<solver::IncrementSolver>(state.mesh, imposed.prescribed, scene.input.linear_solver, timers);
+  return Discretisation{std::move(laws),         std::move(imposed), std::move(states),
+                        contact::RigidContact{}, std::move(pairs),   mesh::QualityGuard(state.mesh),
+                        std::move(solver)};
 }
 
 } // namespace anvil::scene

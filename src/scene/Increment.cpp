@@ -33,7 +33,8 @@ Eigen::VectorXd external_vector(const Scene& scene, const Discretisation& disc, 
     asked += g * volume * dt;
     for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e) {
       const double quarter = 0.25 * mesh::signed_volume(state.mesh, e);
-      for (int node : state.mesh.tets[e]) external[4 * node + 3] -= g * quarter;
+      for (int node : state.mesh.tets[e])
+        external[4 * node + 3] -= g * quarter;
     }
   }
   return external;
@@ -64,7 +65,8 @@ IncrementOutcome solve_at(const Scene& scene, Discretisation& disc, const RunSta
   // 1e-4 of the stroke over the run, and projection removes it anyway.
   const contact::ContactIncrement increment{.time_step = dt,
                                             .penalty = scales.penalty,
-                                            .regularisation = scene.input.contact.regularisation * scene.reference_velocity,
+                                            .regularisation =
+                                                scene.input.contact.regularisation * scene.reference_velocity,
                                             .gap_tolerance = 1e-4 * scene.reference_velocity,
                                             .recovery_time = nominal,
                                             .flow_stress = scales.flow_stress,
@@ -75,8 +77,9 @@ IncrementOutcome solve_at(const Scene& scene, Discretisation& disc, const RunSta
   IncrementOutcome out;
   out.time_step = dt;
   const Eigen::VectorXd external = external_vector(scene, disc, state, dt, nominal, out.compensation);
-  const solver::IncrementProblem problem{disc.element_laws, disc.point_states,       external, {}, disc.contact_terms(scene),
-                                         scene.reference_velocity, scales.reference_force};
+  const solver::IncrementProblem problem{
+      disc.element_laws,        disc.point_states,     external, {}, disc.contact_terms(scene),
+      scene.reference_velocity, scales.reference_force};
   out.unknowns = state.unknowns;
   Timers::Scope scope(timers, "newton");
   out.report = disc.solver->solve(problem, scene.input.newton, out.unknowns);
@@ -85,14 +88,16 @@ IncrementOutcome solve_at(const Scene& scene, Discretisation& disc, const RunSta
 }
 
 /// Force (N) on every load surface at `inc`'s solution, in Scene::surfaces order.
-std::vector<Eigen::Vector3d> surface_forces(const Scene& scene, const Discretisation& disc, const IncrementOutcome& inc) {
+std::vector<Eigen::Vector3d> surface_forces(const Scene& scene, const Discretisation& disc,
+                                            const IncrementOutcome& inc) {
   const std::vector<Eigen::Vector3d> die_force =
       scene.dies.empty() ? std::vector<Eigen::Vector3d>{} : disc.die_contact.die_forces(inc.unknowns.nodal);
   std::vector<Eigen::Vector3d> forces;
   for (const LoadSurface& surface : scene.surfaces)
     // On a plate: minus the reaction on the body.
-    forces.push_back(surface.die >= 0 ? die_force[surface.die]
-                                      : Eigen::Vector3d(-reaction(disc.imposed, surface.condition, disc.solver->residual())));
+    forces.push_back(surface.die >= 0
+                         ? die_force[surface.die]
+                         : Eigen::Vector3d(-reaction(disc.imposed, surface.condition, disc.solver->residual())));
   return forces;
 }
 
@@ -125,7 +130,8 @@ IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const
   const contact::ContactScales scales = [&] {
     if (!scene.has_contact()) return contact::ContactScales{};
     std::vector<contact::ScaledBody> bodies;
-    for (std::size_t b = 0; b < scene.bodies.size(); ++b) bodies.push_back({state.bodies[b], scene.bodies[b].law.get()});
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+      bodies.push_back({state.bodies[b], scene.bodies[b].law.get()});
     return contact::contact_scales(state.mesh, bodies, disc.element_laws, disc.point_states, state.unknowns,
                                    scene.reference_rate(), scene.body_size, scene.input.contact.penalty);
   }();
@@ -152,8 +158,10 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
   mesh::TetMesh moved = state.mesh;
   std::vector<DieState> dies = state.dies;
   const double volume_before = mesh::volume(state.mesh);
-  for (int i = 0; i < moved.node_count(); ++i) moved.nodes[i] += dt * inc.unknowns.nodal.segment<3>(4 * i);
-  for (std::size_t d = 0; d < scene.dies.size(); ++d) scene.dies[d].advance(dies[d], dt);
+  for (int i = 0; i < moved.node_count(); ++i)
+    moved.nodes[i] += dt * inc.unknowns.nodal.segment<3>(4 * i);
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    scene.dies[d].advance(dies[d], dt);
   const double volume_flow = mesh::volume(moved);
   // Contact nodes back onto their die at its new position, along the node's
   // free directions only (a node on a symmetry plane stays on it), and not
@@ -170,8 +178,8 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
     const std::array<bool, 3> free{!disc.imposed.prescribed[4 * c.node], !disc.imposed.prescribed[4 * c.node + 1],
                                    !disc.imposed.prescribed[4 * c.node + 2]};
     const mesh::Point& x = moved.nodes[c.node];
-    disc.projection_guard.move(moved, c.node,
-                               shift + die::project_keeping(surface, x - shift, free, 1e-9 * scene.reference_length), 0.0);
+    disc.projection_guard.move(
+        moved, c.node, shift + die::project_keeping(surface, x - shift, free, 1e-9 * scene.reference_length), 0.0);
   }
   for (int e = 0; e < moved.tet_count(); ++e)
     if (mesh::signed_volume(moved, e) <= 0.0) {

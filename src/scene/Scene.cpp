@@ -15,11 +15,11 @@ namespace {
 
 mesh::TetMesh build_mesh(const MeshSpec& spec) {
   if (!spec.file.empty()) return mesh::read_mesh(spec.file);
-  mesh::TetMesh m = spec.generate == "box"              ? mesh::make_box(spec.origin, spec.size, spec.element_size)
-                     : spec.generate == "cylinder"       ? mesh::make_cylinder(spec.radius, spec.height, spec.element_size)
-                     : spec.generate == "quarter_cylinder" ? mesh::make_quarter_cylinder(spec.radius, spec.height, spec.element_size)
-                                                        : mesh::make_quarter_ring(spec.radius, spec.inner_radius, spec.height,
-                                                                                  spec.element_size);
+  mesh::TetMesh m = spec.generate == "box"        ? mesh::make_box(spec.origin, spec.size, spec.element_size)
+                    : spec.generate == "cylinder" ? mesh::make_cylinder(spec.radius, spec.height, spec.element_size)
+                    : spec.generate == "quarter_cylinder"
+                        ? mesh::make_quarter_cylinder(spec.radius, spec.height, spec.element_size)
+                        : mesh::make_quarter_ring(spec.radius, spec.inner_radius, spec.height, spec.element_size);
   mesh::validate(m, spec.source + " (generated " + spec.generate + ")");
   return m;
 }
@@ -27,7 +27,8 @@ mesh::TetMesh build_mesh(const MeshSpec& spec) {
 double mean_boundary_edge(const mesh::TetMesh& mesh) {
   double sum = 0.0;
   for (const mesh::Triangle& f : mesh.boundary_faces)
-    for (int k = 0; k < 3; ++k) sum += (mesh.nodes[f[k]] - mesh.nodes[f[(k + 1) % 3]]).norm();
+    for (int k = 0; k < 3; ++k)
+      sum += (mesh.nodes[f[k]] - mesh.nodes[f[(k + 1) % 3]]).norm();
   return sum / (3.0 * static_cast<double>(mesh.boundary_faces.size()));
 }
 
@@ -36,7 +37,8 @@ double mean_boundary_edge(const mesh::TetMesh& mesh) {
 double initial_die_gap(const std::vector<Die>& dies, int& upper) {
   auto z_range = [](const Die& d) {
     double low = std::numeric_limits<double>::infinity(), high = -low;
-    for (const mesh::Point& p : d.surface->triangles().vertices) low = std::min(low, p.z()), high = std::max(high, p.z());
+    for (const mesh::Point& p : d.surface->triangles().vertices)
+      low = std::min(low, p.z()), high = std::max(high, p.z());
     return std::pair{low, high};
   };
   const auto a = z_range(dies[0]), b = z_range(dies[1]);
@@ -70,10 +72,10 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     bodies.push_back(std::move(body));
   }
   std::vector<const material::Material*> laws;
-  for (const Body& body : bodies) laws.push_back(body.law.get());
-  solve_displacement = !c.time.enabled && std::all_of(laws.begin(), laws.end(), [](const material::Material* l) {
-                         return l->is_elastic();
-                       });
+  for (const Body& body : bodies)
+    laws.push_back(body.law.get());
+  solve_displacement = !c.time.enabled && std::all_of(laws.begin(), laws.end(),
+                                                      [](const material::Material* l) { return l->is_elastic(); });
   for (Body& body : bodies)
     if (body.law->is_elastic() && !solve_displacement)
       body.increment_law =
@@ -84,14 +86,17 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
 
   // Scales from the initial mesh, so that a resumed run uses the very same numbers.
   mesh::Point low = initial_mesh.nodes.front(), high = low;
-  for (const auto& x : initial_mesh.nodes) low = low.cwiseMin(x), high = high.cwiseMax(x);
+  for (const auto& x : initial_mesh.nodes)
+    low = low.cwiseMin(x), high = high.cwiseMax(x);
   body_size = (high - low).norm();
   reference_length = mean_boundary_edge(initial_mesh);
   {
     Timers::Scope scope(timers, "effect rigid_dies (setup)");
-    for (const DieSpec& spec : c.dies) dies.push_back(build_die(spec, body_size));
+    for (const DieSpec& spec : c.dies)
+      dies.push_back(build_die(spec, body_size));
   }
-  for (std::size_t d = 0; d < dies.size(); ++d) surfaces.push_back({dies[d].name, int(d), -1});
+  for (std::size_t d = 0; d < dies.size(); ++d)
+    surfaces.push_back({dies[d].name, int(d), -1});
   for (std::size_t i = 0; i < conditions.size(); ++i)
     if (conditions[i].prescribes_velocity() && conditions[i].kind != BoundaryKind::symmetry)
       surfaces.push_back({conditions[i].name, -1, int(i)});
@@ -99,11 +104,13 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
 
   // Speed at t = 0 over a short probe step (an increment is far longer).
   const double probe = 1e-3 * std::max(c.time.stroke_increment, 1e-6);
-  for (const Die& d : dies) reference_velocity = std::max(reference_velocity, d.velocity(DieState{}, probe).norm());
+  for (const Die& d : dies)
+    reference_velocity = std::max(reference_velocity, d.velocity(DieState{}, probe).norm());
   for (const Body& body : bodies) {
     const ImposedConditions& imposed = body.initial_imposed;
     for (int k = 0; k < imposed.values.size(); ++k)
-      if (imposed.prescribed[k] && k % 4 != 3) reference_velocity = std::max(reference_velocity, std::abs(imposed.values[k]));
+      if (imposed.prescribed[k] && k % 4 != 3)
+        reference_velocity = std::max(reference_velocity, std::abs(imposed.values[k]));
   }
   if (c.time.enabled && !(reference_velocity > 0.0))
     throw InputError(c.path + ": nothing moves at t = 0 (no moving die, no prescribed velocity): the time loop "
@@ -118,7 +125,8 @@ RunState initial_state(const Scene& scene) {
   RunState state;
   state.mesh = scene.initial_mesh;
   state.bodies = scene.initial_ranges;
-  state.unknowns = {Eigen::VectorXd::Zero(4 * state.mesh.node_count()), Eigen::VectorXd::Zero(3 * state.mesh.tet_count())};
+  state.unknowns = {Eigen::VectorXd::Zero(4 * state.mesh.node_count()),
+                    Eigen::VectorXd::Zero(3 * state.mesh.tet_count())};
   state.equivalent_strain.assign(state.mesh.tets.size(), 0.0);
   if (scene.carries_stress) state.elastic_stress.assign(6 * state.mesh.tets.size(), 0.0);
   state.dies.assign(scene.dies.size(), DieState{});

@@ -18,7 +18,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <filesystem>
+#include <limits>
 #include <numeric>
 
 namespace anvil::scene {
@@ -26,7 +28,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 std::string clock_text(double seconds) {
   char text[32];
@@ -35,32 +39,33 @@ std::string clock_text(double seconds) {
   return text;
 }
 
-/// The time a run has left (s), from its pace since it started (or
-/// resumed). The pace of the run so far jumps at a remesh or a cut increment
-/// early on; each estimate is therefore moved only a quarter of the way from
-/// the last one (counted down by the time since) towards the new pace.
+/// The time a run has left (s): the pace (wall time per unit of progress)
+/// over its last 10 increments, so that it follows the run as the contact
+/// grows or the mesh is refined, and a remesh or a cut increment weighs
+/// one in ten. Unknown (NaN) for the first 5 increments, whose Newton
+/// counts are not yet those of the run.
 class TimeLeft {
 public:
-  TimeLeft(double progress, double now) : progress0_(progress), start_(now) {}
-
   double update(double progress, double now) {
-    if (progress <= progress0_) return estimate_;
-    const double pace = (now - start_) / (progress - progress0_) * (1.0 - progress);
-    estimate_ = std::isnan(estimate_) ? pace : std::max(0.0, estimate_ - (now - last_)) + 0.25 * (pace - estimate_);
-    last_ = now;
-    return estimate_;
+    points_.push_back({progress, now});
+    if (points_.size() > kWindow + 1) points_.pop_front();
+    if (points_.size() <= kFirst) return std::numeric_limits<double>::quiet_NaN();
+    const auto& [p0, t0] = points_.front();
+    if (progress <= p0) return std::numeric_limits<double>::quiet_NaN();
+    return (now - t0) / (progress - p0) * (1.0 - progress);
   }
 
 private:
-  double progress0_, start_, last_ = 0.0;
-  double estimate_ = std::numeric_limits<double>::quiet_NaN();
+  static constexpr std::size_t kWindow = 10, kFirst = 5;
+  std::deque<std::pair<double, double>> points_; ///< (progress, wall time s) at the start and after each increment
 };
 
 void log_header(const Scene& scene, const Discretisation& disc, const RunState& state, const RunOptions& options) {
   const Case& c = scene.input;
   log::info("anvil %s — %s%s", ANVIL_VERSION, c.path.c_str(), options.resume ? " (resumed)" : "");
   if (!c.title.empty()) log::info("  %s", c.title.c_str());
-  for (const std::string& change : c.overrides) log::info("  --set %s", change.c_str());
+  for (const std::string& change : c.overrides)
+    log::info("  --set %s", change.c_str());
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const Body& body = scene.bodies[b];
     log::info("body '%s': %d nodes, %d tetrahedra, volume %.6g mm3", body.name.c_str(), state.bodies[b].node_count,
@@ -69,37 +74,44 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
               body.state.temperature);
   }
   for (std::size_t i = 0; i < scene.conditions.size(); ++i)
-    log::info("  boundary '%s': %zu nodes", scene.conditions[i].name.c_str(), disc.imposed.nodes_of_condition[i].size());
+    log::info("  boundary '%s': %zu nodes", scene.conditions[i].name.c_str(),
+              disc.imposed.nodes_of_condition[i].size());
   for (const Die& d : scene.dies)
     log::info("  die '%s': %s; %s; friction %s%s", d.name.c_str(), d.surface->describe().c_str(),
               d.kinematics ? d.kinematics->describe().c_str() : "fixed", contact::describe(d.friction).c_str(),
               std::isfinite(d.load_limit) ? (", load limit " + std::to_string(d.load_limit) + " N").c_str() : "");
   for (std::size_t p = 0; p < c.contact_pairs.size(); ++p)
-    log::info("  contact pair '%s' (master '%s', slave '%s'): %s; friction %s", disc.pair_contact->pairs()[p].name.c_str(),
-              scene.bodies[c.contact_pairs[p].master].name.c_str(), scene.bodies[c.contact_pairs[p].slave].name.c_str(),
-              contact::to_string(c.contact_pairs[p].formulation).c_str(), contact::describe(c.contact_pairs[p].friction).c_str());
+    log::info("  contact pair '%s' (master '%s', slave '%s'): %s; friction %s",
+              disc.pair_contact->pairs()[p].name.c_str(), scene.bodies[c.contact_pairs[p].master].name.c_str(),
+              scene.bodies[c.contact_pairs[p].slave].name.c_str(),
+              contact::to_string(c.contact_pairs[p].formulation).c_str(),
+              contact::describe(c.contact_pairs[p].friction).c_str());
   if (scene.has_contact())
     log::info("  contact: penalty %g x 3 x secant viscosity of the softest body / scene size (set each increment), "
-              "friction regularisation %.3g mm/s", c.contact.penalty, c.contact.regularisation * scene.reference_velocity);
+              "friction regularisation %.3g mm/s",
+              c.contact.penalty, c.contact.regularisation * scene.reference_velocity);
   std::string effect_list;
-  for (const auto& e : scene.effects) effect_list += " " + e;
+  for (const auto& e : scene.effects)
+    effect_list += " " + e;
   log::info("effects:%s", effect_list.c_str());
   const int free = disc.solver->free_count();
   log::info("unknowns: %d (velocity and pressure, after %d prescribed)", free,
             static_cast<int>(disc.imposed.prescribed.size()) - free);
   log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d threads",
-            solver::to_string(disc.solver->linear_solver().kind()).c_str(), solver::to_string(c.linear_solver.kind).c_str(),
-            c.newton.tolerance, c.newton.increment_tolerance, tbb::info::default_concurrency());
+            solver::to_string(disc.solver->linear_solver().kind()).c_str(),
+            solver::to_string(c.linear_solver.kind).c_str(), c.newton.tolerance, c.newton.increment_tolerance,
+            tbb::info::default_concurrency());
   if (c.time.enabled) {
     const TimeSpec& t = c.time;
-    log::info("time loop: stroke increment %g mm, nodal displacement <= %g x element size, stop: %s%s%s%s",
-              t.stroke_increment, t.max_displacement,
-              std::isfinite(t.final_stroke)
-                  ? ("stroke " + std::to_string(t.final_stroke) + " mm of '" + scene.dies[t.stroke_die].name + "' ").c_str()
-                  : "",
-              t.final_gap > 0.0 ? ("gap " + std::to_string(t.final_gap) + " mm ").c_str() : "",
-              std::isfinite(t.max_load) ? ("load " + std::to_string(t.max_load) + " N ").c_str() : "",
-              std::isfinite(t.end_time) ? ("time " + std::to_string(t.end_time) + " s").c_str() : "");
+    log::info(
+        "time loop: stroke increment %g mm, nodal displacement <= %g x element size, stop: %s%s%s%s",
+        t.stroke_increment, t.max_displacement,
+        std::isfinite(t.final_stroke)
+            ? ("stroke " + std::to_string(t.final_stroke) + " mm of '" + scene.dies[t.stroke_die].name + "' ").c_str()
+            : "",
+        t.final_gap > 0.0 ? ("gap " + std::to_string(t.final_gap) + " mm ").c_str() : "",
+        std::isfinite(t.max_load) ? ("load " + std::to_string(t.max_load) + " N ").c_str() : "",
+        std::isfinite(t.end_time) ? ("time " + std::to_string(t.end_time) + " s").c_str() : "");
   }
 }
 
@@ -160,11 +172,13 @@ void run(const Case& c, const RunOptions& options) {
   Discretisation disc = discretise(scene, state, timers);
   log_header(scene, disc, state, options);
   io::RunWriter writer(out, state, options.resume);
-  if (options.resume) log::info("resumed from %s/checkpoint.h5 at increment %d, t = %.6g s", out.c_str(), state.increment, state.time);
+  if (options.resume)
+    log::info("resumed from %s/checkpoint.h5 at increment %d, t = %.6g s", out.c_str(), state.increment, state.time);
 
   if (!c.time.enabled) {
     log::info("increment 1");
-    const IncrementOutcome inc = solve_increment(scene, disc, state, {.nominal = 0.0, .planned = 1.0, .length = 1.0}, timers);
+    const IncrementOutcome inc =
+        solve_increment(scene, disc, state, {.nominal = 0.0, .planned = 1.0, .length = 1.0}, timers);
     if (!inc.converged()) throw RunError("increment 1: " + inc.failure);
     accept_without_motion(scene, inc, state);
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
@@ -176,7 +190,8 @@ void run(const Case& c, const RunOptions& options) {
   }
 
   const TimeStepControl clock(scene);
-  TimeLeft time_left(clock.progress(state), seconds_since(start));
+  TimeLeft time_left;
+  time_left.update(clock.progress(state), seconds_since(start));
   solver::NewtonReport last;
   std::string stop;
   while ((stop = clock.stop_reason(state)).empty()) {
@@ -193,8 +208,8 @@ void run(const Case& c, const RunOptions& options) {
                        ") is written and checkpointed in " + out);
       }
       step.length = *shorter;
-      log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1, inc.failure.c_str(),
-                step.length, cuts + 1, c.time.max_cuts);
+      log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1,
+                inc.failure.c_str(), step.length, cuts + 1, c.time.max_cuts);
       inc = solve_increment(scene, disc, state, step, timers);
     }
     last = inc.report;

@@ -17,7 +17,8 @@ std::vector<double> local_size(const mesh::TetMesh& mesh) {
         sum[t[a]] += l, sum[t[b]] += l;
         count[t[a]] += 1.0, count[t[b]] += 1.0;
       }
-  for (std::size_t i = 0; i < sum.size(); ++i) sum[i] /= count[i];
+  for (std::size_t i = 0; i < sum.size(); ++i)
+    sum[i] /= count[i];
   return sum;
 }
 
@@ -55,12 +56,14 @@ TimeStep TimeStepControl::next_step(const RunState& state) const {
   }
   if (time_.final_gap > 0.0) {
     const int upper = scene_.upper_die, lower = 1 - upper;
-    const double closing = scene_.dies[lower].velocity(state.dies[lower], dt).z() -
-                           scene_.dies[upper].velocity(state.dies[upper], dt).z();
+    const double closing =
+        scene_.dies[lower].velocity(state.dies[lower], dt).z() - scene_.dies[upper].velocity(state.dies[upper], dt).z();
     if (closing > 0.0) to_stop = std::min(to_stop, (scene_.die_gap(state.dies) - time_.final_gap) / closing);
   }
-  if (to_stop <= dt) dt = to_stop;
-  else if (to_stop < 1.25 * dt) dt = 0.5 * to_stop;
+  if (to_stop <= dt)
+    dt = to_stop;
+  else if (to_stop < 1.25 * dt)
+    dt = 0.5 * to_stop;
   step.planned = step.length = dt;
   return step;
 }
@@ -78,7 +81,8 @@ bool TimeStepControl::ends_at_contact(const TimeStep& step, double touch) const 
 std::string TimeStepControl::stop_reason(const RunState& state) const {
   const double tolerance = 1e-9;
   if (state.time >= time_.end_time * (1.0 - tolerance)) return "end time reached";
-  if (std::isfinite(time_.final_stroke) && state.dies[time_.stroke_die].stroke >= time_.final_stroke * (1.0 - tolerance))
+  if (std::isfinite(time_.final_stroke) &&
+      state.dies[time_.stroke_die].stroke >= time_.final_stroke * (1.0 - tolerance))
     return "final stroke reached";
   if (time_.final_gap > 0.0 && scene_.die_gap(state.dies) <= time_.final_gap * (1.0 + tolerance))
     return "final die gap reached";

@@ -16,7 +16,9 @@ std::string leaf_of(const std::string& spec_path) {
   const auto dot = spec_path.rfind('.');
   return dot == std::string::npos ? spec_path : spec_path.substr(dot + 1);
 }
-std::string join(const std::string& prefix, const std::string& key) { return prefix.empty() ? key : prefix + "." + key; }
+std::string join(const std::string& prefix, const std::string& key) {
+  return prefix.empty() ? key : prefix + "." + key;
+}
 
 std::optional<double> parse_number(const YAML::Node& node) {
   if (!node.IsScalar()) return std::nullopt;
@@ -46,7 +48,8 @@ CheckedYaml::CheckedYaml(const std::string& path, const std::vector<KeySpec>& sc
     throw InputError(where(path, e.mark.line + 1) + ": YAML syntax error: " + e.msg);
   }
   if (!root_.IsMap()) throw InputError(path + ": expected a YAML map of keys at the top level");
-  for (const std::string& text : overrides) apply_override(text);
+  for (const std::string& text : overrides)
+    apply_override(text);
   check(root_, "", "");
 }
 
@@ -117,7 +120,8 @@ void CheckedYaml::apply_override(const std::string& text) {
         return;
       }
       if (!parent[index]) parent[index] = YAML::Node(YAML::NodeType::Map);
-      if (!parent[index].IsMap()) throw bad("'" + steps[i + 1].key + "' sits under something that is not a map in " + path_);
+      if (!parent[index].IsMap())
+        throw bad("'" + steps[i + 1].key + "' sits under something that is not a map in " + path_);
       self(self, parent[index], i + 1);
     };
     if (step.index == PathStep::Index::none) return assign_or_descend(node, step.key);
@@ -184,10 +188,14 @@ void CheckedYaml::check(const YAML::Node& node, const std::string& spec_prefix, 
 void CheckedYaml::check_value(const YAML::Node& value, const KeySpec& k, const std::string& shown) const {
   auto wrong = [&] { fail(value, shown, "value " + shown_value(value) + " is not valid; expected " + expectation(k)); };
   switch (k.type) {
-  case KeyType::map: check(value, k.path, shown); return;
+  case KeyType::map:
+    check(value, k.path, shown);
+    return;
   case KeyType::list:
-    if (!value.IsSequence() || value.size() == 0) fail(value, shown, "expected a non-empty list, found " + shown_value(value));
-    for (std::size_t i = 0; i < value.size(); ++i) check(value[i], k.path + "[]", shown + "[" + std::to_string(i) + "]");
+    if (!value.IsSequence() || value.size() == 0)
+      fail(value, shown, "expected a non-empty list, found " + shown_value(value));
+    for (std::size_t i = 0; i < value.size(); ++i)
+      check(value[i], k.path + "[]", shown + "[" + std::to_string(i) + "]");
     return;
   case KeyType::string:
     if (!value.IsScalar()) wrong();
@@ -249,7 +257,8 @@ std::array<std::optional<double>, 3> CheckedYaml::partial_vector(const YAML::Nod
 
 std::vector<double> CheckedYaml::numbers(const YAML::Node& map, const std::string& key) const {
   std::vector<double> out;
-  for (const auto& c : map[key]) out.push_back(*parse_number(c));
+  for (const auto& c : map[key])
+    out.push_back(*parse_number(c));
   return out;
 }
 

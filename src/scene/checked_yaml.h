@@ -42,7 +42,8 @@ public:
   /// Fails unless `map` has `key`: "key 'shown.key': missing: <why>".
   void require(const YAML::Node& map, const std::string& key, const std::string& shown, const std::string& why) const;
   /// Fails when `map` has `key`: "key 'shown.key': does not apply to <context>".
-  void forbid(const YAML::Node& map, const std::string& key, const std::string& shown, const std::string& context) const;
+  void forbid(const YAML::Node& map, const std::string& key, const std::string& shown,
+              const std::string& context) const;
 
   /// Throws InputError "file:line: key 'shown': message".
   [[noreturn]] void fail(const YAML::Node& node, const std::string& shown_key, const std::string& message) const;

@@ -17,12 +17,14 @@ const std::vector<Effect>& effect_registry() {
       {"frictionless_plates", "flat plates imposing the normal velocity only"},
       {"surface_loads", "tractions and pressures on selected faces (nodal forces)"},
       {"time_stepping", "updated-Lagrangian time loop: x += Δt v, ε̄ += Δt ε̄̇, Δt control, checkpoints"},
-      {"volume_compensation", "incompressible bodies in the time loop: each increment's flow restores the volume lost so far"},
+      {"volume_compensation",
+       "incompressible bodies in the time loop: each increment's flow restores the volume lost so far"},
       {"rigid_dies", "contact with rigid dies (plane or STL): search, penalty, active set, projection"},
       {"body_contact", "contact between deformable bodies: master/slave, symmetric or quasi-symmetric (Fourment 2008)"},
       {"friction", "friction on die or body contact (sticking, Tresca, Coulomb, Norton), regularised near zero slip"},
       {"hardening", "flow stress depending on ε̄ (Hansel-Spittel)"},
-      {"remeshing", "quality watch every increment; CGAL remeshing of flowing bodies with field transfer when triggered"},
+      {"remeshing",
+       "quality watch every increment; CGAL remeshing of flowing bodies with field transfer when triggered"},
   };
   return registry;
 }
@@ -37,13 +39,24 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
     if (std::isfinite(law->bulk_modulus())) add("compressibility");
     if (!law->is_linear()) add("nonlinear_law");
   }
-  for (const BoundaryCondition& bc : c.boundary) switch (bc.kind) {
-    case BoundaryKind::velocity: add("velocity_conditions"); break;
-    case BoundaryKind::symmetry: add("symmetry_planes"); break;
-    case BoundaryKind::sticking_plate: add("sticking_plates"); break;
-    case BoundaryKind::frictionless_plate: add("frictionless_plates"); break;
+  for (const BoundaryCondition& bc : c.boundary)
+    switch (bc.kind) {
+    case BoundaryKind::velocity:
+      add("velocity_conditions");
+      break;
+    case BoundaryKind::symmetry:
+      add("symmetry_planes");
+      break;
+    case BoundaryKind::sticking_plate:
+      add("sticking_plates");
+      break;
+    case BoundaryKind::frictionless_plate:
+      add("frictionless_plates");
+      break;
     case BoundaryKind::traction:
-    case BoundaryKind::pressure: add("surface_loads"); break;
+    case BoundaryKind::pressure:
+      add("surface_loads");
+      break;
     }
   if (c.time.enabled) {
     add("time_stepping");

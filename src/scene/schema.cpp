@@ -37,14 +37,22 @@ KeySpec choices(KeySpec k, std::vector<std::string> values) {
 
 const char* type_name(KeyType t) {
   switch (t) {
-  case KeyType::integer: return "integer";
-  case KeyType::number: return "number";
-  case KeyType::string: return "string";
-  case KeyType::boolean: return "boolean";
-  case KeyType::vector3: return "[x, y, z]";
-  case KeyType::numbers: return "list of numbers";
-  case KeyType::list: return "list";
-  case KeyType::map: return "map";
+  case KeyType::integer:
+    return "integer";
+  case KeyType::number:
+    return "number";
+  case KeyType::string:
+    return "string";
+  case KeyType::boolean:
+    return "boolean";
+  case KeyType::vector3:
+    return "[x, y, z]";
+  case KeyType::numbers:
+    return "list of numbers";
+  case KeyType::list:
+    return "list";
+  case KeyType::map:
+    return "map";
   }
   return "?";
 }
@@ -68,176 +76,223 @@ const std::vector<KeySpec>& case_schema() {
   using T = KeyType;
   static const std::vector<KeySpec> schema = [] {
     std::vector<KeySpec> keys = {
-      required(range(key("anvil", T::integer, "case file format version"), 1, 1)),
-      with_default(key("title", T::string, "one line shown in the log and summary"), ""),
-      key("output", T::map, "what is written and where"),
-      with_default(key("output.directory", T::string,
-                       "output folder, relative to the working directory; default out/<case name>; -o overrides"), ""),
-      with_default(key("output.vtk", T::boolean, "write the .vtu/.pvd series"), "true"),
-      key("solver", T::map, "Newton and linear solver settings"),
-      with_default(range(key("solver.tolerance", T::number, "Newton: relative tolerance on the force and div residuals"),
-                         1e-14, 1e-2),
-                   "1e-6"),
-      with_default(range(key("solver.increment_tolerance", T::number,
-                             "Newton: relative tolerance on |dv|/|v| of the last step (a linear problem needs none "
-                             "after a full step)"),
-                         1e-14, 1),
-                   "1e-4"),
-      with_default(range(key("solver.max_iterations", T::integer, "Newton iterations per increment"), 1, 500), "30"),
-      with_default(choices(key("solver.linear_solver", T::string,
-                               "fgmres: PETSc FGMRES with algebraic multigrid on the velocities and a Schur-complement "
-                               "pressure preconditioner (large meshes); mumps: sparse direct (MUMPS); auto: mumps up to "
-                               "5000 unknowns, fgmres above, mumps when fgmres stagnates; umfpack, cholmod_ldlt, "
-                               "eigen_ldlt, minres: kept for comparison"),
-                           {"auto", "fgmres", "mumps", "umfpack", "cholmod_ldlt", "eigen_ldlt", "minres"}),
-                   "auto"),
-      with_default(range(key("solver.krylov_tolerance", T::number,
-                             "fgmres: loosest relative tolerance of a Krylov solve; inexact Newton tightens it as the "
-                             "residual falls (Eisenstat-Walker)"),
-                         1e-12, 0.5),
-                   "1e-2"),
-      with_default(choices(key("solver.schur", T::string,
-                               "fgmres: pressure block of the preconditioner; bfbt: stabilised BFBT (follows the "
-                               "pressure of a layer squeezed between dies); mass: condensed-bubble block plus the "
-                               "viscosity-scaled pressure mass"),
-                           {"bfbt", "mass"}),
-                   "bfbt"),
-      with_default(key("solver.reuse_preconditioner", T::boolean,
-                       "fgmres: keep the multigrid set-up across Newton iterations and increments while the Krylov "
-                       "iterations per decade stay within 1.5x of those right after it"),
-                   "true"),
-      with_default(key("solver.petsc_options", T::string,
-                       "PETSc options for experts, e.g. '-ksp_monitor -fieldsplit_0_pc_type gamg' (prefix direct_ for "
-                       "mumps); the same options on the anvil command line win"),
-                   ""),
-      required(key("bodies", T::list, "deformable bodies, solved together (billets, deformable dies)")),
-      required(key("bodies[].name", T::string, "name used by boundary conditions and in outputs")),
-      required(key("bodies[].material", T::string, "material card (YAML), path relative to the case file")),
-      required(key("bodies[].mesh", T::map, "a mesh file or a generated shape")),
-      key("bodies[].mesh.file", T::string, "Gmsh .msh (2.2, 4.1 ASCII) or Medit .mesh, relative to the case file"),
-      choices(key("bodies[].mesh.generate", T::string,
-                  "generated shape instead of a file; quarter shapes (x, y >= 0) need symmetry planes x = 0 and y = 0: "
-                  "quarter_cylinder tags 1 x=0, 2 lateral, 3 y=0, 5 bottom, 6 top; quarter_ring tags 1 inner, "
-                  "2 outer, 3 y=0, 4 x=0, 5 bottom, 6 top"),
-              {"box", "cylinder", "quarter_cylinder", "quarter_ring"}),
-      with_default(key("bodies[].mesh.origin", T::vector3, "box: lowest corner", "mm"), "[0, 0, 0]"),
-      key("bodies[].mesh.size", T::vector3, "box: edge lengths", "mm"),
-      range(key("bodies[].mesh.radius", T::number, "cylinder, ring (axis z, base at z = 0): (outer) radius", "mm"), 0,
-            kInf, true),
-      range(key("bodies[].mesh.inner_radius", T::number, "quarter_ring: inner radius", "mm"), 0, kInf, true),
-      range(key("bodies[].mesh.height", T::number, "cylinder: height", "mm"), 0, kInf, true),
-      range(key("bodies[].mesh.element_size", T::number, "generated shapes: target edge length", "mm"), 0, kInf, true),
-      key("boundary", T::list, "boundary conditions, applied in order (later ones win on shared nodes)"),
-      required(key("boundary[].name", T::string, "name shown in loads.csv")),
-      key("boundary[].body", T::string, "body it applies to; required when there are several"),
-      required(choices(key("boundary[].type", T::string,
-                           "velocity: given components; symmetry: zero normal velocity; sticking_plate: all "
-                           "components = plate velocity; frictionless_plate: normal component only; traction; pressure"),
-                       {"velocity", "symmetry", "sticking_plate", "frictionless_plate", "traction", "pressure"})),
-      range(key("boundary[].tag", T::integer, "select the faces with this boundary tag"), 0, kInf),
-      key("boundary[].plane", T::map, "select the boundary faces lying on a plane"),
-      required(key("boundary[].plane.point", T::vector3, "a point of the plane", "mm")),
-      required(key("boundary[].plane.normal", T::vector3, "plane normal (need not be unit)")),
-      with_default(range(key("boundary[].plane.tolerance", T::number, "distance within which a node is on the plane", "mm"),
-                         0, kInf, true), "1e-6"),
-      key("boundary[].velocity", T::vector3,
-          "velocity, plates: velocity; a component written ~ (null) is left free (velocity type only)", "mm/s"),
-      key("boundary[].traction", T::vector3, "traction: surface force density", "MPa"),
-      key("boundary[].pressure", T::number, "pressure: positive pushes into the body", "MPa"),
-      range(key("bodies[].temperature", T::number, "isothermal temperature of the body; default the material card's",
-                "°C"), -273.15, kInf, true),
-      with_default(range(key("output.vtk_every", T::integer, "write the VTK series every N increments (and the last)"),
-                         1, kInf), "1"),
-      with_default(range(key("output.checkpoint_every", T::integer,
-                             "HDF5 checkpoint every N increments (and the last); 0 = never"), 0, kInf), "10"),
-      key("dies", T::list, "rigid dies: a surface, a press motion, friction with the body"),
-      required(key("dies[].name", T::string, "name shown in loads.csv, the log and the VTK series")),
-      key("dies[].stl", T::string, "die surface (STL, ASCII or binary), relative to the case file; normals out of the die"),
-      with_default(key("dies[].offset", T::vector3, "STL dies: moves the surface from the file's coordinates to the "
-                       "die's start position", "mm"), "[0, 0, 0]"),
-      key("dies[].plane", T::map, "an analytic flat die instead of an STL surface"),
-      required(key("dies[].plane.point", T::vector3, "a point of the die face", "mm")),
-      required(key("dies[].plane.normal", T::vector3, "normal out of the die, towards the body (need not be unit)")),
-      with_default(range(key("dies[].plane.half_size", T::number, "display only: half side of the square drawn; 0 = automatic",
-                             "mm"), 0, kInf), "0"),
-      with_default(choices(key("dies[].motion", T::string,
-                               "fixed; constant: velocity; table: speed or displacement against time along direction; "
-                               "crank: mechanical press; hydraulic: velocity with a load limit"),
-                           {"fixed", "constant", "table", "crank", "hydraulic"}), "fixed"),
-      key("dies[].velocity", T::vector3, "constant, hydraulic: die velocity", "mm/s"),
-      with_default(key("dies[].direction", T::vector3, "table, crank: direction of travel"), "[0, 0, -1]"),
-      key("dies[].time", T::numbers, "table: times, increasing", "s"),
-      key("dies[].speed", T::numbers, "table: speed at each time (give speed or displacement)", "mm/s"),
-      key("dies[].displacement", T::numbers, "table: displacement at each time", "mm"),
-      range(key("dies[].crank_radius", T::number, "crank: crank radius (half the stroke)", "mm"), 0, kInf, true),
-      range(key("dies[].rod_length", T::number, "crank: connecting rod length", "mm"), 0, kInf, true),
-      range(key("dies[].rpm", T::number, "crank: crank speed", "1/min"), 0, kInf, true),
-      with_default(range(key("dies[].start_angle", T::number, "crank: crank angle at t = 0 from top dead centre", "deg"),
-                         0, 360), "0"),
-      range(key("dies[].load_limit", T::number,
-                "hydraulic: press capacity; above it the press slows down as (limit/load)^(1/m)", "N"), 0, kInf, true),
-      key("contact_pairs", T::list, "contact between two deformable bodies (node-to-facet, Fourment 2008)"),
-      required(key("contact_pairs[].master", T::string, "master body (a name from bodies)")),
-      required(key("contact_pairs[].slave", T::string, "slave body (a name from bodies)")),
-      with_default(choices(key("contact_pairs[].formulation", T::string,
-                               "master_slave: conditions at slave nodes (paper eq. 19); symmetric: at the nodes of "
-                               "both bodies (eq. 20); quasi_symmetric: both, with the master nodes' conditions "
-                               "added to the slave nodes' (eqs. 21-24)"),
-                           {"master_slave", "symmetric", "quasi_symmetric"}),
-                   "quasi_symmetric"),
-      key("contact", T::map, "contact enforcement"),
-      with_default(range(key("contact.penalty", T::number,
-                             "penalty ρ = this × flow stress at the process rate (press speed / body size) / press speed: contact nodes penetrate at about 1/this of the press speed"),
-                         0, kInf, true), "1000"),
-      with_default(range(key("contact.regularisation", T::number,
-                             "friction regularisation velocity relative to the fastest die speed"), 0, 1, true), "1e-2"),
-      key("time", T::map, "the time loop; without it the case is a single increment on the initial geometry"),
-      required(range(key("time.stroke_increment", T::number, "travel of the fastest die per increment", "mm"), 0, kInf, true)),
-      with_default(range(key("time.max_displacement", T::number,
-                             "largest nodal displacement per increment, relative to the local element size"), 0, 1, true),
-                   "0.2"),
-      with_default(range(key("time.min_step_fraction", T::number,
-                             "a node reaching a die shortens the increment, down to this fraction of the "
-                             "nominal one and not by less"), 0, 1), "0.1"),
-      with_default(range(key("time.max_cuts", T::integer, "time-step halvings after a Newton failure"), 0, 30), "5"),
-      with_default(range(key("time.max_increments", T::integer, "safety stop"), 1, kInf), "100000"),
-      with_default(key("time.volume_compensation", T::boolean,
-                       "incompressible bodies: each increment's flow restores the volume lost so far (explicit "
-                       "update error, contact projection); false shows the raw loss"), "true"),
-      key("time.stop", T::map, "stop criteria: the first one reached ends the run (at least one)"),
-      range(key("time.stop.stroke", T::number, "travel of the die `die`", "mm"), 0, kInf, true),
-      key("time.stop.die", T::string, "die whose stroke is checked; default the first moving die"),
-      range(key("time.stop.gap", T::number, "distance between the two dies along z", "mm"), 0, kInf, true),
-      range(key("time.stop.load", T::number, "largest load magnitude on any die", "N"), 0, kInf, true),
-      range(key("time.stop.time", T::number, "end time", "s"), 0, kInf, true),
-      key("remeshing", T::map, "automatic remeshing of the flowing bodies (CGAL, fields transferred); absent: never"),
-      with_default(range(key("remeshing.quality", T::number,
-                             "remesh a body when its worst element's volume-edge ratio 6√2V/l_rms³ falls below this, "
-                             "or would reach 0 in the next increment"), 0, 1), "0.1"),
-      with_default(range(key("remeshing.every", T::integer, "also remesh every N increments; 0 = off"), 0, kInf), "0"),
-      with_default(range(key("remeshing.die_penetration", T::number,
-                             "also remesh when a die vertex lies this deep inside a body, relative to its element size"),
-                         0, kInf, true), "0.25"),
-      range(key("remeshing.element_size", T::number,
-                "target edge length; default each body's initial mean boundary edge", "mm"), 0, kInf, true),
-      with_default(range(key("remeshing.feature_angle", T::number,
-                             "boundary edges where the surface turns more than this stay sharp", "deg"), 0, 180, true), "40"),
-      with_default(range(key("remeshing.iterations", T::integer, "CGAL remeshing passes"), 1, 20), "3"),
-      with_default(choices(key("remeshing.size", T::string,
-                               "size field: 'uniform' (element_size everywhere) or 'adaptive' (down to smallest_size "
-                               "near the dies and where the strain rate is high)"),
-                           {"uniform", "adaptive"}),
-                   "uniform"),
-      range(key("remeshing.smallest_size", T::number,
-                "adaptive size field: the edge length at a die and where the strain rate is 4x the body's mean; "
-                "default half the element size", "mm"), 0, kInf, true),
-      with_default(key("remeshing.check_load", T::boolean,
-                       "also solve the increment after each remesh on the old mesh, and log and record the press "
-                       "load's jump across the remesh at equal geometry (three more solves per remesh; the next increment starts "
-                       "from the last)"),
-                   "false"),
+        required(range(key("anvil", T::integer, "case file format version"), 1, 1)),
+        with_default(key("title", T::string, "one line shown in the log and summary"), ""),
+        key("output", T::map, "what is written and where"),
+        with_default(key("output.directory", T::string,
+                         "output folder, relative to the working directory; default out/<case name>; -o overrides"),
+                     ""),
+        with_default(key("output.vtk", T::boolean, "write the .vtu/.pvd series"), "true"),
+        key("solver", T::map, "Newton and linear solver settings"),
+        with_default(
+            range(key("solver.tolerance", T::number, "Newton: relative tolerance on the force and div residuals"),
+                  1e-14, 1e-2),
+            "1e-6"),
+        with_default(range(key("solver.increment_tolerance", T::number,
+                               "Newton: relative tolerance on |dv|/|v| of the last step (a linear problem needs none "
+                               "after a full step)"),
+                           1e-14, 1),
+                     "1e-4"),
+        with_default(range(key("solver.max_iterations", T::integer, "Newton iterations per increment"), 1, 500), "30"),
+        with_default(
+            choices(key("solver.linear_solver", T::string,
+                        "fgmres: PETSc FGMRES with algebraic multigrid on the velocities and a Schur-complement "
+                        "pressure preconditioner (large meshes); mumps: sparse direct (MUMPS); auto: mumps up to "
+                        "5000 unknowns, fgmres above, mumps when fgmres stagnates; umfpack, cholmod_ldlt, "
+                        "eigen_ldlt, minres: kept for comparison"),
+                    {"auto", "fgmres", "mumps", "umfpack", "cholmod_ldlt", "eigen_ldlt", "minres"}),
+            "auto"),
+        with_default(
+            range(key("solver.krylov_tolerance", T::number,
+                      "fgmres: loosest relative tolerance of a Krylov solve; inexact Newton tightens it as the "
+                      "residual falls (Eisenstat-Walker)"),
+                  1e-12, 0.5),
+            "1e-2"),
+        with_default(choices(key("solver.schur", T::string,
+                                 "fgmres: pressure block of the preconditioner; bfbt: stabilised BFBT (follows the "
+                                 "pressure of a layer squeezed between dies); mass: condensed-bubble block plus the "
+                                 "viscosity-scaled pressure mass"),
+                             {"bfbt", "mass"}),
+                     "bfbt"),
+        with_default(key("solver.reuse_preconditioner", T::boolean,
+                         "fgmres: keep the multigrid set-up across Newton iterations and increments while the Krylov "
+                         "iterations per decade stay within 1.5x of those right after it"),
+                     "true"),
+        with_default(
+            key("solver.petsc_options", T::string,
+                "PETSc options for experts, e.g. '-ksp_monitor -fieldsplit_0_pc_type gamg' (prefix direct_ for "
+                "mumps); the same options on the anvil command line win"),
+            ""),
+        required(key("bodies", T::list, "deformable bodies, solved together (billets, deformable dies)")),
+        required(key("bodies[].name", T::string, "name used by boundary conditions and in outputs")),
+        required(key("bodies[].material", T::string, "material card (YAML), path relative to the case file")),
+        required(key("bodies[].mesh", T::map, "a mesh file or a generated shape")),
+        key("bodies[].mesh.file", T::string, "Gmsh .msh (2.2, 4.1 ASCII) or Medit .mesh, relative to the case file"),
+        choices(
+            key("bodies[].mesh.generate", T::string,
+                "generated shape instead of a file; quarter shapes (x, y >= 0) need symmetry planes x = 0 and y = 0: "
+                "quarter_cylinder tags 1 x=0, 2 lateral, 3 y=0, 5 bottom, 6 top; quarter_ring tags 1 inner, "
+                "2 outer, 3 y=0, 4 x=0, 5 bottom, 6 top"),
+            {"box", "cylinder", "quarter_cylinder", "quarter_ring"}),
+        with_default(key("bodies[].mesh.origin", T::vector3, "box: lowest corner", "mm"), "[0, 0, 0]"),
+        key("bodies[].mesh.size", T::vector3, "box: edge lengths", "mm"),
+        range(key("bodies[].mesh.radius", T::number, "cylinder, ring (axis z, base at z = 0): (outer) radius", "mm"), 0,
+              kInf, true),
+        range(key("bodies[].mesh.inner_radius", T::number, "quarter_ring: inner radius", "mm"), 0, kInf, true),
+        range(key("bodies[].mesh.height", T::number, "cylinder: height", "mm"), 0, kInf, true),
+        range(key("bodies[].mesh.element_size", T::number, "generated shapes: target edge length", "mm"), 0, kInf,
+              true),
+        key("boundary", T::list, "boundary conditions, applied in order (later ones win on shared nodes)"),
+        required(key("boundary[].name", T::string, "name shown in loads.csv")),
+        key("boundary[].body", T::string, "body it applies to; required when there are several"),
+        required(
+            choices(key("boundary[].type", T::string,
+                        "velocity: given components; symmetry: zero normal velocity; sticking_plate: all "
+                        "components = plate velocity; frictionless_plate: normal component only; traction; pressure"),
+                    {"velocity", "symmetry", "sticking_plate", "frictionless_plate", "traction", "pressure"})),
+        range(key("boundary[].tag", T::integer, "select the faces with this boundary tag"), 0, kInf),
+        key("boundary[].plane", T::map, "select the boundary faces lying on a plane"),
+        required(key("boundary[].plane.point", T::vector3, "a point of the plane", "mm")),
+        required(key("boundary[].plane.normal", T::vector3, "plane normal (need not be unit)")),
+        with_default(
+            range(key("boundary[].plane.tolerance", T::number, "distance within which a node is on the plane", "mm"), 0,
+                  kInf, true),
+            "1e-6"),
+        key("boundary[].velocity", T::vector3,
+            "velocity, plates: velocity; a component written ~ (null) is left free (velocity type only)", "mm/s"),
+        key("boundary[].traction", T::vector3, "traction: surface force density", "MPa"),
+        key("boundary[].pressure", T::number, "pressure: positive pushes into the body", "MPa"),
+        range(key("bodies[].temperature", T::number, "isothermal temperature of the body; default the material card's",
+                  "°C"),
+              -273.15, kInf, true),
+        with_default(
+            range(key("output.vtk_every", T::integer, "write the VTK series every N increments (and the last)"), 1,
+                  kInf),
+            "1"),
+        with_default(range(key("output.checkpoint_every", T::integer,
+                               "HDF5 checkpoint every N increments (and the last); 0 = never"),
+                           0, kInf),
+                     "10"),
+        key("dies", T::list, "rigid dies: a surface, a press motion, friction with the body"),
+        required(key("dies[].name", T::string, "name shown in loads.csv, the log and the VTK series")),
+        key("dies[].stl", T::string,
+            "die surface (STL, ASCII or binary), relative to the case file; normals out of the die"),
+        with_default(key("dies[].offset", T::vector3,
+                         "STL dies: moves the surface from the file's coordinates to the "
+                         "die's start position",
+                         "mm"),
+                     "[0, 0, 0]"),
+        key("dies[].plane", T::map, "an analytic flat die instead of an STL surface"),
+        required(key("dies[].plane.point", T::vector3, "a point of the die face", "mm")),
+        required(key("dies[].plane.normal", T::vector3, "normal out of the die, towards the body (need not be unit)")),
+        with_default(range(key("dies[].plane.half_size", T::number,
+                               "display only: half side of the square drawn; 0 = automatic", "mm"),
+                           0, kInf),
+                     "0"),
+        with_default(
+            choices(key("dies[].motion", T::string,
+                        "fixed; constant: velocity; table: speed or displacement against time along direction; "
+                        "crank: mechanical press; hydraulic: velocity with a load limit"),
+                    {"fixed", "constant", "table", "crank", "hydraulic"}),
+            "fixed"),
+        key("dies[].velocity", T::vector3, "constant, hydraulic: die velocity", "mm/s"),
+        with_default(key("dies[].direction", T::vector3, "table, crank: direction of travel"), "[0, 0, -1]"),
+        key("dies[].time", T::numbers, "table: times, increasing", "s"),
+        key("dies[].speed", T::numbers, "table: speed at each time (give speed or displacement)", "mm/s"),
+        key("dies[].displacement", T::numbers, "table: displacement at each time", "mm"),
+        range(key("dies[].crank_radius", T::number, "crank: crank radius (half the stroke)", "mm"), 0, kInf, true),
+        range(key("dies[].rod_length", T::number, "crank: connecting rod length", "mm"), 0, kInf, true),
+        range(key("dies[].rpm", T::number, "crank: crank speed", "1/min"), 0, kInf, true),
+        with_default(
+            range(key("dies[].start_angle", T::number, "crank: crank angle at t = 0 from top dead centre", "deg"), 0,
+                  360),
+            "0"),
+        range(key("dies[].load_limit", T::number,
+                  "hydraulic: press capacity; above it the press slows down as (limit/load)^(1/m)", "N"),
+              0, kInf, true),
+        key("contact_pairs", T::list, "contact between two deformable bodies (node-to-facet, Fourment 2008)"),
+        required(key("contact_pairs[].master", T::string, "master body (a name from bodies)")),
+        required(key("contact_pairs[].slave", T::string, "slave body (a name from bodies)")),
+        with_default(choices(key("contact_pairs[].formulation", T::string,
+                                 "master_slave: conditions at slave nodes (paper eq. 19); symmetric: at the nodes of "
+                                 "both bodies (eq. 20); quasi_symmetric: both, with the master nodes' conditions "
+                                 "added to the slave nodes' (eqs. 21-24)"),
+                             {"master_slave", "symmetric", "quasi_symmetric"}),
+                     "quasi_symmetric"),
+        key("contact", T::map, "contact enforcement"),
+        with_default(range(key("contact.penalty", T::number,
+                               "penalty ρ = this × flow stress at the process rate (press speed / body size) / press "
+                               "speed: contact nodes penetrate at about 1/this of the press speed"),
+                           0, kInf, true),
+                     "1000"),
+        with_default(range(key("contact.regularisation", T::number,
+                               "friction regularisation velocity relative to the fastest die speed"),
+                           0, 1, true),
+                     "1e-2"),
+        key("time", T::map, "the time loop; without it the case is a single increment on the initial geometry"),
+        required(range(key("time.stroke_increment", T::number, "travel of the fastest die per increment", "mm"), 0,
+                       kInf, true)),
+        with_default(range(key("time.max_displacement", T::number,
+                               "largest nodal displacement per increment, relative to the local element size"),
+                           0, 1, true),
+                     "0.2"),
+        with_default(range(key("time.min_step_fraction", T::number,
+                               "a node reaching a die shortens the increment, down to this fraction of the "
+                               "nominal one and not by less"),
+                           0, 1),
+                     "0.1"),
+        with_default(range(key("time.max_cuts", T::integer, "time-step halvings after a Newton failure"), 0, 30), "5"),
+        with_default(range(key("time.max_increments", T::integer, "safety stop"), 1, kInf), "100000"),
+        with_default(key("time.volume_compensation", T::boolean,
+                         "incompressible bodies: each increment's flow restores the volume lost so far (explicit "
+                         "update error, contact projection); false shows the raw loss"),
+                     "true"),
+        key("time.stop", T::map, "stop criteria: the first one reached ends the run (at least one)"),
+        range(key("time.stop.stroke", T::number, "travel of the die `die`", "mm"), 0, kInf, true),
+        key("time.stop.die", T::string, "die whose stroke is checked; default the first moving die"),
+        range(key("time.stop.gap", T::number, "distance between the two dies along z", "mm"), 0, kInf, true),
+        range(key("time.stop.load", T::number, "largest load magnitude on any die", "N"), 0, kInf, true),
+        range(key("time.stop.time", T::number, "end time", "s"), 0, kInf, true),
+        key("remeshing", T::map, "automatic remeshing of the flowing bodies (CGAL, fields transferred); absent: never"),
+        with_default(range(key("remeshing.quality", T::number,
+                               "remesh a body when its worst element's volume-edge ratio 6√2V/l_rms³ falls below this, "
+                               "or would reach 0 in the next increment"),
+                           0, 1),
+                     "0.1"),
+        with_default(range(key("remeshing.every", T::integer, "also remesh every N increments; 0 = off"), 0, kInf),
+                     "0"),
+        with_default(
+            range(key("remeshing.die_penetration", T::number,
+                      "also remesh when a die vertex lies this deep inside a body, relative to its element size"),
+                  0, kInf, true),
+            "0.25"),
+        range(key("remeshing.element_size", T::number,
+                  "target edge length; default each body's initial mean boundary edge", "mm"),
+              0, kInf, true),
+        with_default(range(key("remeshing.feature_angle", T::number,
+                               "boundary edges where the surface turns more than this stay sharp", "deg"),
+                           0, 180, true),
+                     "40"),
+        with_default(range(key("remeshing.iterations", T::integer, "CGAL remeshing passes"), 1, 20), "3"),
+        with_default(choices(key("remeshing.size", T::string,
+                                 "size field: 'uniform' (element_size everywhere) or 'adaptive' (down to smallest_size "
+                                 "near the dies and where the strain rate is high)"),
+                             {"uniform", "adaptive"}),
+                     "uniform"),
+        range(key("remeshing.smallest_size", T::number,
+                  "adaptive size field: the edge length at a die and where the strain rate is 4x the body's mean; "
+                  "default half the element size",
+                  "mm"),
+              0, kInf, true),
+        with_default(key("remeshing.check_load", T::boolean,
+                         "also solve the increment after each remesh on the old mesh, and log and record the press "
+                         "load's jump across the remesh at equal geometry (three more solves per remesh; the next "
+                         "increment starts "
+                         "from the last)"),
+                     "false"),
     };
-    for (const auto& [owner, between] : {std::pair{"dies[]", "die and body"}, std::pair{"contact_pairs[]", "the two bodies"}}) {
+    for (const auto& [owner, between] :
+         {std::pair{"dies[]", "die and body"}, std::pair{"contact_pairs[]", "the two bodies"}}) {
       const std::vector<KeySpec> friction = friction_keys(owner, between);
       keys.insert(keys.end(), friction.begin(), friction.end());
     }
@@ -258,7 +313,8 @@ const std::vector<KeySpec>& material_schema() {
       range(key("consistency", T::number, "norton_hoff: consistency K", "MPa.s^m"), 0, kInf, true),
       range(key("sensitivity", T::number, "norton_hoff: strain-rate sensitivity m", "-"), 0, 1, true),
       with_default(range(key("regularisation_rate", T::number,
-                             "norton_hoff: ε̄̇₀ in sqrt(ε̄̇² + ε̄̇₀²), keeps rigid zones finite", "1/s"), 0, kInf, true),
+                             "norton_hoff: ε̄̇₀ in sqrt(ε̄̇² + ε̄̇₀²), keeps rigid zones finite", "1/s"),
+                         0, kInf, true),
                    "1e-4"),
       range(key("A", T::number, "hansel_spittel: A", "MPa"), 0, kInf, true),
       key("m1", T::number, "hansel_spittel: temperature exponent m1 (T in °C)", "1/°C"),
@@ -269,8 +325,10 @@ const std::vector<KeySpec>& material_schema() {
       key("m7", T::number, "hansel_spittel: m7 in exp(m7 ε̄)", "-"),
       key("m8", T::number, "hansel_spittel: m8 in ε̄̇^(m8 T)", "1/°C"),
       key("m9", T::number, "hansel_spittel: m9 in T^m9", "-"),
-      with_default(range(key("minimum_strain", T::number, "hansel_spittel: ε̄ floor (ε̄^m2 and exp(m4/ε̄) are singular at 0)",
-                             "-"), 0, 1, true), "0.01"),
+      with_default(
+          range(key("minimum_strain", T::number, "hansel_spittel: ε̄ floor (ε̄^m2 and exp(m4/ε̄) are singular at 0)", "-"),
+                0, 1, true),
+          "0.01"),
       range(key("young_modulus", T::number, "linear_elastic: E", "MPa"), 0, kInf, true),
       range(key("poisson_ratio", T::number, "linear_elastic: ν (0.5 allowed: u-p form)", "-"), -1, 0.5, true),
       required(key("sources", T::map, "where each number comes from: one entry per numeric key")),
@@ -279,8 +337,7 @@ const std::vector<KeySpec>& material_schema() {
   static const std::vector<KeySpec> with_sources = [] {
     std::vector<KeySpec> all = schema;
     for (const KeySpec& k : schema)
-      if (k.type == T::number)
-        all.push_back(key("sources." + k.path, T::string, "source (or reason) of " + k.path));
+      if (k.type == T::number) all.push_back(key("sources." + k.path, T::string, "source (or reason) of " + k.path));
     return all;
   }();
   return with_sources;
@@ -297,7 +354,8 @@ std::string expectation(const KeySpec& k) {
   s << (k.type == KeyType::integer ? "an integer" : k.type == KeyType::number ? "a number" : type_name(k.type));
   if (k.type == KeyType::integer || k.type == KeyType::number) {
     const bool low = std::isfinite(k.min), high = std::isfinite(k.max);
-    if (low && high && k.min == k.max) s << " equal to " << k.min;
+    if (low && high && k.min == k.max)
+      s << " equal to " << k.min;
     else {
       if (low) s << (k.min_exclusive ? " > " : " >= ") << k.min;
       if (low && high) s << " and";
@@ -306,7 +364,8 @@ std::string expectation(const KeySpec& k) {
   }
   if (!k.choices.empty()) {
     s << ", one of";
-    for (std::size_t i = 0; i < k.choices.size(); ++i) s << (i ? ", " : " ") << k.choices[i];
+    for (std::size_t i = 0; i < k.choices.size(); ++i)
+      s << (i ? ", " : " ") << k.choices[i];
   }
   if (!k.unit.empty()) s << " (" << k.unit << ")";
   return s.str();
@@ -318,8 +377,10 @@ std::string schema_text() {
     s << title << "\n";
     for (const KeySpec& k : schema) {
       s << "  " << k.path << "\n      " << expectation(k);
-      if (k.required) s << "; required";
-      else if (!k.default_value.empty()) s << "; default " << k.default_value;
+      if (k.required)
+        s << "; required";
+      else if (!k.default_value.empty())
+        s << "; default " << k.default_value;
       s << "\n      " << k.doc << "\n";
     }
   };

@@ -6,15 +6,19 @@ namespace anvil::solver {
 
 void BlockPreconditioner::set_components(std::vector<char> component) {
   component_ = std::move(component);
-  for (auto& list : index_) list.clear();
-  for (std::size_t i = 0; i < component_.size(); ++i) index_[component_[i]].push_back(static_cast<long>(i));
-  for (auto& factor : velocity_factor_) factor.reset();
+  for (auto& list : index_)
+    list.clear();
+  for (std::size_t i = 0; i < component_.size(); ++i)
+    index_[component_[i]].push_back(static_cast<long>(i));
+  for (auto& factor : velocity_factor_)
+    factor.reset();
 }
 
 BlockPreconditioner& BlockPreconditioner::factorize(const fem::SparseMatrix& a) {
   std::vector<long> position(component_.size()); // index within its component block
   for (const auto& list : index_)
-    for (std::size_t k = 0; k < list.size(); ++k) position[list[k]] = static_cast<long>(k);
+    for (std::size_t k = 0; k < list.size(); ++k)
+      position[list[k]] = static_cast<long>(k);
   std::array<std::vector<Eigen::Triplet<double, long>>, 3> entries;
   pressure_diagonal_inverse_.resize(static_cast<long>(index_[3].size()));
   double largest_pressure_diagonal = 0.0;
@@ -22,7 +26,8 @@ BlockPreconditioner& BlockPreconditioner::factorize(const fem::SparseMatrix& a) 
     const int c = component_[row];
     for (fem::SparseMatrix::InnerIterator it(a, row); it; ++it) {
       if (component_[it.col()] != c) continue;
-      if (c < 3) entries[c].emplace_back(position[row], position[it.col()], it.value());
+      if (c < 3)
+        entries[c].emplace_back(position[row], position[it.col()], it.value());
       else if (it.col() == row) {
         pressure_diagonal_inverse_[position[row]] = std::abs(it.value());
         largest_pressure_diagonal = std::max(largest_pressure_diagonal, std::abs(it.value()));
@@ -51,9 +56,11 @@ Eigen::VectorXd BlockPreconditioner::solve(const Eigen::VectorXd& r) const {
   for (int c = 0; c < 3; ++c) {
     const auto& list = index_[c];
     Eigen::VectorXd block(static_cast<long>(list.size()));
-    for (std::size_t k = 0; k < list.size(); ++k) block[static_cast<long>(k)] = r[list[k]];
+    for (std::size_t k = 0; k < list.size(); ++k)
+      block[static_cast<long>(k)] = r[list[k]];
     const Eigen::VectorXd solved = velocity_factor_[c]->solve(block);
-    for (std::size_t k = 0; k < list.size(); ++k) z[list[k]] = solved[static_cast<long>(k)];
+    for (std::size_t k = 0; k < list.size(); ++k)
+      z[list[k]] = solved[static_cast<long>(k)];
   }
   for (std::size_t k = 0; k < index_[3].size(); ++k)
     z[index_[3][k]] = r[index_[3][k]] * pressure_diagonal_inverse_[static_cast<long>(k)];

@@ -25,7 +25,8 @@ double krylov_tolerance(const NewtonSettings& settings, bool linear_problem, dou
   constexpr double kGamma = 0.9, kSmallest = 1e-12;
   const double no_oversolve = 0.5 * settings.tolerance / std::max(residual, 1e-300);
   double forcing = settings.krylov_tolerance_max;
-  if (linear_problem) forcing = 0.1 * settings.tolerance / std::max(residual, 1e-300);
+  if (linear_problem)
+    forcing = 0.1 * settings.tolerance / std::max(residual, 1e-300);
   else if (previous_residual > 0.0) {
     const double ratio = residual / previous_residual;
     forcing = kGamma * ratio * ratio;
@@ -53,8 +54,8 @@ double max_velocity(const Eigen::VectorXd& nodal) {
 
 IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed,
                                  const LinearSolverSettings& linear, Timers& timers)
-    : mesh_(mesh), dofs_(std::move(prescribed)), assembler_(mesh, dofs_),
-      linear_solver_(linear, dofs_.free_count()), timers_(timers) {}
+    : mesh_(mesh), dofs_(std::move(prescribed)), assembler_(mesh, dofs_), linear_solver_(linear, dofs_.free_count()),
+      timers_(timers) {}
 
 IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns) {
   Merit m{0.0, 0.0, 0.0};
@@ -70,10 +71,13 @@ IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem
     Timers::Scope scope(timers_, "contact");
     nodal_term_residual_.setZero(residual_.size());
     blocks_.clear();
-    for (NodalTerm* term : problem.nodal_terms) term->add(unknowns.nodal, nodal_term_residual_, &blocks_);
+    for (NodalTerm* term : problem.nodal_terms)
+      term->add(unknowns.nodal, nodal_term_residual_, &blocks_);
     residual_ += nodal_term_residual_;
-    for (const NodeBlock& b : blocks_) assembler_.add_velocity_block(b.row_node, b.col_node, b.tangent);
-  } else nodal_term_residual_.resize(0);
+    for (const NodeBlock& b : blocks_)
+      assembler_.add_velocity_block(b.row_node, b.col_node, b.tangent);
+  } else
+    nodal_term_residual_.resize(0);
   assembler_.finish_tangent();
   for (int d = 0; d < dofs_.dof_count(); ++d) {
     if (dofs_.prescribed(d)) continue;
@@ -92,8 +96,8 @@ double IncrementSolver::force_scale(const IncrementProblem& problem) const {
     if (d % kDofsPerNode != 3) applied_sq += nodal_forces[d] * nodal_forces[d];
   // A body at rest (a billet between dies that let go) has no load of its
   // own: the reference force keeps the measure finite.
-  return std::max({std::sqrt(reaction_sq), std::sqrt(applied_sq), nodal_term_residual_.norm(),
-                   problem.reference_force, 1e-300});
+  return std::max(
+      {std::sqrt(reaction_sq), std::sqrt(applied_sq), nodal_term_residual_.norm(), problem.reference_force, 1e-300});
 }
 
 NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const NewtonSettings& settings,
@@ -137,15 +141,15 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     predictor.verbose = false;    // contact set, one step of it is enough for a start)
     predictor.tolerance = 1e-2;   // a start, not an answer: its Krylov solve need not be tight
     Timers::Scope scope(timers_, "effect nonlinear_law (predictor)");
-    const IncrementProblem newtonian_problem{newtonian_laws,     problem.states,     problem.nodal_forces,
-                                             problem.body_force, problem.nodal_terms, reference_velocity,
+    const IncrementProblem newtonian_problem{newtonian_laws,         problem.states,      problem.nodal_forces,
+                                             problem.body_force,     problem.nodal_terms, reference_velocity,
                                              problem.reference_force};
     report.linear_iterations += solve(newtonian_problem, predictor, unknowns).linear_iterations;
     if (settings.verbose)
       for (const auto& stand_in : stand_ins)
         if (stand_in)
           log::detail("    predictor: Newtonian solve at viscosity %.4g MPa.s (rate %.3g 1/s)", stand_in->consistency(),
-                    reference_rate);
+                      reference_rate);
   }
 
   // Residuals are made relative: forces against the larger of the applied
@@ -154,7 +158,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   const double area = std::pow(body_volume, 2.0 / 3.0);
   // |Δv| is measured against |v|, or against 1e-3 of the reference speed at
   // every node when the body is (nearly) at rest.
-  const double velocity_floor_sq = std::max(1e-6 * reference_velocity * reference_velocity * mesh_.node_count(), 1e-300);
+  const double velocity_floor_sq =
+      std::max(1e-6 * reference_velocity * reference_velocity * mesh_.node_count(), 1e-300);
   auto relative = [](const Merit& m, double force, double flux) {
     return (m.force_sq + m.bubble_sq) / (force * force) + m.flux_sq / (flux * flux);
   };
@@ -168,9 +173,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     }
     if (assembler_.set_couplings(couplings)) linear_solver_.pattern_changed();
   }
-  const bool linear_problem =
-      !nonlinear && std::all_of(problem.nodal_terms.begin(), problem.nodal_terms.end(),
-                                [](const NodalTerm* term) { return term->linear(); });
+  const bool linear_problem = !nonlinear && std::all_of(problem.nodal_terms.begin(), problem.nodal_terms.end(),
+                                                        [](const NodalTerm* term) { return term->linear(); });
   Merit merit = evaluate(problem, unknowns);
   double scale = force_scale(problem);
   Eigen::VectorXd rhs(n), delta(n), bubble_delta;
@@ -185,7 +189,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       report.failure = "element " + std::to_string(bad_element_ + 1) + " is inverted or flat";
       return report;
     }
-    for (int d = 0; d < n; ++d) rhs[d] = dofs_.prescribed(d) ? 0.0 : -residual_[d];
+    for (int d = 0; d < n; ++d)
+      rhs[d] = dofs_.prescribed(d) ? 0.0 : -residual_[d];
     // The relative residual Newton starts this step from (a body at rest with
     // no velocity scale has only its force part).
     const double flux_now = std::max(max_velocity(unknowns.nodal), reference_velocity) * area;
@@ -255,7 +260,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
               " iterations, tolerance " + format_tolerance(forcing) + ")";
     if (settings.verbose)
       log::detail("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g%s", it,
-                record.force_residual, record.flux_residual, record.increment, record.step, note.c_str());
+                  record.force_residual, record.flux_residual, record.increment, record.step, note.c_str());
     if (!std::isfinite(record.force_residual + record.flux_residual + record.increment)) {
       report.failure = "the residual is not finite";
       return report;
@@ -266,7 +271,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     if (record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance && increment_small) {
       bool consistent = true;
       if (set_changes < kMaxSetChanges)
-        for (NodalTerm* term : problem.nodal_terms) consistent = term->consistent(unknowns.nodal) && consistent;
+        for (NodalTerm* term : problem.nodal_terms)
+          consistent = term->consistent(unknowns.nodal) && consistent;
       if (!consistent) {
         phase_start = it;
         ++set_changes;

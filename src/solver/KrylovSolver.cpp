@@ -43,7 +43,8 @@ struct KrylovSolver::Impl {
     set_up = false;
     std::vector<PetscInt> velocity_dofs(3 * static_cast<std::size_t>(nodes));
     for (int i = 0; i < nodes; ++i)
-      for (int c = 0; c < 3; ++c) velocity_dofs[3 * static_cast<std::size_t>(i) + c] = fem::kDofsPerNode * i + c;
+      for (int c = 0; c < 3; ++c)
+        velocity_dofs[3 * static_cast<std::size_t>(i) + c] = fem::kDofsPerNode * i + c;
     check(ISCreateGeneral(PETSC_COMM_WORLD, 3 * nodes, velocity_dofs.data(), PETSC_COPY_VALUES, &velocity),
           "creating the velocity split");
     check(ISSetBlockSize(velocity, 3), "creating the velocity split"); // x, y, z of a node: one AMG block
@@ -96,7 +97,8 @@ struct KrylovSolver::Impl {
     PetscInt splits = 0;
     KSP* sub = nullptr;
     check(PCFieldSplitSchurGetSubKSP(pc, &splits, &sub), "setting up the preconditioner");
-    for (PetscInt i = 0; i < splits; ++i) check(KSPSetUp(sub[i]), "setting up the preconditioner");
+    for (PetscInt i = 0; i < splits; ++i)
+      check(KSPSetUp(sub[i]), "setting up the preconditioner");
     PetscFree(sub);
   }
 
@@ -114,8 +116,10 @@ struct KrylovSolver::Impl {
     PC schur_pc = nullptr;
     check(KSPGetPC(sub[1], &schur_pc), "setting up the Schur preconditioner");
     PetscFree(sub);
-    if (schur == SchurApproximation::bfbt) bfbt.attach(schur_pc);
-    else check(PCSetType(schur_pc, PCJACOBI), "setting up the Schur preconditioner");
+    if (schur == SchurApproximation::bfbt)
+      bfbt.attach(schur_pc);
+    else
+      check(PCSetType(schur_pc, PCJACOBI), "setting up the Schur preconditioner");
   }
 
   /// The six rigid-body modes at the current coordinates: GAMG's near-null
@@ -124,7 +128,8 @@ struct KrylovSolver::Impl {
     PetscScalar* x = nullptr;
     check(VecGetArray(coordinates, &x), "setting the rigid-body modes");
     for (std::size_t i = 0; i < nodes.size(); ++i)
-      for (int c = 0; c < 3; ++c) x[3 * i + c] = nodes[i][c];
+      for (int c = 0; c < 3; ++c)
+        x[3 * i + c] = nodes[i][c];
     check(VecRestoreArray(coordinates, &x), "setting the rigid-body modes");
     MatNullSpace modes = nullptr;
     check(MatNullSpaceCreateRigidBody(coordinates, &modes), "setting the rigid-body modes");
@@ -147,7 +152,9 @@ struct KrylovSolver::Impl {
   }
 };
 
-KrylovSolver::KrylovSolver(SchurApproximation schur) : impl_(std::make_unique<Impl>()) { impl_->schur = schur; }
+KrylovSolver::KrylovSolver(SchurApproximation schur) : impl_(std::make_unique<Impl>()) {
+  impl_->schur = schur;
+}
 KrylovSolver::~KrylovSolver() = default;
 
 void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse) {
@@ -163,12 +170,13 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
   check(KSPGetPC(s.ksp, &pc), "building the preconditioner");
   if (s.schur == SchurApproximation::mass) {
     // Ŝ = A11 − M_p/η: the assembled pressure block (−C) plus the mass part.
-    check(MatCreateSubMatrix(m, s.pressure, s.pressure,
-                             s.schur_preconditioner ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s.schur_preconditioner),
+    check(MatCreateSubMatrix(m, s.pressure, s.pressure, s.schur_preconditioner ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX,
+                             &s.schur_preconditioner),
           "building the Schur-complement preconditioner");
     PetscScalar* mass = nullptr;
     check(VecGetArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
-    for (long i = 0; i < data.pressure_mass.size(); ++i) mass[i] = -data.pressure_mass[i];
+    for (long i = 0; i < data.pressure_mass.size(); ++i)
+      mass[i] = -data.pressure_mass[i];
     check(VecRestoreArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
     check(MatDiagonalSet(s.schur_preconditioner, s.pressure_mass, ADD_VALUES),
           "building the Schur-complement preconditioner");

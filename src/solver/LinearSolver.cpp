@@ -52,13 +52,20 @@ SchurApproximation schur_approximation(const std::string& name) {
 
 std::string to_string(LinearSolverKind kind) {
   switch (kind) {
-  case LinearSolverKind::fgmres: return "fgmres";
-  case LinearSolverKind::mumps: return "mumps";
-  case LinearSolverKind::umfpack: return "umfpack";
-  case LinearSolverKind::cholmod_ldlt: return "cholmod_ldlt";
-  case LinearSolverKind::eigen_ldlt: return "eigen_ldlt";
-  case LinearSolverKind::minres: return "minres";
-  case LinearSolverKind::automatic: return "auto";
+  case LinearSolverKind::fgmres:
+    return "fgmres";
+  case LinearSolverKind::mumps:
+    return "mumps";
+  case LinearSolverKind::umfpack:
+    return "umfpack";
+  case LinearSolverKind::cholmod_ldlt:
+    return "cholmod_ldlt";
+  case LinearSolverKind::eigen_ldlt:
+    return "eigen_ldlt";
+  case LinearSolverKind::minres:
+    return "minres";
+  case LinearSolverKind::automatic:
+    return "auto";
   }
   return "?";
 }
@@ -131,22 +138,28 @@ bool LinearSolver::factorize(const fem::SparseMatrix& a, const SaddlePointData& 
   case LinearSolverKind::minres:
     if (!analysed_) {
       std::vector<char> component(static_cast<std::size_t>(a.rows()));
-      for (std::size_t d = 0; d < component.size(); ++d) component[d] = static_cast<char>(d % fem::kDofsPerNode);
+      for (std::size_t d = 0; d < component.size(); ++d)
+        component[d] = static_cast<char>(d % fem::kDofsPerNode);
       b.minres.preconditioner().set_components(std::move(component));
       analysed_ = true;
       ++analyses_;
     }
     b.minres.compute(a);
     return b.minres.info() == Eigen::Success;
-  default: break;
+  default:
+    break;
   }
   ++setups_;
   b.columns = a;
   switch (kind_) {
-  case LinearSolverKind::umfpack: return factorize_with(b.umfpack, b.columns, analysed_, analyses_);
-  case LinearSolverKind::cholmod_ldlt: return factorize_with(b.cholmod, b.columns, analysed_, analyses_);
-  case LinearSolverKind::eigen_ldlt: return factorize_with(b.eigen, b.columns, analysed_, analyses_);
-  default: return false; // automatic is resolved in the constructor
+  case LinearSolverKind::umfpack:
+    return factorize_with(b.umfpack, b.columns, analysed_, analyses_);
+  case LinearSolverKind::cholmod_ldlt:
+    return factorize_with(b.cholmod, b.columns, analysed_, analyses_);
+  case LinearSolverKind::eigen_ldlt:
+    return factorize_with(b.eigen, b.columns, analysed_, analyses_);
+  default:
+    return false; // automatic is resolved in the constructor
   }
 }
 
@@ -166,8 +179,10 @@ bool LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double 
       iterations_ += k.iterations;
     }
     if (k.converged) {
-      if (setup_rate_ == 0.0) setup_rate_ = std::max(rate(k), 1e-3);
-      else if (rate(k) > settings_.reuse_growth * setup_rate_) refresh_ = true;
+      if (setup_rate_ == 0.0)
+        setup_rate_ = std::max(rate(k), 1e-3);
+      else if (rate(k) > settings_.reuse_growth * setup_rate_)
+        refresh_ = true;
       return true;
     }
     log::info("    linear solver: FGMRES stopped after %d iterations (%s, residual reduced to %.2e of %.2e asked); "
@@ -181,16 +196,25 @@ bool LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double 
     b.mumps->solve(rhs, x);
     return true;
   }
-  case LinearSolverKind::mumps: b.mumps->solve(rhs, x); return true;
-  case LinearSolverKind::umfpack: x = b.umfpack.solve(rhs); return b.umfpack.info() == Eigen::Success;
-  case LinearSolverKind::cholmod_ldlt: x = b.cholmod.solve(rhs); return b.cholmod.info() == Eigen::Success;
-  case LinearSolverKind::eigen_ldlt: x = b.eigen.solve(rhs); return b.eigen.info() == Eigen::Success;
+  case LinearSolverKind::mumps:
+    b.mumps->solve(rhs, x);
+    return true;
+  case LinearSolverKind::umfpack:
+    x = b.umfpack.solve(rhs);
+    return b.umfpack.info() == Eigen::Success;
+  case LinearSolverKind::cholmod_ldlt:
+    x = b.cholmod.solve(rhs);
+    return b.cholmod.info() == Eigen::Success;
+  case LinearSolverKind::eigen_ldlt:
+    x = b.eigen.solve(rhs);
+    return b.eigen.info() == Eigen::Success;
   case LinearSolverKind::minres:
     b.minres.setTolerance(relative_tolerance);
     x = b.minres.solve(rhs);
     iterations_ = static_cast<int>(b.minres.iterations());
     return b.minres.info() == Eigen::Success;
-  case LinearSolverKind::automatic: break;
+  case LinearSolverKind::automatic:
+    break;
   }
   return false;
 }

@@ -20,8 +20,8 @@ std::set<std::string> g_own_options;
 
 /// Keeps the first message of an error (the innermost call) instead of
 /// printing a traceback; PETSc then returns the code up the stack.
-PetscErrorCode keep_message(MPI_Comm, int, const char* function, const char*, PetscErrorCode code,
-                            PetscErrorType type, const char* message, void*) {
+PetscErrorCode keep_message(MPI_Comm, int, const char* function, const char*, PetscErrorCode code, PetscErrorType type,
+                            const char* message, void*) {
   if (type == PETSC_ERROR_INITIAL) {
     const char* generic = nullptr;
     PetscErrorMessage(code, &generic, nullptr);
@@ -35,7 +35,9 @@ PetscErrorCode keep_message(MPI_Comm, int, const char* function, const char*, Pe
 
 namespace petsc {
 
-std::string last_error() { return g_last_error; }
+std::string last_error() {
+  return g_last_error;
+}
 
 void check(PetscErrorCode code, const char* doing) {
   if (code == 0) return;
@@ -50,7 +52,7 @@ PetscSession::PetscSession(int& argc, char**& argv) {
   if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) throw RunError("PETSc (MPI) could not be initialised");
   g_active = true;
   PetscPushErrorHandler(keep_message, nullptr);
-  PetscPopSignalHandler(); // a crash stays a crash with its own signal, not a PETSc banner
+  PetscPopSignalHandler();                  // a crash stays a crash with its own signal, not a PETSc banner
   set_default_option("-options_left", "0"); // unused options are reported by unused_options(), in our words
   PetscMPIInt size = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
@@ -68,7 +70,9 @@ PetscSession::~PetscSession() {
   PetscFinalize();
 }
 
-bool PetscSession::active() { return g_active; }
+bool PetscSession::active() {
+  return g_active;
+}
 
 std::vector<std::string> PetscSession::unused_options() {
   std::vector<std::string> unused;
@@ -131,7 +135,8 @@ ScopedPetscOptions::ScopedPetscOptions(const std::string& text, const std::strin
 }
 
 ScopedPetscOptions::~ScopedPetscOptions() {
-  for (const std::string& name : set_) PetscOptionsClearValue(nullptr, name.c_str());
+  for (const std::string& name : set_)
+    PetscOptionsClearValue(nullptr, name.c_str());
 }
 
 } // namespace anvil::solver

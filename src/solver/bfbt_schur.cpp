@@ -7,7 +7,8 @@ namespace anvil::solver::petsc {
 BfbtSchur::~BfbtSchur() {
   KSPDestroy(&laplacian_);
   VecDestroy(&inverse_diagonal_);
-  for (Vec* v : {&velocity_[0], &velocity_[1], &pressure_[0], &pressure_[1]}) VecDestroy(v);
+  for (Vec* v : {&velocity_[0], &velocity_[1], &pressure_[0], &pressure_[1]})
+    VecDestroy(v);
 }
 
 void BfbtSchur::attach(PC pc) {

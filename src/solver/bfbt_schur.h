@@ -30,9 +30,9 @@ private:
   static PetscErrorCode set_up(PC pc);
   static PetscErrorCode apply(PC pc, Vec r, Vec y);
 
-  KSP laplacian_ = nullptr;                  ///< one V-cycle on selfp = −L
+  KSP laplacian_ = nullptr;                                          ///< one V-cycle on selfp = −L
   Mat k_ = nullptr, bt_ = nullptr, b_ = nullptr, minus_c_ = nullptr; ///< blocks of S (not owned)
-  Vec inverse_diagonal_ = nullptr;           ///< D⁻¹
+  Vec inverse_diagonal_ = nullptr;                                   ///< D⁻¹
   Vec velocity_[2] = {nullptr, nullptr}, pressure_[2] = {nullptr, nullptr};
 };
 

@@ -23,11 +23,12 @@ public:
   /// Points the Mat at `a`'s arrays (a new Mat when they moved) and tells
   /// PETSc its values changed. Returns true when the Mat is new.
   bool wrap(const fem::SparseMatrix& a) {
-    const bool moved = !mat_ || a.outerIndexPtr() != outer_ || a.innerIndexPtr() != inner_ ||
-                       a.valuePtr() != values_ || a.rows() != rows_;
+    const bool moved = !mat_ || a.outerIndexPtr() != outer_ || a.innerIndexPtr() != inner_ || a.valuePtr() != values_ ||
+                       a.rows() != rows_;
     if (moved) {
       MatDestroy(&mat_);
-      outer_ = a.outerIndexPtr(), inner_ = a.innerIndexPtr(), values_ = a.valuePtr(), rows_ = static_cast<PetscInt>(a.rows());
+      outer_ = a.outerIndexPtr(), inner_ = a.innerIndexPtr(), values_ = a.valuePtr(),
+      rows_ = static_cast<PetscInt>(a.rows());
       check(MatCreateSeqAIJWithArrays(PETSC_COMM_WORLD, rows_, rows_, const_cast<PetscInt*>(outer_),
                                       const_cast<PetscInt*>(inner_), const_cast<PetscScalar*>(values_), &mat_),
             "wrapping the tangent matrix");

@@ -27,7 +27,8 @@ TEST_CASE("near rigid-plastic upsetting (m = 0.02) with Tresca friction runs to 
   const auto rows = out.loads("top");
   REQUIRE(!rows.empty());
   CHECK(rows.back().stroke == Approx(7.5).epsilon(1e-9));
-  for (const LoadRow& r : rows) CHECK(std::isfinite(r.force.z()));
+  for (const LoadRow& r : rows)
+    CHECK(std::isfinite(r.force.z()));
   CHECK(std::abs(out.summary_number("relative_change")) < 0.005);
 }
 
@@ -49,8 +50,8 @@ TEST_CASE("a die that lifts off the billet and comes back re-contacts it", "[har
   }
   INFO("load before lift-off " << before_lift << " N, largest while away " << away << " N, at the end " << end << " N");
   CHECK(rows.back().time == Approx(0.6).epsilon(1e-9));
-  CHECK(away == 0.0);             // no die contact while the die is away
-  CHECK(end > before_lift);       // back on the billet, pressing further than before
+  CHECK(away == 0.0);       // no die contact while the die is away
+  CHECK(end > before_lift); // back on the billet, pressing further than before
   CHECK(std::abs(out.summary_number("relative_change")) < 0.005);
 }
 

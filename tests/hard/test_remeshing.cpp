@@ -33,7 +33,8 @@ RemeshedRun run_remeshed(const std::string& case_file, const std::string& name) 
 /// remesh for quality improves it.
 void check_remeshes_keep_volume_and_strain(const RemeshedRun& run) {
   CHECK(run.end.dies[0].stroke == Approx(run.c.time.final_stroke).epsilon(1e-9));
-  for (int e = 0; e < run.end.mesh.tet_count(); ++e) REQUIRE(mesh::quality(run.end.mesh, e) > 0.0);
+  for (int e = 0; e < run.end.mesh.tet_count(); ++e)
+    REQUIRE(mesh::quality(run.end.mesh, e) > 0.0);
   REQUIRE(run.end.remeshes.size() >= 1);
   for (const scene::RemeshRecord& r : run.end.remeshes) {
     INFO("remesh after increment " << r.increment);
@@ -90,7 +91,8 @@ void check_load_trend(const RemeshedRun& run, const std::string& surface, double
     const std::size_t k = static_cast<std::size_t>(r.increment) - 1; // row of the remesh increment
     if (k < 1 || k + 1 >= load.size()) continue;
     const LoadRow &a = load[k - 1], &b = load[k], &after = load[k + 1];
-    const double predicted = b.force.z() + (b.force.z() - a.force.z()) / (b.stroke - a.stroke) * (after.stroke - b.stroke);
+    const double predicted =
+        b.force.z() + (b.force.z() - a.force.z()) / (b.stroke - a.stroke) * (after.stroke - b.stroke);
     INFO("remesh after increment " << r.increment << ": load " << after.force.z() << " N, trend " << predicted << " N");
     CHECK(std::abs(after.force.z() / predicted - 1.0) < bound);
   }

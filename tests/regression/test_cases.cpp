@@ -56,9 +56,9 @@ TEST_CASE("every case reproduces its reference signature", "[regression]") {
   for (const Reference& r : refs) {
     INFO("case " << r.case_name);
     // At Newton tolerance 1e-8, which the Fz tolerance below is built on (the default is 1e-6).
-    const RunOutputs out = run_case(
-        scene::read_case(source_path("cases/" + r.case_name + ".yaml"), {"solver.tolerance=1e-8"}),
-        "anvil_regression_" + r.case_name);
+    const RunOutputs out =
+        run_case(scene::read_case(source_path("cases/" + r.case_name + ".yaml"), {"solver.tolerance=1e-8"}),
+                 "anvil_regression_" + r.case_name);
     const auto rows = out.loads(r.surface);
     REQUIRE(!rows.empty());
     const double fz = rows.back().force.z();
@@ -78,7 +78,8 @@ TEST_CASE("a billet forged between elastic dies: the press load rises and the di
   const auto press = out.loads("press");
   REQUIRE(press.size() >= 2);
   CHECK(press.back().stroke == Approx(3.0).epsilon(1e-9));
-  for (std::size_t k = 1; k < press.size(); ++k) CHECK(press[k].force.z() > press[k - 1].force.z());
+  for (std::size_t k = 1; k < press.size(); ++k)
+    CHECK(press[k].force.z() > press[k - 1].force.z());
   // Die stress: the press load spread over the die's section is a lower
   // bound of its largest von Mises stress; the billet's flow stress at the
   // start (C45 at 1100 °C, < 200 MPa) cannot be exceeded by the dies' mean.

@@ -22,7 +22,8 @@ patch_test::Errors run(const patch_test::LoadCase& load, const patch_test::MeshP
   anvil::log::set_quiet(true);
   // One folder per configuration: the tests of this file may run in parallel.
   const std::string name = "anvil_patch_" + std::filesystem::path(load.file).stem().string() + "_" +
-                           std::to_string(meshes.master_cells) + "_" + std::to_string(meshes.slave_cells) + "_" + formulation;
+                           std::to_string(meshes.master_cells) + "_" + std::to_string(meshes.slave_cells) + "_" +
+                           formulation;
   const auto out = std::filesystem::temp_directory_path() / name;
   return patch_test::run(load, meshes, formulation, ANVIL_SOURCE_DIR, out.string());
 }

@@ -4,8 +4,8 @@
 #include "run_outputs.h"
 
 #include <chrono>
-#include <fcntl.h>
 #include <csignal>
+#include <fcntl.h>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -22,7 +22,8 @@ namespace {
 pid_t start_anvil(const std::string& case_file, const std::string& mode, const std::string& directory) {
   std::vector<std::string> args{ANVIL_EXECUTABLE, "run", case_file, mode, directory};
   std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
+  for (auto& a : args)
+    argv.push_back(a.data());
   argv.push_back(nullptr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
@@ -39,7 +40,9 @@ int wait_for(pid_t pid) {
   return status;
 }
 
-int scene_increment(const std::string& checkpoint) { return anvil::scene::read_checkpoint(checkpoint).increment; }
+int scene_increment(const std::string& checkpoint) {
+  return anvil::scene::read_checkpoint(checkpoint).increment;
+}
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path);
@@ -91,7 +94,8 @@ TEST_CASE("a run killed with SIGKILL and resumed gives the uninterrupted loads a
   const std::string pvd = read_text((killed / "anvil.pvd").string());
   std::smatch m;
   int files = 0;
-  for (auto it = pvd.cbegin(); std::regex_search(it, pvd.cend(), m, std::regex("file=\"([^\"]+)\"")); it = m.suffix().first) {
+  for (auto it = pvd.cbegin(); std::regex_search(it, pvd.cend(), m, std::regex("file=\"([^\"]+)\""));
+       it = m.suffix().first) {
     CHECK(std::filesystem::file_size(killed / m[1].str()) > 0);
     ++files;
   }

@@ -15,11 +15,11 @@ namespace {
 
 /// What crosses one side of one pair at the end of the run.
 struct Side {
-  int loaded_nodes = 0;      ///< nodes transmitting a compressive stress
-  double force = 0.0;        ///< N, Σ normal stress × tributary area
-  double area = 0.0;         ///< mm²
-  double mean_vx = 0.0;      ///< mm/s, area-weighted
-  double deepest = 0.0;      ///< mm, most negative gap
+  int loaded_nodes = 0; ///< nodes transmitting a compressive stress
+  double force = 0.0;   ///< N, Σ normal stress × tributary area
+  double area = 0.0;    ///< mm²
+  double mean_vx = 0.0; ///< mm/s, area-weighted
+  double deepest = 0.0; ///< mm, most negative gap
 };
 
 std::map<std::pair<std::string, std::string>, Side> sides(const RunOutputs& run) {
@@ -32,7 +32,8 @@ std::map<std::pair<std::string, std::string>, Side> sides(const RunOutputs& run)
     s.mean_vx += row.velocity.x() * row.area;
     s.deepest = std::min(s.deepest, row.gap);
   }
-  for (auto& [key, s] : result) s.mean_vx /= s.area;
+  for (auto& [key, s] : result)
+    s.mean_vx /= s.area;
   return result;
 }
 
@@ -42,8 +43,8 @@ TEST_CASE("three blocks in mutual contact: every pair carries load, the load pas
           "[regression]") {
   anvil::log::set_quiet(true);
   // At Newton tolerance 1e-8 (the default is 1e-6), which the equilibrium check below is built on.
-  const RunOutputs run = run_case(anvil::scene::read_case(source_path("cases/three_blocks.yaml"), {"solver.tolerance=1e-8"}),
-                                  "anvil_three_blocks");
+  const RunOutputs run = run_case(
+      anvil::scene::read_case(source_path("cases/three_blocks.yaml"), {"solver.tolerance=1e-8"}), "anvil_three_blocks");
   const auto top = run.loads("top").back(), bottom = run.loads("bottom").back();
   REQUIRE(top.stroke == Approx(2.0));
   const auto by_side = sides(run);
@@ -83,10 +84,12 @@ TEST_CASE("three blocks in mutual contact: every pair carries load, the load pas
   // stays at x = 10 mm to 2 % of the die speed (10 mm/s): only the tet
   // pattern, which is translated, not mirrored, from one block to the other,
   // breaks the symmetry (measured 0.07 mm/s, and 0.05 mm/s on matching meshes).
-  for (const char* body : {"left", "right"}) CHECK(std::abs(by_side.at({"left/right", body}).mean_vx) < 0.2);
+  for (const char* body : {"left", "right"})
+    CHECK(std::abs(by_side.at({"left/right", body}).mean_vx) < 0.2);
 
   // Penetration stays below 1 % of the finest element (1.67 mm): the
   // penalty's compliance, which projection removes after each increment
   // (measured 0.008 mm).
-  for (const auto& [key, s] : by_side) CHECK(s.deepest > -0.0167);
+  for (const auto& [key, s] : by_side)
+    CHECK(s.deepest > -0.0167);
 }

@@ -19,7 +19,8 @@ two_cubes::Outcome run(double lower_size, double upper_size, bool lower_is_maste
 
 /// Largest relative change, over load and the two interface velocities, when the roles swap.
 double swap_change(const two_cubes::Outcome& a, const two_cubes::Outcome& b) {
-  return std::max({two_cubes::change(a.load, b.load), two_cubes::change(a.interface_velocity[0], b.interface_velocity[0]),
+  return std::max({two_cubes::change(a.load, b.load),
+                   two_cubes::change(a.interface_velocity[0], b.interface_velocity[0]),
                    two_cubes::change(a.interface_velocity[1], b.interface_velocity[1])});
 }
 

@@ -13,9 +13,9 @@ using namespace anvil;
 TEST_CASE("elastic blocks in contact keep their stress from increment to increment", "[verification]") {
   log::set_quiet(true);
   for (const char* meshes : {"2.5", "2.0"}) { // matching 4/4, and non-matching 4/5 blocks
-    scene::Case c = scene::read_case(source_path("cases/patch_test_displacement.yaml"),
-                                     {"bodies[1].mesh.element_size=" + std::string(meshes),
-                                      "time={stroke_increment: 0.002, stop: {time: 1}}"});
+    scene::Case c = scene::read_case(
+        source_path("cases/patch_test_displacement.yaml"),
+        {"bodies[1].mesh.element_size=" + std::string(meshes), "time={stroke_increment: 0.002, stop: {time: 1}}"});
     const RunOutputs out = run_case(c, "anvil_elastic_in_time");
     const auto rows = out.loads("support");
     REQUIRE(rows.size() == 5);

@@ -97,8 +97,8 @@ TEST_CASE("elastic block under pressure: exact displacement at nu = 0.3 and 0.49
   // Uniaxial stress: σzz = −P; uz = −P z / E, ux = ν P x / E, uy = ν P y / E, p = P/3.
   // Direct (UMFPACK, MUMPS) and Krylov (FGMRES, both Schur approximations) solves.
   const double nu = GENERATE(0.3, 0.4999);
-  const auto kind = GENERATE(solver::LinearSolverKind::umfpack, solver::LinearSolverKind::mumps,
-                             solver::LinearSolverKind::fgmres);
+  const auto kind =
+      GENERATE(solver::LinearSolverKind::umfpack, solver::LinearSolverKind::mumps, solver::LinearSolverKind::fgmres);
   const double young = 210000.0, load = 100.0, side = 10.0;
   const material::LinearElastic law(young, nu);
   const mesh::TetMesh mesh = mesh::make_box(mesh::Point::Zero(), mesh::Point(side, side, side), 2.0);
@@ -118,8 +118,8 @@ TEST_CASE("elastic block under pressure: exact displacement at nu = 0.3 and 0.49
     pressure_error = std::max(pressure_error, std::abs(s.unknowns.nodal[4 * i + 3] - load / 3.0));
   }
   const double scale = load * side / young;
-  INFO(solver::to_string(kind) << ", nu = " << nu << ": max displacement error " << displacement_error / scale << " (relative), max pressure error "
-               << pressure_error / load << " (relative to P)");
+  INFO(solver::to_string(kind) << ", nu = " << nu << ": max displacement error " << displacement_error / scale
+                               << " (relative), max pressure error " << pressure_error / load << " (relative to P)");
   // Linear exact solution: reproduced to solver tolerance, at every node (no checkerboard).
   CHECK(displacement_error <= 1e-9 * scale);
   CHECK(pressure_error <= 1e-9 * load);
@@ -137,7 +137,8 @@ TEST_CASE("Newton converges quadratically near the solution (m = 0.15)", "[verif
   REQUIRE(s.report.converged);
   const auto& it = s.report.iterations;
   std::string history;
-  for (const auto& i : it) history += std::to_string(i.force_residual) + " ";
+  for (const auto& i : it)
+    history += std::to_string(i.force_residual) + " ";
   INFO("force residual history: " << history);
   // Quadratic: with full steps and r_k < 1e-2, r_{k+1} ≤ C r_k² with C = 1e3
   // (observed ~1.3e2). Linear convergence at any rate ρ gives r_{k+1}/r_k² = ρ/r_k,

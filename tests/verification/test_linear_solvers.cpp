@@ -31,7 +31,8 @@ TEST_CASE("Norton-Hoff m = 0.1 with a rigid zone: FGMRES gives MUMPS's punch loa
   for (int node : scene::face_nodes(mesh, scene::select_faces(mesh, punch.faces)))
     if (mesh.nodes[node].x() <= 10.0 + 1e-9) {
       punch_nodes.push_back(node);
-      for (int c = 0; c < 3; ++c) imposed.prescribed[4 * node + c] = 1, imposed.values[4 * node + c] = c == 2 ? -1.0 : 0.0;
+      for (int c = 0; c < 3; ++c)
+        imposed.prescribed[4 * node + c] = 1, imposed.values[4 * node + c] = c == 2 ? -1.0 : 0.0;
     }
   using K = solver::LinearSolverKind;
   const std::vector<std::pair<std::string, solver::LinearSolverSettings>> solvers = {
@@ -51,7 +52,8 @@ TEST_CASE("Norton-Hoff m = 0.1 with a rigid zone: FGMRES gives MUMPS's punch loa
     INFO(name << ": " << report.failure);
     REQUIRE(report.converged);
     double load = 0.0;
-    for (int node : punch_nodes) load += solver.residual()[4 * node + 2];
+    for (int node : punch_nodes)
+      load += solver.residual()[4 * node + 2];
     if (name == "mumps") reference = load;
     INFO(name << ": punch load " << load << " N, mumps " << reference << " N, Krylov iterations "
               << report.linear_iterations);
@@ -70,16 +72,16 @@ TEST_CASE("contact, friction, several bodies, elastic dies: FGMRES gives MUMPS's
        {"cases/forging_elastic_dies.yaml", "press", "time.stop.time=0.045"}}));
   std::vector<std::vector<LoadRow>> loads;
   for (const std::string solver_kind : {"mumps", "fgmres"}) {
-    const scene::Case c = scene::read_case(
-        source_path(file), {stop, "solver.linear_solver=" + solver_kind, "solver.tolerance=1e-10",
-                            "solver.increment_tolerance=1e-10", "output.vtk=false"});
+    const scene::Case c =
+        scene::read_case(source_path(file), {stop, "solver.linear_solver=" + solver_kind, "solver.tolerance=1e-10",
+                                             "solver.increment_tolerance=1e-10", "output.vtk=false"});
     loads.push_back(run_case(c, "anvil_solvers_" + solver_kind).loads(surface));
   }
   REQUIRE(loads[0].size() == loads[1].size());
   REQUIRE(loads[0].size() >= 3);
   for (std::size_t i = 0; i < loads[0].size(); ++i) {
-    INFO(file << " increment " << i + 1 << ": mumps " << loads[0][i].force.z() << " N, fgmres "
-              << loads[1][i].force.z() << " N");
+    INFO(file << " increment " << i + 1 << ": mumps " << loads[0][i].force.z() << " N, fgmres " << loads[1][i].force.z()
+              << " N");
     CHECK(std::abs(loads[1][i].force.z() - loads[0][i].force.z()) <= 1e-6 * std::abs(loads[0][i].force.z()));
   }
 }

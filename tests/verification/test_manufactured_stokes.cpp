@@ -38,7 +38,9 @@ Eigen::Matrix3d exact_gradient(const mesh::Point& x) { // G(i, j) = ∂u_i/∂x_
   return g;
 }
 
-double exact_pressure(const mesh::Point& x) { return std::cos(pi * x.x()) * std::cos(pi * x.y()) * std::cos(pi * x.z()); }
+double exact_pressure(const mesh::Point& x) {
+  return std::cos(pi * x.x()) * std::cos(pi * x.y()) * std::cos(pi * x.z());
+}
 
 Eigen::Vector3d body_force(const mesh::Point& x) {
   const Eigen::Vector3d grad_p(-pi * std::sin(pi * x.x()) * std::cos(pi * x.y()) * std::cos(pi * x.z()),
@@ -132,7 +134,8 @@ Errors solve_on(int cells) {
 
 TEST_CASE("manufactured Stokes flow converges at the MINI element's rates", "[verification]") {
   std::vector<Errors> runs;
-  for (int cells : {4, 6, 8, 12, 16}) runs.push_back(solve_on(cells));
+  for (int cells : {4, 6, 8, 12, 16})
+    runs.push_back(solve_on(cells));
   auto rate = [&](double Errors::*field, std::size_t k) {
     return std::log(runs[k - 1].*field / runs[k].*field) / std::log(runs[k - 1].h / runs[k].h);
   };

@@ -57,8 +57,8 @@ TEST_CASE("ring compression: the inner diameter grows without friction and shrin
       CHECK(std::abs(largest - exact) / exact < 0.005);
     }
   }
-  INFO("inner-diameter change at m = 0, 0.1, 0.3, 0.5: " << change[0] << ", " << change[1] << ", " << change[2]
-                                                          << ", " << change[3]);
+  INFO("inner-diameter change at m = 0, 0.1, 0.3, 0.5: " << change[0] << ", " << change[1] << ", " << change[2] << ", "
+                                                         << change[3]);
   CHECK(change[0] > 0.0);
   CHECK(change[1] < change[0]);
   CHECK(change[2] < change[1]);

@@ -23,7 +23,8 @@ constexpr double kRadius = 10.0, kHeight = 15.0, kSpeed = 10.0; // cases/upsetti
 /// Runs the frictionless upsetting case with `friction` on both dies.
 RunOutputs upset(const contact::FrictionLaw& friction, const std::string& tag) {
   scene::Case c = scene::read_case(source_path("cases/upsetting_frictionless.yaml"));
-  for (scene::DieSpec& d : c.dies) d.friction = friction;
+  for (scene::DieSpec& d : c.dies)
+    d.friction = friction;
   c.write_vtk = false;
   return run_case(c, "anvil_upsetting_" + tag);
 }
@@ -53,7 +54,8 @@ TEST_CASE("frictionless Norton-Hoff upsetting follows the exact homogeneous solu
 
   const scene::RunState end = out.final_state();
   double radius = 0.0;
-  for (const mesh::Point& p : end.mesh.nodes) radius = std::max(radius, std::hypot(p.x(), p.y()));
+  for (const mesh::Point& p : end.mesh.nodes)
+    radius = std::max(radius, std::hypot(p.x(), p.y()));
   const double exact_radius = kRadius * std::sqrt(kHeight / (kHeight - 7.5));
   INFO("final radius " << radius << " mm, exact " << exact_radius << " mm");
   CHECK(std::abs(radius - exact_radius) / exact_radius < 0.005);
@@ -95,7 +97,8 @@ TEST_CASE("friction raises the upsetting load within the slab band and barrels t
   // Barrelling: with friction the lateral surface bulges at mid-height.
   const scene::RunState end = tresca.final_state();
   double top = 0.0, middle = 0.0, height = 0.0;
-  for (const mesh::Point& p : end.mesh.nodes) height = std::max(height, p.z());
+  for (const mesh::Point& p : end.mesh.nodes)
+    height = std::max(height, p.z());
   for (const mesh::Point& p : end.mesh.nodes) {
     const double r = std::hypot(p.x(), p.y());
     if (p.z() > height - 1e-6) top = std::max(top, r);

@@ -20,19 +20,19 @@
 namespace {
 
 struct Result {
-  double force = 0.0;    ///< N, squeezing force on the top plate
-  double unknowns = 0.0; ///< degrees of freedom (velocity and pressure)
+  double force = 0.0;     ///< N, squeezing force on the top plate
+  double unknowns = 0.0;  ///< degrees of freedom (velocity and pressure)
   double wall_time = 0.0; ///< s
   int newton_iterations = 0;
 };
 
 /// One run with `lower_cells` and `upper_cells` cells across the 2 mm bar height.
 Result run(int lower_cells, int upper_cells, const std::string& formulation, const std::string& out) {
-  const anvil::scene::Case c = anvil::scene::read_case(
-      std::string(ANVIL_SOURCE_DIR) + "/cases/two_bars.yaml",
-      {"bodies[0].mesh.element_size=" + std::to_string(2.0 / lower_cells),
-       "bodies[1].mesh.element_size=" + std::to_string(2.0 / upper_cells),
-       "contact_pairs[0].formulation=" + formulation});
+  const anvil::scene::Case c =
+      anvil::scene::read_case(std::string(ANVIL_SOURCE_DIR) + "/cases/two_bars.yaml",
+                              {"bodies[0].mesh.element_size=" + std::to_string(2.0 / lower_cells),
+                               "bodies[1].mesh.element_size=" + std::to_string(2.0 / upper_cells),
+                               "contact_pairs[0].formulation=" + formulation});
   std::filesystem::remove_all(out);
   anvil::scene::run(c, {out});
   return {anvil::io::read_loads(out, "top").back().force.z(), anvil::io::read_summary_number(out, "unknowns"),

@@ -48,7 +48,8 @@ Problem make_problem(const std::string& name, long target_nodes) {
   // (2n+1)²(n+1) ≈ target nodes.
   const int n = std::max(2, static_cast<int>(std::lround(std::cbrt(static_cast<double>(target_nodes) / 4.0))));
   const double length = 10.0;
-  Problem p{mesh::make_box(mesh::Point::Zero(), mesh::Point(2 * length, 2 * length, length), {2 * n, 2 * n, n}), {}, {}};
+  Problem p{
+      mesh::make_box(mesh::Point::Zero(), mesh::Point(2 * length, 2 * length, length), {2 * n, 2 * n, n}), {}, {}};
   scene::BoundaryCondition bottom, top;
   bottom.kind = top.kind = scene::BoundaryKind::sticking_plate;
   bottom.faces.tag = 5;
@@ -93,13 +94,20 @@ int main(int argc, char** argv) {
     std::vector<char*> petsc_arguments = {argv[0]};
     for (int i = 4; i < argc; ++i) {
       const std::string arg = argv[i];
-      if (arg == "--newton" && i + 1 < argc) settings.max_iterations = std::atoi(argv[++i]);
-      else if (arg == "--schur" && i + 1 < argc) linear.schur = solver::schur_approximation(argv[++i]);
-      else if (arg == "--no-reuse") linear.reuse_preconditioner = false;
-      else if (arg == "--verbose") settings.verbose = true; // Newton's lines, for a look
-      else if (solver::is_petsc_option_name(arg)) petsc_arguments.push_back(argv[i]);
-      else if (petsc_arguments.size() > 1) petsc_arguments.push_back(argv[i]); // a PETSc option's value
-      else throw InputError("unknown argument '" + arg + "'\n" + kUsage);
+      if (arg == "--newton" && i + 1 < argc)
+        settings.max_iterations = std::atoi(argv[++i]);
+      else if (arg == "--schur" && i + 1 < argc)
+        linear.schur = solver::schur_approximation(argv[++i]);
+      else if (arg == "--no-reuse")
+        linear.reuse_preconditioner = false;
+      else if (arg == "--verbose")
+        settings.verbose = true; // Newton's lines, for a look
+      else if (solver::is_petsc_option_name(arg))
+        petsc_arguments.push_back(argv[i]);
+      else if (petsc_arguments.size() > 1)
+        petsc_arguments.push_back(argv[i]); // a PETSc option's value
+      else
+        throw InputError("unknown argument '" + arg + "'\n" + kUsage);
     }
     int petsc_argc = static_cast<int>(petsc_arguments.size());
     petsc_arguments.push_back(nullptr);
@@ -110,8 +118,7 @@ int main(int argc, char** argv) {
     log::set_quiet(!settings.verbose);
     solver::IncrementSolver solver(problem.mesh, problem.imposed.prescribed, linear, timers);
     fem::BodyUnknowns unknowns{problem.imposed.values, Eigen::VectorXd::Zero(3 * problem.mesh.tet_count())};
-    const auto report =
-        solver.solve(*problem.law, {}, problem.imposed.nodal_forces, {}, settings, unknowns);
+    const auto report = solver.solve(*problem.law, {}, problem.imposed.nodal_forces, {}, settings, unknowns);
 
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);

@@ -24,19 +24,22 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(out);
     anvil::log::set_quiet(true);
     std::ofstream csv(out + "/patch_test.csv");
-    csv << "case,meshes,formulation,interface_max,interface_rms,interior_max,interface_nodes,newton_iterations,wall_time_s\n";
-    std::printf("| case | meshes (master/slave cells) | formulation | interface max | interface RMS | interior max | Newton | time |\n"
+    csv << "case,meshes,formulation,interface_max,interface_rms,interior_max,interface_nodes,newton_iterations,wall_"
+           "time_s\n";
+    std::printf("| case | meshes (master/slave cells) | formulation | interface max | interface RMS | interior max | "
+                "Newton | time |\n"
                 "|---|---|---|---|---|---|---|---|\n");
     for (const auto& load : patch_test::load_cases())
       for (const auto& meshes : patch_test::mesh_pairs())
         for (const char* formulation : {"master_slave", "quasi_symmetric", "symmetric"}) {
           const patch_test::Errors e = patch_test::run(load, meshes, formulation, ANVIL_SOURCE_DIR, out + "/run");
-          std::printf("| %s | %s | %s | %.2f %% | %.2f %% | %.2f %% | %d | %.2f s |\n", load.name, meshes.name, formulation,
-                      100 * e.interface_max, 100 * e.interface_rms, 100 * e.interior_max, e.newton_iterations, e.wall_time);
+          std::printf("| %s | %s | %s | %.2f %% | %.2f %% | %.2f %% | %d | %.2f s |\n", load.name, meshes.name,
+                      formulation, 100 * e.interface_max, 100 * e.interface_rms, 100 * e.interior_max,
+                      e.newton_iterations, e.wall_time);
           std::fflush(stdout);
           csv << '"' << load.name << "\",\"" << meshes.name << "\"," << formulation << "," << e.interface_max << ","
-              << e.interface_rms << "," << e.interior_max << "," << e.interface_nodes << "," << e.newton_iterations << ","
-              << e.wall_time << "\n";
+              << e.interface_rms << "," << e.interior_max << "," << e.interface_nodes << "," << e.newton_iterations
+              << "," << e.wall_time << "\n";
         }
     std::printf("results in %s/\n", out.c_str());
   } catch (const std::exception& e) {

@@ -36,7 +36,10 @@ std::vector<Point2> rounded(const std::vector<Point2>& profile, double fillet) {
     const Point2 corner = profile[k];
     const Point2 to_previous = (profile[k - 1] - corner).normalized(), to_next = (profile[k + 1] - corner).normalized();
     const double opening = std::acos(std::clamp(to_previous.dot(to_next), -1.0, 1.0)); // π: straight on
-    if (pi - opening < 1e-6) { out.push_back(corner); continue; }
+    if (pi - opening < 1e-6) {
+      out.push_back(corner);
+      continue;
+    }
     // Tangent points at distance t from the corner, at most 45 % of either segment.
     const double reach = 0.45 * std::min((profile[k - 1] - corner).norm(), (profile[k + 1] - corner).norm());
     const double t = std::min(fillet / std::tan(0.5 * opening), reach);
@@ -71,8 +74,8 @@ std::vector<double> enclosed_volumes(const std::vector<Point2>& profile) {
   return volume;
 }
 
-void write_stl(const std::string& path, const std::string& name, const std::vector<Point2>& profile,
-               double from_deg, double to_deg, double segment_deg, bool mirror) {
+void write_stl(const std::string& path, const std::string& name, const std::vector<Point2>& profile, double from_deg,
+               double to_deg, double segment_deg, bool mirror) {
   const int segments = std::max(1, static_cast<int>(std::ceil((to_deg - from_deg) / segment_deg)));
   auto at = [&](const Point2& p, int j) {
     const double a = (from_deg + (to_deg - from_deg) * j / segments) * pi / 180.0;
@@ -88,7 +91,8 @@ void write_stl(const std::string& path, const std::string& name, const std::vect
     if (n.norm() < 1e-14) return; // on the axis
     const Eigen::Vector3d u = n.normalized();
     out << "  facet normal " << u.x() << " " << u.y() << " " << u.z() << "\n    outer loop\n";
-    for (const Eigen::Vector3d& v : {a, b, c}) out << "      vertex " << v.x() << " " << v.y() << " " << v.z() << "\n";
+    for (const Eigen::Vector3d& v : {a, b, c})
+      out << "      vertex " << v.x() << " " << v.y() << " " << v.z() << "\n";
     out << "    endloop\n  endfacet\n";
   };
   // Along the profile then around the axis: (t_profile × t_angle) points
@@ -118,7 +122,8 @@ int main(int argc, char** argv) {
   try {
     const YAML::Node root = YAML::LoadFile(file);
     std::vector<Point2> profile;
-    for (const YAML::Node& p : root["profile"]) profile.emplace_back(p[0].as<double>(), p[1].as<double>());
+    for (const YAML::Node& p : root["profile"])
+      profile.emplace_back(p[0].as<double>(), p[1].as<double>());
     if (profile.size() < 2) throw anvil::InputError(file + ": 'profile' needs at least two [r, z] points");
     for (std::size_t k = 1; k < profile.size(); ++k)
       if (profile[k].x() < profile[k - 1].x() - 1e-12 || (profile[k] - profile[k - 1]).norm() < 1e-9)
@@ -138,10 +143,12 @@ int main(int argc, char** argv) {
     std::printf("closed dies, volume inside radius r (full revolution, fillets included):\n");
     for (const Point2& corner : profile) {
       std::size_t k = 0;
-      while (k + 1 < surface.size() && surface[k + 1].x() <= corner.x()) ++k;
+      while (k + 1 < surface.size() && surface[k + 1].x() <= corner.x())
+        ++k;
       const double span = k + 1 < surface.size() ? surface[k + 1].x() - surface[k].x() : 0.0;
       const double w = span > 0.0 ? (corner.x() - surface[k].x()) / span : 0.0;
-      std::printf("  r %7.3f mm  volume %10.2f mm³\n", corner.x(), (1 - w) * volume[k] + w * volume[std::min(k + 1, volume.size() - 1)]);
+      std::printf("  r %7.3f mm  volume %10.2f mm³\n", corner.x(),
+                  (1 - w) * volume[k] + w * volume[std::min(k + 1, volume.size() - 1)]);
     }
   } catch (const YAML::Exception& e) {
     std::cerr << file << ":" << e.mark.line + 1 << ": " << e.what() << "\n";

@@ -114,7 +114,8 @@ LoadCurve read_curve(const std::string& directory, const std::string& die) {
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
   std::istringstream in(text);
-  for (std::string part; std::getline(in, part, separator);) parts.push_back(part);
+  for (std::string part; std::getline(in, part, separator);)
+    parts.push_back(part);
   return parts;
 }
 
@@ -142,7 +143,8 @@ public:
     const scene::BodySpec& body = c.bodies.front();
     const scene::DieSpec& die = c.dies.at(c.time.stroke_die);
     if (const scene::DieSpec* d = die_with_friction(c))
-      throw InputError(d->source + ": --error exact-upsetting needs frictionless dies; die '" + d->name + "' has friction");
+      throw InputError(d->source + ": --error exact-upsetting needs frictionless dies; die '" + d->name +
+                       "' has friction");
     if (die.motion != "constant")
       throw InputError(die.source + ": --error exact-upsetting needs a die at constant velocity");
     card_ = scene::read_material(body.material_file);
@@ -182,7 +184,8 @@ double error_against(const LoadCurve& curve, const LoadCurve& reference, double 
 std::optional<double> worst_jump(const std::vector<double>& jumps) {
   if (jumps.empty()) return std::nullopt;
   double worst = 0.0;
-  for (double j : jumps) worst = std::max(worst, std::abs(j));
+  for (double j : jumps)
+    worst = std::max(worst, std::abs(j));
   return worst;
 }
 
@@ -238,7 +241,9 @@ struct Row {
 };
 
 /// What a row without an error stands for.
-const char* no_error_label(ErrorKind kind) { return kind == ErrorKind::remesh_jump ? "no remesh" : "reference"; }
+const char* no_error_label(ErrorKind kind) {
+  return kind == ErrorKind::remesh_jump ? "no remesh" : "reference";
+}
 
 std::string format_row_csv(const Row& r, ErrorKind kind) {
   char text[512];
@@ -283,22 +288,31 @@ int study(int argc, char** argv) {
       if (equals == std::string::npos || equals + 1 == text.size())
         throw InputError("--vary '" + text + "': expected KEY=V1,V2,..., e.g. time.stroke_increment=0.5,0.25");
       parameters.push_back({text.substr(0, equals), split(text.substr(equals + 1), ',')});
-    } else if (arg == "--set") fixed.emplace_back(argv[++i]);
-    else if (arg == "--error") error_name = argv[++i];
-    else if (arg == "-o") out = argv[++i];
-    else if (!arg.empty() && arg[0] != '-' && case_file.empty()) case_file = arg;
-    else throw InputError("unexpected argument '" + arg + "' (see --help)");
+    } else if (arg == "--set")
+      fixed.emplace_back(argv[++i]);
+    else if (arg == "--error")
+      error_name = argv[++i];
+    else if (arg == "-o")
+      out = argv[++i];
+    else if (!arg.empty() && arg[0] != '-' && case_file.empty())
+      case_file = arg;
+    else
+      throw InputError("unexpected argument '" + arg + "' (see --help)");
   }
-  if (case_file.empty() || parameters.empty()) throw InputError("needs a case file and at least one --vary (see --help)");
+  if (case_file.empty() || parameters.empty())
+    throw InputError("needs a case file and at least one --vary (see --help)");
 
   // The case at the finest settings: it names the die and checks every key.
   std::vector<std::string> finest = fixed;
-  for (const Parameter& p : parameters) finest.push_back(p.key + "=" + p.values.back());
+  for (const Parameter& p : parameters)
+    finest.push_back(p.key + "=" + p.values.back());
   const scene::Case c = scene::read_case(case_file, finest);
-  if (c.dies.empty() || !c.time.enabled) throw InputError(case_file + ": the study needs a case with dies and a time section");
+  if (c.dies.empty() || !c.time.enabled)
+    throw InputError(case_file + ": the study needs a case with dies and a time section");
   if (error_name.empty()) error_name = die_with_friction(c) ? "finest" : "exact-upsetting";
-  const std::map<std::string, ErrorKind> kinds{
-      {"exact-upsetting", ErrorKind::exact_upsetting}, {"finest", ErrorKind::finest}, {"remesh-jump", ErrorKind::remesh_jump}};
+  const std::map<std::string, ErrorKind> kinds{{"exact-upsetting", ErrorKind::exact_upsetting},
+                                               {"finest", ErrorKind::finest},
+                                               {"remesh-jump", ErrorKind::remesh_jump}};
   const auto named = kinds.find(error_name);
   if (named == kinds.end())
     throw InputError("--error '" + error_name + "': expected exact-upsetting, finest or remesh-jump");
@@ -321,14 +335,18 @@ int study(int argc, char** argv) {
     for (const std::string& value : p.values) {
       const Run& r = runs.run(p.key, value);
       std::optional<double> error;
-      if (exact) error = exact->error(r.curve);
-      else if (kind == ErrorKind::remesh_jump) error = worst_jump(r.load_jumps);
-      else if (&r != reference) error = error_against(r.curve, reference->curve, reference->curve.stroke.back());
+      if (exact)
+        error = exact->error(r.curve);
+      else if (kind == ErrorKind::remesh_jump)
+        error = worst_jump(r.load_jumps);
+      else if (&r != reference)
+        error = error_against(r.curve, reference->curve, reference->curve.stroke.back());
       rows.push_back({p.key, value, error, &r});
     }
 
   std::string csv = "key,value,error_percent,wall_time_s,increments,newton_iterations,nodes,remeshes,run_directory\n";
-  for (const Row& r : rows) csv += format_row_csv(r, kind);
+  for (const Row& r : rows)
+    csv += format_row_csv(r, kind);
   io::write_file_atomically(out + "/study.csv", csv);
 
   const char* measure = kind == ErrorKind::remesh_jump ? "worst load jump" : "load error";

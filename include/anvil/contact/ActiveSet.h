@@ -24,7 +24,8 @@ public:
   void start(const std::vector<double>& gap) {
     frozen_ = false;
     iterations_ = 0;
-    for (std::size_t i = 0; i < active_.size(); ++i) active_[i] = gap[i] >= -tolerance_;
+    for (std::size_t i = 0; i < active_.size(); ++i)
+      active_[i] = gap[i] >= -tolerance_;
   }
   /// An accepted Newton iterate: the set follows h until it freezes. Returns the log note.
   std::string accept(const std::vector<double>& gap, const char* what) {
@@ -58,7 +59,8 @@ public:
   std::size_t size() const { return active_.size(); }
   int count() const {
     int n = 0;
-    for (char a : active_) n += a;
+    for (char a : active_)
+      n += a;
     return n;
   }
 

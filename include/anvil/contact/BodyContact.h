@@ -29,8 +29,8 @@
 #include "anvil/contact/ActiveSet.h"
 #include "anvil/contact/ContactIncrement.h"
 #include "anvil/contact/Friction.h"
-#include "anvil/solver/NodalTerm.h"
 #include "anvil/mesh/TetMesh.h"
+#include "anvil/solver/NodalTerm.h"
 
 #include <array>
 #include <string>
@@ -54,14 +54,14 @@ struct BodyPair {
 struct ContactPoint {
   int pair;
   int node;
-  std::array<int, 3> facet;  ///< nodes of the facet it projects onto
-  Eigen::Vector3d shape;     ///< N_j(ξ) of the facet at the projection
-  Eigen::Vector3d normal;    ///< outward normal of the facet's body there (towards the node)
-  double gap;                ///< δ₀ (mm), < 0 penetrated
-  double area;               ///< tributary area A_p of the node on the faces looking at the other body (mm²)
-  double share;              ///< f_p: 1 (eq. 19) or ½ (eqs. 20-21)
-  bool on_slave;             ///< a slave node (on a master facet); else a master node
-  std::array<int, 3> multiplier{-1, -1, -1}; ///< multipliers it feeds
+  std::array<int, 3> facet; ///< nodes of the facet it projects onto
+  Eigen::Vector3d shape;    ///< N_j(ξ) of the facet at the projection
+  Eigen::Vector3d normal;   ///< outward normal of the facet's body there (towards the node)
+  double gap;               ///< δ₀ (mm), < 0 penetrated
+  double area;              ///< tributary area A_p of the node on the faces looking at the other body (mm²)
+  double share;             ///< f_p: 1 (eq. 19) or ½ (eqs. 20-21)
+  bool on_slave;            ///< a slave node (on a master facet); else a master node
+  std::array<int, 3> multiplier{-1, -1, -1};                   ///< multipliers it feeds
   Eigen::Vector3d multiplier_weight = Eigen::Vector3d::Zero(); ///< W_pm
 };
 
@@ -96,15 +96,15 @@ private:
   /// One constraint: C = Σ_i c_i·v_i − gap_sum/Δt over its support nodes.
   struct Multiplier {
     int pair;
-    double node_weight = 0.0;     ///< G = Σ W f
-    double area = 0.0;            ///< Ã = Σ W f A (mm²), on which λ acts
-    double gap_sum = 0.0;         ///< Σ W f δ₀ (mm)
-    int first = 0, count = 0;     ///< range in support_
+    double node_weight = 0.0; ///< G = Σ W f
+    double area = 0.0;        ///< Ã = Σ W f A (mm²), on which λ acts
+    double gap_sum = 0.0;     ///< Σ W f δ₀ (mm)
+    int first = 0, count = 0; ///< range in support_
   };
   struct Support {
     int node;
-    Eigen::Vector3d normal;       ///< c_i = ∂C/∂v_i
-    Eigen::Matrix3d tangential;   ///< ∂T/∂v_i, T the combined tangential velocity (sticking)
+    Eigen::Vector3d normal;     ///< c_i = ∂C/∂v_i
+    Eigen::Matrix3d tangential; ///< ∂T/∂v_i, T the combined tangential velocity (sticking)
   };
 
   /// C/G of multiplier `index` at `nodal`: its weighted mean gap velocity (mm/s).
@@ -117,8 +117,8 @@ private:
   std::vector<Multiplier> multipliers_;
   std::vector<Support> support_;
   ContactIncrement increment_{};
-  ActiveSet active_;            ///< per multiplier
-  std::vector<double> gap_;     ///< per multiplier, C/Ã at the last iterate asked (mm/s)
+  ActiveSet active_;                   ///< per multiplier
+  std::vector<double> gap_;            ///< per multiplier, C/Ã at the last iterate asked (mm/s)
   mutable std::vector<double> stress_; ///< per multiplier, λ of the last add() (MPa), 0 when inactive
 };
 

@@ -9,11 +9,11 @@ namespace anvil::contact {
 
 /// Per-increment constants of a contact term.
 struct ContactIncrement {
-  double time_step;       ///< Δt (s)
-  double penalty;         ///< ρ (MPa·s/mm)
-  double regularisation;  ///< friction w₀ (mm/s)
-  double gap_tolerance;   ///< mm/s: the active set changes at convergence only beyond ±this
-  double recovery_time;   ///< s: a penetration present at the start is removed over at least this (the nominal Δt)
+  double time_step;      ///< Δt (s)
+  double penalty;        ///< ρ (MPa·s/mm)
+  double regularisation; ///< friction w₀ (mm/s)
+  double gap_tolerance;  ///< mm/s: the active set changes at convergence only beyond ±this
+  double recovery_time;  ///< s: a penetration present at the start is removed over at least this (the nominal Δt)
   std::vector<double> flow_stress{}; ///< σ₀ per node (MPa), for Tresca (contact_scales)
   std::vector<double> consistency{}; ///< K per node, for Norton friction
 

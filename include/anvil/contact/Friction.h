@@ -16,19 +16,19 @@ enum class FrictionKind { frictionless, sticking, tresca, coulomb, norton };
 
 struct FrictionLaw {
   FrictionKind kind = FrictionKind::frictionless;
-  double tresca_factor = 0.0;  ///< m̄ (Tresca; Coulomb cap when > 0), 0..1
-  double coefficient = 0.0;    ///< μ (Coulomb) or α (Norton)
-  double exponent = 0.0;       ///< q (Norton), 0 < q ≤ 1
+  double tresca_factor = 0.0; ///< m̄ (Tresca; Coulomb cap when > 0), 0..1
+  double coefficient = 0.0;   ///< μ (Coulomb) or α (Norton)
+  double exponent = 0.0;      ///< q (Norton), 0 < q ≤ 1
 };
 
 /// What the contact term needs of the law at one node.
 struct FrictionInput {
-  Eigen::Vector3d sliding;   ///< w = tangential relative velocity body − die (mm/s)
-  double normal_pressure;    ///< σn ≥ 0 (MPa)
-  double flow_stress;        ///< σ₀ (MPa), for Tresca
-  double consistency;        ///< K (MPa·s^q), for Norton
-  double regularisation;     ///< w₀ (mm/s)
-  double penalty;            ///< ρ (MPa·s/mm), for sticking
+  Eigen::Vector3d sliding; ///< w = tangential relative velocity body − die (mm/s)
+  double normal_pressure;  ///< σn ≥ 0 (MPa)
+  double flow_stress;      ///< σ₀ (MPa), for Tresca
+  double consistency;      ///< K (MPa·s^q), for Norton
+  double regularisation;   ///< w₀ (mm/s)
+  double penalty;          ///< ρ (MPa·s/mm), for sticking
 };
 
 struct FrictionStress {

@@ -35,7 +35,6 @@ struct ContactCandidate {
   double area;            ///< tributary boundary area (mm²)
 };
 
-
 class RigidContact final : public solver::NodalTerm {
 public:
   /// Boundary nodes of `mesh` within `search_distance` (mm) of a die, each
@@ -70,8 +69,8 @@ private:
   std::vector<DieView> dies_;
   std::vector<ContactCandidate> candidates_;
   ContactIncrement increment_{};
-  ActiveSet active_;         ///< per candidate
-  std::vector<double> gap_;  ///< per candidate, h at the last iterate asked
+  ActiveSet active_;        ///< per candidate
+  std::vector<double> gap_; ///< per candidate, h at the last iterate asked
 };
 
 /// Tributary boundary area of each node (mm²): a third of each adjacent boundary face.

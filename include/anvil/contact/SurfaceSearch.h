@@ -18,8 +18,8 @@ public:
   SurfaceSearch& operator=(SurfaceSearch&&) noexcept;
 
   struct Closest {
-    int face;           ///< index into the `faces` given
-    mesh::Point point;  ///< closest point on that face (mm)
+    int face;          ///< index into the `faces` given
+    mesh::Point point; ///< closest point on that face (mm)
   };
   Closest closest(const mesh::Point& x) const;
 

@@ -32,6 +32,7 @@ struct ContactScales {
 /// press speed, whatever the flow stress does along the stroke.
 ContactScales contact_scales(const mesh::TetMesh& mesh, std::span<const ScaledBody> bodies,
                              const fem::ElementLaws& laws, std::span<const material::PointState> states,
-                             const fem::BodyUnknowns& u, double reference_rate, double body_size, double penalty_factor);
+                             const fem::BodyUnknowns& u, double reference_rate, double body_size,
+                             double penalty_factor);
 
 } // namespace anvil::contact

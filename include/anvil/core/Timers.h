@@ -14,9 +14,7 @@ public:
   public:
     Scope(Timers& timers, std::string phase)
         : timers_(timers), phase_(std::move(phase)), start_(std::chrono::steady_clock::now()) {}
-    ~Scope() {
-      timers_.add(phase_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
-    }
+    ~Scope() { timers_.add(phase_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()); }
     Scope(const Scope&) = delete;
     Scope& operator=(const Scope&) = delete;
 

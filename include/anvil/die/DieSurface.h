@@ -15,9 +15,9 @@ namespace anvil::die {
 
 /// Closest point of the die surface to a query point.
 struct SurfaceProjection {
-  mesh::Point point;       ///< closest point on the surface (mm)
-  Eigen::Vector3d normal;  ///< unit, out of the die material (towards the body side)
-  double distance = 0.0;   ///< signed: > 0 outside the die, < 0 penetrated (mm)
+  mesh::Point point;      ///< closest point on the surface (mm)
+  Eigen::Vector3d normal; ///< unit, out of the die material (towards the body side)
+  double distance = 0.0;  ///< signed: > 0 outside the die, < 0 penetrated (mm)
 };
 
 /// Triangles of a surface, for output.

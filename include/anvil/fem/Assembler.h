@@ -33,9 +33,9 @@ struct BodyUnknowns {
 
 /// What the assembly returns besides the matrix.
 struct AssemblyResult {
-  Eigen::VectorXd residual;    ///< 4 × nodes; includes prescribed dofs (their entries are reactions, N)
+  Eigen::VectorXd residual; ///< 4 × nodes; includes prescribed dofs (their entries are reactions, N)
   double bubble_residual_sq = 0.0;
-  int bad_element = -1;        ///< first inverted or flat element (0-based), or −1
+  int bad_element = -1; ///< first inverted or flat element (0-based), or −1
 };
 
 class Assembler {
@@ -53,8 +53,7 @@ public:
   /// Bubble increments (3 × elements) that go with the nodal increments
   /// `delta` (4 × nodes), from the data of the last assemble() (
   /// static condensation: Δb = −K_bb⁻¹ (r_b + K_bl Δv + G_b Δp)).
-  void bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorXd& delta,
-                        Eigen::VectorXd& bubble_delta) const;
+  void bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorXd& delta, Eigen::VectorXd& bubble_delta) const;
 
   /// The tangent of the last assemble() with a tangent; its storage stays in
   /// place until the pattern changes (set_couplings() returns true).

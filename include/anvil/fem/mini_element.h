@@ -30,22 +30,22 @@ using BodyForce = std::function<Vec3(const mesh::Point&)>;
 
 /// Current values of the element's unknowns.
 struct MiniElementInput {
-  std::array<mesh::Point, 4> vertices;        ///< positive orientation, mm
-  std::array<Vec3, 4> nodal_velocity;         ///< mm/s (mm for elastic laws)
-  Vec3 bubble_velocity = Vec3::Zero();        ///< bubble coefficient, same unit
-  std::array<double, 4> nodal_pressure{};     ///< MPa
-  material::PointState state;                 ///< element history
+  std::array<mesh::Point, 4> vertices;    ///< positive orientation, mm
+  std::array<Vec3, 4> nodal_velocity;     ///< mm/s (mm for elastic laws)
+  Vec3 bubble_velocity = Vec3::Zero();    ///< bubble coefficient, same unit
+  std::array<double, 4> nodal_pressure{}; ///< MPa
+  material::PointState state;             ///< element history
 };
 
 /// Condensed element system. Residual sign: R = internal − external, so
 /// Newton solves tangent · Δ = −residual.
 struct MiniElementSystem {
   Vec16 residual;
-  Mat16 tangent;                                ///< symmetric; filled only when asked for
-  Eigen::Matrix<double, 3, 16> bubble_gain;     ///< K_bb⁻¹ [K_bl  G_b]
-  Vec3 bubble_residual_solved;                  ///< K_bb⁻¹ r_b
-  double bubble_residual_sq = 0.0;              ///< |r_b|², for the residual norm
-  double volume = 0.0;                          ///< mm³; ≤ 0 means the tet is inverted
+  Mat16 tangent;                            ///< symmetric; filled only when asked for
+  Eigen::Matrix<double, 3, 16> bubble_gain; ///< K_bb⁻¹ [K_bl  G_b]
+  Vec3 bubble_residual_solved;              ///< K_bb⁻¹ r_b
+  double bubble_residual_sq = 0.0;          ///< |r_b|², for the residual norm
+  double volume = 0.0;                      ///< mm³; ≤ 0 means the tet is inverted
   /// Mean tangent viscosity tr(∫D)/(10 V) (MPa·s; the shear modulus for
   /// elastic laws): η for a Newtonian law (D = 2η P_dev, tr P_dev = 5), between
   /// mη and η for Norton-Hoff; scales the Schur-complement approximation.
@@ -67,8 +67,8 @@ inline Vec3 bubble_increment(const MiniElementSystem& system, const Vec16& delta
 /// Element-centre values for output: strain rate of the linear part (the
 /// bubble's gradient vanishes at the centroid), deviatoric stress and mean pressure.
 struct MiniElementFields {
-  material::Vec6 strain_rate;  ///< Mandel, 1/s
-  material::Vec6 stress;       ///< Cauchy σ = s − p I, Mandel, MPa
+  material::Vec6 strain_rate; ///< Mandel, 1/s
+  material::Vec6 stress;      ///< Cauchy σ = s − p I, Mandel, MPa
   double equivalent_strain_rate;
 };
 MiniElementFields mini_element_fields(const MiniElementInput& in, const material::Material& law);

@@ -30,7 +30,8 @@ public:
   /// An array of numbers on one line.
   template <typename T> JsonWriter& array(std::string_view name, const std::vector<T>& values) {
     key(name).begin_array();
-    for (const T& v : values) value(v);
+    for (const T& v : values)
+      value(v);
     return end_array();
   }
 

@@ -11,8 +11,8 @@ namespace anvil::io {
 /// One row of loads.csv.
 struct LoadRow {
   int increment = 0;
-  double time = 0.0;   ///< s, end of the increment
-  double stroke = 0.0; ///< mm, of the surface, end of the increment
+  double time = 0.0;                               ///< s, end of the increment
+  double stroke = 0.0;                             ///< mm, of the surface, end of the increment
   Eigen::Vector3d force = Eigen::Vector3d::Zero(); ///< N, on the body's model (quarter model: a quarter)
 };
 
@@ -23,12 +23,12 @@ std::vector<LoadRow> read_loads(const std::string& directory, const std::string&
 /// One row of interface.csv: a node on a body-pair interface.
 struct InterfaceRow {
   std::string pair, body;
-  int node = 0;                                   ///< 1-based, in its body
+  int node = 0;                                       ///< 1-based, in its body
   Eigen::Vector3d position = Eigen::Vector3d::Zero(); ///< mm
-  double area = 0.0;                              ///< mm², tributary, on the faces looking at the other body
-  double gap = 0.0;                               ///< mm, signed distance to the other body (< 0 penetrating)
-  double gap_rate = 0.0;                          ///< mm/s, opening rate (< 0 closing; mm for elastic bodies)
-  double normal_stress = 0.0;                     ///< MPa, transmitted (compressive > 0)
+  double area = 0.0;                                  ///< mm², tributary, on the faces looking at the other body
+  double gap = 0.0;                                   ///< mm, signed distance to the other body (< 0 penetrating)
+  double gap_rate = 0.0;                              ///< mm/s, opening rate (< 0 closing; mm for elastic bodies)
+  double normal_stress = 0.0;                         ///< MPa, transmitted (compressive > 0)
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero(); ///< mm/s (mm for elastic bodies)
 };
 

@@ -36,12 +36,13 @@ public:
 private:
   void write_loads(const scene::Scene& scene, const scene::RunState& state);
   void write_vtk(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state);
-  void write_interface(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state) const;
+  void write_interface(const scene::Scene& scene, const scene::Discretisation& disc,
+                       const scene::RunState& state) const;
 
   std::string directory_;
   VtkSeries series_;
-  std::size_t loads_written_ = 0; ///< records of RunState::loads in loads.csv
-  bool loads_started_ = false;    ///< loads.csv holds its header (written whole at the first write)
+  std::size_t loads_written_ = 0;            ///< records of RunState::loads in loads.csv
+  bool loads_started_ = false;               ///< loads.csv holds its header (written whole at the first write)
   int last_vtk_ = -1, last_checkpoint_ = -1; ///< increments written last
 };
 

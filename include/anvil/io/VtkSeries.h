@@ -46,9 +46,10 @@ public:
 
 private:
   /// Writes one grid file and records it in the collection.
-  void write_grid(int increment, double time, int part, const std::string& part_name, const std::vector<mesh::Point>& points,
-                  int cell_type, int nodes_per_cell, const std::vector<long>& connectivity,
-                  const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields);
+  void write_grid(int increment, double time, int part, const std::string& part_name,
+                  const std::vector<mesh::Point>& points, int cell_type, int nodes_per_cell,
+                  const std::vector<long>& connectivity, const std::vector<Field>& point_fields,
+                  const std::vector<Field>& cell_fields);
   void write_collection() const;
 
   std::string directory_, name_;

@@ -28,8 +28,7 @@ public:
 
   /// s (MPa) and tangent (MPa·s) at strain rate ε (1/s); for elastic laws ε is
   /// the small strain (-) and the tangent is in MPa.
-  virtual void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress,
-                                 Mat6& tangent) const = 0;
+  virtual void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress, Mat6& tangent) const = 0;
 
   /// Bulk modulus κ (MPa, or MPa·s): the pressure equation is
   /// div v + p/κ = 0. Infinite for incompressible laws.
@@ -74,8 +73,7 @@ public:
   /// that rigid zones have a finite viscosity).
   NortonHoff(double consistency, double sensitivity, double regularisation_rate);
 
-  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
-                         Mat6& tangent) const override;
+  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress, Mat6& tangent) const override;
   std::string describe() const override;
   bool is_linear() const override { return sensitivity_ == 1.0; }
   double secant_viscosity(double equivalent_rate, const PointState&) const override {
@@ -103,8 +101,7 @@ public:
   /// E in MPa, -1 < ν ≤ 0.5.
   LinearElastic(double young_modulus, double poisson_ratio);
 
-  void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress,
-                         Mat6& tangent) const override;
+  void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress, Mat6& tangent) const override;
   double bulk_modulus() const override;
   bool is_elastic() const override { return true; }
   bool is_linear() const override { return true; }
@@ -132,8 +129,7 @@ public:
   explicit IncrementalElastic(const LinearElastic& elastic) : elastic_(elastic) {}
   void set_time_step(double time_step) { time_step_ = time_step; }
 
-  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
-                         Mat6& tangent) const override;
+  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress, Mat6& tangent) const override;
   double bulk_modulus() const override { return elastic_.bulk_modulus() * time_step_; }
   bool is_linear() const override { return true; }
   double secant_viscosity(double, const PointState&) const override { return elastic_.shear_modulus() * time_step_; }
@@ -155,13 +151,12 @@ private:
 class HanselSpittel final : public Material {
 public:
   struct Coefficients {
-    double A = 0.0;                   ///< MPa
+    double A = 0.0; ///< MPa
     double m1 = 0, m2 = 0, m3 = 0, m4 = 0, m5 = 0, m7 = 0, m8 = 0, m9 = 0;
   };
   HanselSpittel(const Coefficients& c, double minimum_strain, double regularisation_rate);
 
-  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
-                         Mat6& tangent) const override;
+  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress, Mat6& tangent) const override;
   std::string describe() const override;
   bool is_linear() const override { return false; }
   /// ε̄ matters only through m2, m4, m5, m7; a steady-state card (all zero)

@@ -34,7 +34,9 @@ inline double equivalent_strain_rate(const Vec6& strain_rate) {
 }
 
 /// von Mises stress sqrt(3/2 s:s) (MPa).
-inline double von_mises(const Vec6& stress) { return std::sqrt(1.5 * deviator(stress).squaredNorm()); }
+inline double von_mises(const Vec6& stress) {
+  return std::sqrt(1.5 * deviator(stress).squaredNorm());
+}
 
 /// Mandel 6-vector -> tensor components [xx, yy, zz, xy, yz, zx].
 inline Vec6 to_components(const Vec6& mandel) {

@@ -37,8 +37,7 @@ inline Point area_vector(const TetMesh& mesh, const Triangle& face) {
 /// Fills mesh.boundary_faces from the tets (outward orientation) and gives each
 /// face the tag of the matching triangle in `tagged` (any vertex order), else 0.
 /// Triangles of `tagged` that are not on the boundary (internal surfaces) are ignored.
-void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged = {},
-                    const std::vector<int>& tags = {});
+void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged = {}, const std::vector<int>& tags = {});
 
 /// Throws InputError naming `source` and the first offending element or node
 /// (1-based numbers, as in mesh files): indices out of range, repeated

@@ -11,13 +11,13 @@ namespace anvil::remesh {
 
 /// The deepest vertex of one die inside a body.
 struct DieFeature {
-  double depth = 0.0;                             ///< mm, distance to the body's surface; 0 when none is inside
-  mesh::Point vertex = mesh::Point::Zero();       ///< mm, where that vertex is
+  double depth = 0.0;                       ///< mm, distance to the body's surface; 0 when none is inside
+  mesh::Point vertex = mesh::Point::Zero(); ///< mm, where that vertex is
 };
 
 /// For each die (its vertices, in place), its vertex deepest inside the
 /// body `body` of `mesh`.
 std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
-                                       const std::vector<std::vector<mesh::Point>>& die_vertices);
+                                           const std::vector<std::vector<mesh::Point>>& die_vertices);
 
 } // namespace anvil::remesh

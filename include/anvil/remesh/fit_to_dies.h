@@ -36,7 +36,7 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
 /// free surface (boundary nodes off the symmetry planes and more than a
 /// tenth of `element_size` off the dies) along its normal. Returns the
 /// distance moved (mm; 0 when the scene has no dies).
-double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
-                     double material, double element_size);
+double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body,
+                     std::span<const scene::DieState> dies_now, double material, double element_size);
 
 } // namespace anvil::remesh

@@ -10,11 +10,11 @@
 namespace anvil::remesh {
 
 struct QualityReport {
-  double worst = 1.0;           ///< smallest q now
-  int worst_tet = -1;           ///< its index in the body (0-based)
+  double worst = 1.0;                         ///< smallest q now
+  int worst_tet = -1;                         ///< its index in the body (0-based)
   mesh::Point worst_at = mesh::Point::Zero(); ///< its centroid (mm)
-  int below = 0;                ///< elements with q under the threshold
-  double predicted_worst = 1.0; ///< smallest q after x += Δt v (≤ 0: an inversion is coming)
+  int below = 0;                              ///< elements with q under the threshold
+  double predicted_worst = 1.0;               ///< smallest q after x += Δt v (≤ 0: an inversion is coming)
   int predicted_tet = -1;
 };
 

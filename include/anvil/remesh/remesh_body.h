@@ -10,9 +10,9 @@
 namespace anvil::remesh {
 
 struct RemeshSettings {
-  double edge_length = 1.0;     ///< mm, target edge length (uniform)
-  double feature_angle = 40.0;  ///< degrees: adjacent boundary faces whose normals differ more are on different patches
-  int iterations = 3;           ///< CGAL remeshing passes (split, collapse, flip, smooth)
+  double edge_length = 1.0;    ///< mm, target edge length (uniform)
+  double feature_angle = 40.0; ///< degrees: adjacent boundary faces whose normals differ more are on different patches
+  int iterations = 3;          ///< CGAL remeshing passes (split, collapse, flip, smooth)
   /// Size field (mm): the edge length wanted at a point, between
   /// smallest_edge_length and edge_length; empty: uniform. CGAL 5.5 takes
   /// one target length per call (TECH-NOTES §2), so the field is met in
@@ -22,7 +22,8 @@ struct RemeshSettings {
   /// of ½ left slivers (q 0.08) there.
   std::function<double(const mesh::Point&)> size;
   double smallest_edge_length = 0.0;
-  double quality_floor = 0.0;   ///< putting a node back onto the old surface may not leave an element below this (or below what it was)
+  double quality_floor =
+      0.0; ///< putting a node back onto the old surface may not leave an element below this (or below what it was)
 };
 
 /// A new mesh of the volume of `body` (one connected body, a topological ball:

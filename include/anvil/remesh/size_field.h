@@ -20,8 +20,8 @@ namespace anvil::remesh {
 /// locates points in it, `rate` is ε̄̇ per element of `old` in the increment
 /// just solved, the dies are at `dies_now`; `old`, `in_old` and `rate` must
 /// outlive the returned function.
-std::function<double(const mesh::Point&, double scale)> adaptive_size(
-    const mesh::TetMesh& old, const PointLocator& in_old, std::span<const double> rate, const scene::Scene& scene,
-    std::span<const scene::DieState> dies_now, double coarse, double smallest);
+std::function<double(const mesh::Point&, double scale)>
+adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<const double> rate,
+              const scene::Scene& scene, std::span<const scene::DieState> dies_now, double coarse, double smallest);
 
 } // namespace anvil::remesh

@@ -15,10 +15,10 @@
 namespace anvil::scene {
 
 struct FaceSelection {
-  int tag = -1;                 ///< boundary tag, or −1 to select by plane
+  int tag = -1; ///< boundary tag, or −1 to select by plane
   mesh::Point plane_point = mesh::Point::Zero();
   mesh::Point plane_normal = mesh::Point::UnitZ();
-  double tolerance = 1e-6;      ///< mm, distance to the plane
+  double tolerance = 1e-6; ///< mm, distance to the plane
 };
 
 enum class BoundaryKind { velocity, symmetry, sticking_plate, frictionless_plate, traction, pressure };
@@ -27,15 +27,13 @@ struct BoundaryCondition {
   std::string name;
   BoundaryKind kind = BoundaryKind::velocity;
   FaceSelection faces;
-  std::array<std::optional<double>, 3> velocity; ///< mm/s per component (velocity, plates); empty = free
+  std::array<std::optional<double>, 3> velocity;      ///< mm/s per component (velocity, plates); empty = free
   Eigen::Vector3d traction = Eigen::Vector3d::Zero(); ///< MPa (traction)
-  double pressure = 0.0;                               ///< MPa, positive pushes inwards (pressure)
-  std::string source;                                  ///< "file:line" for error messages
+  double pressure = 0.0;                              ///< MPa, positive pushes inwards (pressure)
+  std::string source;                                 ///< "file:line" for error messages
 
   /// True when the condition prescribes velocities (its reaction goes to loads.csv).
-  bool prescribes_velocity() const {
-    return kind != BoundaryKind::traction && kind != BoundaryKind::pressure;
-  }
+  bool prescribes_velocity() const { return kind != BoundaryKind::traction && kind != BoundaryKind::pressure; }
 };
 
 /// Boundary faces (indices into mesh.boundary_faces) selected by `s`.
@@ -46,9 +44,9 @@ std::vector<int> face_nodes(const mesh::TetMesh& mesh, const std::vector<int>& f
 
 /// What the conditions impose on one body's unknowns.
 struct ImposedConditions {
-  std::vector<char> prescribed;      ///< 4 × nodes (DofMap convention)
-  Eigen::VectorXd values;            ///< 4 × nodes, imposed values at prescribed dofs
-  Eigen::VectorXd nodal_forces;      ///< 4 × nodes, external forces from tractions (N)
+  std::vector<char> prescribed;                     ///< 4 × nodes (DofMap convention)
+  Eigen::VectorXd values;                           ///< 4 × nodes, imposed values at prescribed dofs
+  Eigen::VectorXd nodal_forces;                     ///< 4 × nodes, external forces from tractions (N)
   std::vector<std::vector<int>> nodes_of_condition; ///< per condition, its nodes
 };
 

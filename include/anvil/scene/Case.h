@@ -19,7 +19,7 @@ struct MeshSpec {
   std::string generate; ///< "box", "cylinder", "quarter_cylinder", "quarter_ring" or empty
   mesh::Point origin = mesh::Point::Zero(), size = mesh::Point::Zero();
   double radius = 0.0, inner_radius = 0.0, height = 0.0, element_size = 0.0; ///< mm
-  std::string source;   ///< "file:line" of the mesh key
+  std::string source;                                                        ///< "file:line" of the mesh key
 };
 
 struct BodySpec {
@@ -32,18 +32,18 @@ struct BodySpec {
 /// A rigid die: surface, press motion and friction with the body.
 struct DieSpec {
   std::string name;
-  std::string stl_file;            ///< STL surface (die frame = file coordinates), or empty for a plane
+  std::string stl_file; ///< STL surface (die frame = file coordinates), or empty for a plane
   Eigen::Vector3d stl_offset = Eigen::Vector3d::Zero(); ///< mm, moves the STL surface to its start position
   mesh::Point plane_point = mesh::Point::Zero();
   Eigen::Vector3d plane_normal = Eigen::Vector3d::UnitZ(); ///< out of the die, towards the body
-  double plane_half_size = 0.0;    ///< mm, display only; 0 = twice the body size
-  std::string motion = "fixed";    ///< fixed, constant, table, crank, hydraulic
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero(); ///< constant, hydraulic (mm/s)
-  Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ(); ///< table, crank
-  std::vector<double> table_time, table_values;  ///< table: s and mm/s (speed) or mm (displacement)
+  double plane_half_size = 0.0;                            ///< mm, display only; 0 = twice the body size
+  std::string motion = "fixed";                            ///< fixed, constant, table, crank, hydraulic
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();      ///< constant, hydraulic (mm/s)
+  Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ();   ///< table, crank
+  std::vector<double> table_time, table_values;            ///< table: s and mm/s (speed) or mm (displacement)
   bool table_is_speed = true;
   double crank_radius = 0.0, rod_length = 0.0, rpm = 0.0, start_angle = 0.0; ///< mm, mm, 1/min, deg
-  double load_limit = std::numeric_limits<double>::infinity(); ///< N, hydraulic
+  double load_limit = std::numeric_limits<double>::infinity();               ///< N, hydraulic
   contact::FrictionLaw friction;
   std::string source;
 };
@@ -59,16 +59,17 @@ struct ContactPairSpec {
 /// The time loop (DESIGN §4). Absent from a case: one increment, no update.
 struct TimeSpec {
   bool enabled = false;
-  double stroke_increment = 0.0;   ///< mm of travel of the fastest die per increment
-  double max_displacement = 0.2;   ///< largest nodal displacement per increment / local element size
-  double min_step_fraction = 0.1;  ///< contact events shorten Δt down to this fraction of the nominal one, and not by less
-  int max_cuts = 5;                ///< Δt halvings after a Newton failure
+  double stroke_increment = 0.0; ///< mm of travel of the fastest die per increment
+  double max_displacement = 0.2; ///< largest nodal displacement per increment / local element size
+  double min_step_fraction =
+      0.1;          ///< contact events shorten Δt down to this fraction of the nominal one, and not by less
+  int max_cuts = 5; ///< Δt halvings after a Newton failure
   int max_increments = 100000;
   bool volume_compensation = true; ///< incompressible bodies: restore lost volume each increment
   // Stop criteria; the first one reached ends the run.
   double final_stroke = std::numeric_limits<double>::infinity(); ///< mm, of `stroke_die`
   int stroke_die = 0;
-  double final_gap = 0.0;          ///< mm between the two dies along the press axis (z); 0 = none
+  double final_gap = 0.0; ///< mm between the two dies along the press axis (z); 0 = none
   double max_load = std::numeric_limits<double>::infinity(); ///< N, on any die
   double end_time = std::numeric_limits<double>::infinity(); ///< s
 };
@@ -77,24 +78,24 @@ struct TimeSpec {
 /// too little to need it and keeps its mesh.
 struct RemeshSpec {
   bool enabled = false;
-  double quality = 0.1;         ///< trigger: worst volume-edge ratio below this (or ≤ 0 predicted next increment)
-  int every = 0;                ///< trigger: every N increments (0 = off)
+  double quality = 0.1;          ///< trigger: worst volume-edge ratio below this (or ≤ 0 predicted next increment)
+  int every = 0;                 ///< trigger: every N increments (0 = off)
   double die_penetration = 0.25; ///< trigger: a die vertex this deep inside the body, × element size
-  double element_size = 0.0;    ///< mm, target edge length; 0 = the body's initial mean boundary edge
-  double feature_angle = 40.0;  ///< degrees
-  int iterations = 3;           ///< CGAL passes
-  bool adaptive = false;        ///< size field: finer near the dies and where ε̄̇ is high (else uniform)
-  double smallest_size = 0.0;   ///< mm, adaptive: edge length at a die surface; 0 = half the element size
-  bool check_load = false;      ///< solve the increment after a remesh on the old mesh too: the load jump it makes
+  double element_size = 0.0;     ///< mm, target edge length; 0 = the body's initial mean boundary edge
+  double feature_angle = 40.0;   ///< degrees
+  int iterations = 3;            ///< CGAL passes
+  bool adaptive = false;         ///< size field: finer near the dies and where ε̄̇ is high (else uniform)
+  double smallest_size = 0.0;    ///< mm, adaptive: edge length at a die surface; 0 = half the element size
+  bool check_load = false;       ///< solve the increment after a remesh on the old mesh too: the load jump it makes
 };
 
 struct ContactSpec {
-  double penalty = 1e3;        ///< ρ relative to σ₀ / v_ref (mean flow stress / press speed)
+  double penalty = 1e3;         ///< ρ relative to σ₀ / v_ref (mean flow stress / press speed)
   double regularisation = 1e-2; ///< friction w₀ relative to the fastest die speed
 };
 
 struct Case {
-  std::string path;  ///< the case file
+  std::string path;                   ///< the case file
   std::vector<std::string> overrides; ///< command-line "key.path=value" changes applied to the file
   std::string title;
   std::string output_directory; ///< empty = out/<case name>

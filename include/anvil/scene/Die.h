@@ -13,7 +13,7 @@ namespace anvil::scene {
 struct Die {
   std::string name;
   std::unique_ptr<die::DieSurface> surface;
-  std::unique_ptr<die::PressKinematics> kinematics; ///< null for a fixed die
+  std::unique_ptr<die::PressKinematics> kinematics;            ///< null for a fixed die
   double load_limit = std::numeric_limits<double>::infinity(); ///< N (hydraulic)
   contact::FrictionLaw friction;
 

@@ -21,11 +21,11 @@ struct IncrementOutcome {
   fem::BodyUnknowns unknowns; ///< the solution
   solver::NewtonReport report;
   std::vector<Eigen::Vector3d> forces; ///< N, on each load surface (Scene::surfaces) at the solution
-  double compensation = 0.0;  ///< mm³ the volume compensation asked the flow to restore
+  double compensation = 0.0;           ///< mm³ the volume compensation asked the flow to restore
   /// ε̄̇ and σ per element on the geometry solved on (converged only): what
   /// ε̄ and elastic bodies integrate, and what the remeshing size field reads.
   fem::ElementFields fields;
-  std::string failure;        ///< why it cannot be accepted; empty when it can
+  std::string failure; ///< why it cannot be accepted; empty when it can
 
   bool converged() const { return report.converged; }
 };
@@ -47,8 +47,7 @@ IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const
 /// stress of elastic bodies updated, a load-limited press slowed down.
 /// Returns false, with `inc.failure` set and `state` untouched, when an
 /// element would invert.
-bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome& inc, RunState& state,
-                      Timers& timers);
+bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome& inc, RunState& state, Timers& timers);
 
 /// Accepts the solution of a case without a time loop: increment 1 at t = 0,
 /// the geometry as it is.

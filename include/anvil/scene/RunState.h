@@ -8,9 +8,9 @@
 #include "anvil/mesh/TetMesh.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <limits>
 #include <string>
-#include <array>
 #include <vector>
 
 namespace anvil::scene {
@@ -18,41 +18,41 @@ namespace anvil::scene {
 /// Where a die is: press time runs at `speed_factor` × real time (< 1 when a
 /// hydraulic press is held back by its load limit).
 struct DieState {
-  double press_time = 0.0;  ///< s
+  double press_time = 0.0; ///< s
   double speed_factor = 1.0;
-  double stroke = 0.0;      ///< mm travelled
+  double stroke = 0.0;                                    ///< mm travelled
   Eigen::Vector3d displacement = Eigen::Vector3d::Zero(); ///< mm, of the die frame
 };
 
 /// One line of loads.csv: the load on a die (or velocity plate) at the end of an increment.
 struct LoadRecord {
   int increment;
-  double time;    ///< s
-  int surface;    ///< index into the run's load surfaces (dies, then velocity plates)
-  double stroke;  ///< mm
+  double time;           ///< s
+  int surface;           ///< index into the run's load surfaces (dies, then velocity plates)
+  double stroke;         ///< mm
   Eigen::Vector3d force; ///< N, exerted by the body on the surface
 };
 
 /// Volume budget (mm³): where volume went, by cause.
 struct VolumeBudget {
   double initial = 0.0;
-  double solver = 0.0;      ///< change from x += Δt v (time-integration error plus compensation)
-  double compensation = 0.0; ///< volume the compensation dilatation asked the flow to restore
-  double projection = 0.0;  ///< change from putting contact nodes back on the dies
-  double remeshing = 0.0;   ///< change from remeshing (new mesh against old)
+  double solver = 0.0;            ///< change from x += Δt v (time-integration error plus compensation)
+  double compensation = 0.0;      ///< volume the compensation dilatation asked the flow to restore
+  double projection = 0.0;        ///< change from putting contact nodes back on the dies
+  double remeshing = 0.0;         ///< change from remeshing (new mesh against old)
   double largest_increment = 0.0; ///< largest |relative change| in one increment
 };
 
 /// One remesh of one body: what it changed.
 struct RemeshRecord {
-  int increment;         ///< after this increment
-  int body;              ///< index into the case's bodies
+  int increment; ///< after this increment
+  int body;      ///< index into the case's bodies
   int nodes_before, nodes_after;
   double worst_quality_before, worst_quality_after;
-  double volume_change;  ///< relative
+  double volume_change;          ///< relative
   double strain_integral_change; ///< relative change of ∫ε̄ dV by the transfer
   double strain_max_change;      ///< relative change of max ε̄ by the transfer
-  double seconds;        ///< wall time (remesh and transfer)
+  double seconds;                ///< wall time (remesh and transfer)
   /// N, press load (first load surface) of the next increment solved on the
   /// old mesh and on the new one, same geometry and Δt (remeshing.check_load;
   /// NaN when not checked or a solve failed).

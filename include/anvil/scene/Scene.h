@@ -27,7 +27,7 @@ struct Body {
   /// velocity form (null otherwise). Its Δt is that of the increment being
   /// solved: solve_increment sets it before each solve.
   std::unique_ptr<material::IncrementalElastic> increment_law;
-  material::PointState state; ///< the body's temperature (isothermal)
+  material::PointState state;                ///< the body's temperature (isothermal)
   std::vector<BoundaryCondition> conditions; ///< the case's conditions on this body
   /// What they impose on the mesh as the case builds it (faces chosen on the
   /// initial geometry: a plane condition on a moving face is found there once).
@@ -57,20 +57,20 @@ struct Scene {
   std::vector<Body> bodies;
   std::vector<BoundaryCondition> conditions; ///< every body's, in body order
   std::vector<Die> dies;
-  std::vector<LoadSurface> surfaces; ///< the dies, then the velocity conditions
-  std::vector<std::string> effects;  ///< resolve_effects
-  mesh::TetMesh initial_mesh; ///< the bodies as built: one mesh of disjoint parts
+  std::vector<LoadSurface> surfaces;           ///< the dies, then the velocity conditions
+  std::vector<std::string> effects;            ///< resolve_effects
+  mesh::TetMesh initial_mesh;                  ///< the bodies as built: one mesh of disjoint parts
   std::vector<mesh::MeshRange> initial_ranges; ///< each body in initial_mesh
   /// Every body elastic and no time loop: the unknown is the displacement
   /// (mm); otherwise it is the velocity (mm/s) and elastic bodies carry σ.
   bool solve_displacement = false;
-  bool carries_stress = false;      ///< some body is elastic in velocity form
-  bool compensate_volume = false;   ///< the volume_compensation effect
-  double body_size = 0.0;           ///< mm, diagonal of the initial bounding box
-  double reference_length = 0.0;    ///< mm, mean boundary edge of the initial mesh
-  double reference_velocity = 0.0;  ///< mm/s, fastest die or imposed velocity at t = 0
-  int upper_die = 0;                ///< with a final gap: the die above
-  double die_gap0 = 0.0;            ///< mm, gap between the two dies at zero displacement
+  bool carries_stress = false;     ///< some body is elastic in velocity form
+  bool compensate_volume = false;  ///< the volume_compensation effect
+  double body_size = 0.0;          ///< mm, diagonal of the initial bounding box
+  double reference_length = 0.0;   ///< mm, mean boundary edge of the initial mesh
+  double reference_velocity = 0.0; ///< mm/s, fastest die or imposed velocity at t = 0
+  int upper_die = 0;               ///< with a final gap: the die above
+  double die_gap0 = 0.0;           ///< mm, gap between the two dies at zero displacement
 
   bool has_contact() const { return !dies.empty() || !input.contact_pairs.empty(); }
   /// ε̇ of the process (1/s): v_ref over the scene size.

@@ -12,7 +12,7 @@ namespace anvil::scene {
 enum class KeyType { integer, number, string, boolean, vector3, numbers, list, map };
 
 struct KeySpec {
-  std::string path;          ///< dotted; list items as "[]", e.g. "bodies[].mesh.file"
+  std::string path; ///< dotted; list items as "[]", e.g. "bodies[].mesh.file"
   KeyType type;
   std::string default_value; ///< as text; empty when required or optional without default
   bool required = false;

@@ -39,7 +39,7 @@ private:
   using Block = Eigen::SparseMatrix<double, Eigen::ColMajor, long>;
   using Cholesky = Eigen::CholmodSupernodalLLT<Block, Eigen::Lower>;
   std::vector<char> component_;
-  std::array<std::vector<long>, 4> index_; ///< free indices of each component
+  std::array<std::vector<long>, 4> index_;                   ///< free indices of each component
   std::array<std::unique_ptr<Cholesky>, 3> velocity_factor_; ///< symbolic analysis kept across Newton iterations
   Eigen::VectorXd pressure_diagonal_inverse_;
   Eigen::ComputationInfo info_ = Eigen::Success;

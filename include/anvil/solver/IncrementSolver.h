@@ -19,7 +19,7 @@ namespace anvil::solver {
 /// 2e-6 of itself, and asking |Δv|/|v| < 1e-8 besides costs 45 % more Newton
 /// iterations for a load change of 2e-8.
 struct NewtonSettings {
-  double tolerance = 1e-6;           ///< relative force and div residuals
+  double tolerance = 1e-6; ///< relative force and div residuals
   /// |Δv|/|v| of the last step. A linear problem (linear laws, contact
   /// without friction or sticking, active set unchanged) needs none after a
   /// full step: that step is the solution to the linear solve's accuracy.
@@ -32,17 +32,17 @@ struct NewtonSettings {
 };
 
 struct NewtonIteration {
-  double force_residual;    ///< |r_v| / force scale (-)
-  double flux_residual;     ///< |r_p| / flux scale (-)
-  double increment;         ///< |Δv| / |v| (-)
-  double step;              ///< line-search step length taken
+  double force_residual; ///< |r_v| / force scale (-)
+  double flux_residual;  ///< |r_p| / flux scale (-)
+  double increment;      ///< |Δv| / |v| (-)
+  double step;           ///< line-search step length taken
 };
 
 struct NewtonReport {
   bool converged = false;
   std::vector<NewtonIteration> iterations;
   int linear_iterations = 0; ///< Krylov iterations of all the solves (0 for a direct solver)
-  std::string failure; ///< why it stopped, when not converged
+  std::string failure;       ///< why it stopped, when not converged
 };
 
 /// What one increment solves for, besides the unknowns.
@@ -51,9 +51,9 @@ struct IncrementProblem {
   const std::vector<material::PointState>& states; ///< per element; empty = default state
   const Eigen::VectorXd& nodal_forces;             ///< external nodal forces (N), 4 × nodes
   fem::BodyForce body_force;
-  std::vector<NodalTerm*> nodal_terms;            ///< contact with dies, between bodies
-  double reference_velocity = 0.0;                 ///< mm/s; 0 = largest prescribed velocity
-  double reference_force = 0.0;                    ///< N; residuals are measured against at least this load
+  std::vector<NodalTerm*> nodal_terms; ///< contact with dies, between bodies
+  double reference_velocity = 0.0;     ///< mm/s; 0 = largest prescribed velocity
+  double reference_force = 0.0;        ///< N; residuals are measured against at least this load
 };
 
 class IncrementSolver {

@@ -23,7 +23,7 @@ namespace anvil::solver {
 
 /// What the preconditioner needs besides the matrix.
 struct SaddlePointData {
-  std::span<const mesh::Point> nodes;  ///< current coordinates (rigid-body modes), mm
+  std::span<const mesh::Point> nodes;   ///< current coordinates (rigid-body modes), mm
   const Eigen::VectorXd& pressure_mass; ///< M_p/η lumped per node (Assembler::pressure_mass)
 };
 
@@ -37,7 +37,7 @@ struct KrylovOutcome {
   bool converged = false;
   int iterations = 0;
   double reduction = 1.0; ///< final residual norm / |b|
-  std::string reason; ///< PETSc's converged or diverged reason
+  std::string reason;     ///< PETSc's converged or diverged reason
 };
 
 class KrylovSolver {

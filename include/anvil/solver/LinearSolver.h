@@ -15,13 +15,13 @@
 namespace anvil::solver {
 
 enum class LinearSolverKind {
-  fgmres,          ///< PETSc FGMRES, block preconditioner: AMG on velocity, Schur with M_p/η (KrylovSolver)
-  mumps,           ///< MUMPS through PETSc: LDLᵀ (LU when unsymmetric) (MumpsSolver)
-  umfpack,         ///< SuiteSparse UMFPACK LU (for comparison)
-  cholmod_ldlt,    ///< SuiteSparse CHOLMOD simplicial LDLᵀ (no pivoting; quasi-definite only)
-  eigen_ldlt,      ///< Eigen SimplicialLDLT with AMD (no pivoting; quasi-definite only)
-  minres,          ///< Eigen MINRES, block-diagonal preconditioner (BlockPreconditioner; for comparison)
-  automatic,       ///< mumps up to kDirectSolverLimit unknowns, fgmres above (mumps if it stagnates)
+  fgmres,       ///< PETSc FGMRES, block preconditioner: AMG on velocity, Schur with M_p/η (KrylovSolver)
+  mumps,        ///< MUMPS through PETSc: LDLᵀ (LU when unsymmetric) (MumpsSolver)
+  umfpack,      ///< SuiteSparse UMFPACK LU (for comparison)
+  cholmod_ldlt, ///< SuiteSparse CHOLMOD simplicial LDLᵀ (no pivoting; quasi-definite only)
+  eigen_ldlt,   ///< Eigen SimplicialLDLT with AMD (no pivoting; quasi-definite only)
+  minres,       ///< Eigen MINRES, block-diagonal preconditioner (BlockPreconditioner; for comparison)
+  automatic,    ///< mumps up to kDirectSolverLimit unknowns, fgmres above (mumps if it stagnates)
 };
 
 /// Unknowns up to which `automatic` picks the direct solver: the crossover
@@ -88,8 +88,8 @@ private:
   int unknowns_;
   LinearSolverKind kind_;
   std::unique_ptr<Backend> backend_;
-  const fem::SparseMatrix* matrix_ = nullptr;   ///< of the last factorize(), for a fallback
-  std::optional<SaddlePointData> data_;         ///< of the last factorize()
+  const fem::SparseMatrix* matrix_ = nullptr; ///< of the last factorize(), for a fallback
+  std::optional<SaddlePointData> data_;       ///< of the last factorize()
   bool analysed_ = false;
   int analyses_ = 0;
   int iterations_ = 0;

@@ -41,7 +41,8 @@ TEST_CASE("A flat die's overlap with a body is its depth times the face it cover
   // (the die's normal lies in them) and add nothing.
   const mesh::TetMesh cube = mesh::make_box({0, 0, 0}, {1, 1, 1}, 0.25);
   const die::PlaneSurface die({0, 0, 0.9}, {0, 0, -1}, 10.0);
-  CHECK(die::overlap_volume(cube, mesh::whole_range(cube), die, Eigen::Vector3d::Zero(), 1.0) == Approx(0.1).epsilon(1e-12));
+  CHECK(die::overlap_volume(cube, mesh::whole_range(cube), die, Eigen::Vector3d::Zero(), 1.0) ==
+        Approx(0.1).epsilon(1e-12));
   // The die's shift moves it: 0.05 mm higher, half the overlap.
   CHECK(die::overlap_volume(cube, mesh::whole_range(cube), die, {0, 0, 0.05}, 1.0) == Approx(0.05).epsilon(1e-12));
   // Deeper than `deepest` is the far side of an open surface: none.

@@ -18,8 +18,8 @@ TEST_CASE("A node kept on its symmetry plane is put onto an inclined die within 
   CHECK(onto.y() == Approx(0.3).epsilon(1e-15));
   CHECK(std::abs(onto.z()) <= std::ldexp(1.0, -20) * (1.0 + 1e-9));
   // An infinite tolerance makes one pass: half the depth is left.
-  const mesh::Point once = die::project_keeping(die, {0.0, 0.3, -1.0}, {false, true, true},
-                                                std::numeric_limits<double>::infinity());
+  const mesh::Point once =
+      die::project_keeping(die, {0.0, 0.3, -1.0}, {false, true, true}, std::numeric_limits<double>::infinity());
   CHECK((once - mesh::Point(0.0, 0.3, -0.5)).norm() < 1e-15);
   // Free in every direction: one pass reaches the closest point.
   const mesh::Point closest = die::project_keeping(die, {0.0, 0.3, -1.0}, {true, true, true}, 1e-9);

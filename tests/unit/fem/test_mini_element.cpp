@@ -32,8 +32,10 @@ fem::Vec16 condensed_residual(fem::MiniElementInput in, const material::Material
 }
 
 void set_dof(fem::MiniElementInput& in, int i, double value) {
-  if (i % 4 == 3) in.nodal_pressure[i / 4] = value;
-  else in.nodal_velocity[i / 4][i % 4] = value;
+  if (i % 4 == 3)
+    in.nodal_pressure[i / 4] = value;
+  else
+    in.nodal_velocity[i / 4][i % 4] = value;
 }
 double get_dof(const fem::MiniElementInput& in, int i) {
   return i % 4 == 3 ? in.nodal_pressure[i / 4] : in.nodal_velocity[i / 4][i % 4];
@@ -75,7 +77,8 @@ TEST_CASE("rigid motion gives zero residual and the condensed tangent is symmetr
   const material::NortonHoff law(5.0, 1.0, 0.0);
   fem::MiniElementInput in = distorted_element();
   const fem::Vec3 translation(0.3, -0.7, 0.2), rotation(0.1, 0.2, -0.4);
-  for (int a = 0; a < 4; ++a) in.nodal_velocity[a] = translation + rotation.cross(in.vertices[a]);
+  for (int a = 0; a < 4; ++a)
+    in.nodal_velocity[a] = translation + rotation.cross(in.vertices[a]);
   in.nodal_pressure = {0, 0, 0, 0};
   fem::MiniElementSystem s;
   REQUIRE(fem::mini_element(in, law, true, {}, s));

@@ -7,7 +7,9 @@
 using anvil::fem::tet_quadrature;
 
 namespace {
-double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
+double factorial(int n) {
+  return n <= 1 ? 1.0 : n * factorial(n - 1);
+}
 } // namespace
 
 TEST_CASE("tet quadrature integrates barycentric monomials up to degree 5 exactly", "[unit]") {

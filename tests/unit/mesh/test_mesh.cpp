@@ -52,7 +52,8 @@ TEST_CASE("the three readers give the same two-tet mesh with its tags", "[unit]"
 }
 
 TEST_CASE("bad meshes are rejected naming file and element or node", "[unit]") {
-  CHECK_THAT(error_of("inverted.mesh"), Catch::Contains("inverted.mesh") && Catch::Contains("tetrahedron 2 is inverted"));
+  CHECK_THAT(error_of("inverted.mesh"),
+             Catch::Contains("inverted.mesh") && Catch::Contains("tetrahedron 2 is inverted"));
   CHECK_THAT(error_of("unreferenced.mesh"), Catch::Contains("node 5 is not used"));
   CHECK_THAT(error_of("bad_index.msh"), Catch::Contains("tetrahedron 1 refers to node 9"));
   CHECK_THAT(error_of("missing.msh"), Catch::Contains("cannot open"));
@@ -63,7 +64,8 @@ TEST_CASE("box generator: volume, tags, orientation", "[unit]") {
   mesh::validate(m, "box");
   CHECK(mesh::volume(m) == Approx(8.0).epsilon(1e-12));
   CHECK(volume_from_boundary(m) == Approx(8.0).epsilon(1e-12));
-  for (int tag = 1; tag <= 6; ++tag) CHECK(faces_with_tag(m, tag) > 0);
+  for (int tag = 1; tag <= 6; ++tag)
+    CHECK(faces_with_tag(m, tag) > 0);
   CHECK(faces_with_tag(m, 0) == 0);
 }
 
@@ -77,7 +79,9 @@ TEST_CASE("cylinder generator: conforming, positive, near the exact volume", "[u
   CHECK(std::abs(mesh::volume(m) - exact) / exact < 0.01);
   CHECK(volume_from_boundary(m) == Approx(mesh::volume(m)).epsilon(1e-12));
   double worst = 1.0;
-  for (int e = 0; e < m.tet_count(); ++e) worst = std::min(worst, mesh::quality(m, e));
+  for (int e = 0; e < m.tet_count(); ++e)
+    worst = std::min(worst, mesh::quality(m, e));
   CHECK(worst > 0.2); // ring meshes stay well shaped (observed ~0.5)
-  for (int tag = 1; tag <= 3; ++tag) CHECK(faces_with_tag(m, tag) > 0);
+  for (int tag = 1; tag <= 3; ++tag)
+    CHECK(faces_with_tag(m, tag) > 0);
 }

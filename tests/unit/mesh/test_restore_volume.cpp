@@ -26,7 +26,9 @@ TEST_CASE("Volume is restored by moving the chosen boundary nodes along their no
   CHECK(mesh::volume(cube) == Approx(target).epsilon(1e-12));
   CHECK(lift == Approx(0.03 / 0.5625).epsilon(1e-12));
   for (std::size_t v = 0; v < cube.nodes.size(); ++v) {
-    if (!top_inside[v]) CHECK(cube.nodes[v] == before[v]);
-    else CHECK((cube.nodes[v] - before[v] - lift * mesh::Point::UnitZ()).norm() < 1e-12);
+    if (!top_inside[v])
+      CHECK(cube.nodes[v] == before[v]);
+    else
+      CHECK((cube.nodes[v] - before[v] - lift * mesh::Point::UnitZ()).norm() < 1e-12);
   }
 }

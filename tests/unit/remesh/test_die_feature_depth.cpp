@@ -12,8 +12,8 @@ TEST_CASE("A die vertex is inside a body only when it is in one of its tets", "[
   // The billet of cases/closed_die_flash.yaml: R 8, H 15.7, h 1.
   const mesh::MeshRange billet = mesh::append(scene, mesh::make_quarter_cylinder(8.0, 15.7, 1.0));
   const std::vector<std::vector<mesh::Point>> dies = {
-      {{2.0, 2.0, 15.2}},     // inside, 0.5 mm under the top face
-      {{-4.0, -4.0, -4.0}},   // inside the other body, not the billet
+      {{2.0, 2.0, 15.2}},   // inside, 0.5 mm under the top face
+      {{-4.0, -4.0, -4.0}}, // inside the other body, not the billet
       // A vertex of the lower die's web fillet (r 11.07 mm, 11 µm above the
       // billet's bottom face), inside the billet's bounding box but 3 mm
       // outside the billet. In the flash case, on the billet deformed by 6

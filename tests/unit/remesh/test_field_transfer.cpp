@@ -16,7 +16,8 @@ TEST_CASE("Linear nodal fields are interpolated exactly", "[unit][remesh]") {
   new_mesh.nodes[0] -= mesh::Point(1e-7, 1e-7, 1e-7);
   const auto linear = [](const mesh::Point& x) { return Eigen::Vector2d(1.0 + 2.0 * x.x() - x.y(), 3.0 * x.z()); };
   Eigen::VectorXd old_values(2 * old_mesh.node_count());
-  for (int i = 0; i < old_mesh.node_count(); ++i) old_values.segment<2>(2 * i) = linear(old_mesh.nodes[i]);
+  for (int i = 0; i < old_mesh.node_count(); ++i)
+    old_values.segment<2>(2 * i) = linear(old_mesh.nodes[i]);
   const remesh::PointLocator in_old(old_mesh);
   const std::vector<remesh::Location> at = in_old.locate(new_mesh.nodes);
   const Eigen::VectorXd values = remesh::interpolate_nodal(old_mesh, old_values, 2, at);
@@ -33,7 +34,8 @@ TEST_CASE("Element fields are remapped conservatively, exactly for a linear fiel
   const mesh::TetMesh new_mesh = mesh::make_box({0, 0, 0}, {5, 5, 5}, 0.625);
   const std::vector<mesh::Point> old_centres = remesh::centroids(old_mesh), new_centres = remesh::centroids(new_mesh);
   std::vector<double> f;
-  for (const mesh::Point& c : old_centres) f.push_back(c.x());
+  for (const mesh::Point& c : old_centres)
+    f.push_back(c.x());
   const remesh::PointLocator in_old(old_mesh);
   const std::vector<double> moved = remesh::remap_element(old_mesh, f, in_old, new_mesh);
   // Same domain: ∫ f dV is kept to rounding.
@@ -65,9 +67,10 @@ TEST_CASE("A peak smaller than the new elements keeps its value", "[unit][remesh
   const std::vector<mesh::Point> old_centres = remesh::centroids(old_mesh);
   std::vector<double> strain(old_centres.size(), 1.0);
   const mesh::Point inside(2.1, 1.6, 1.1); // away from the boundary and from the new mesh's nodes
-  const auto peak = std::min_element(old_centres.begin(), old_centres.end(), [&](const mesh::Point& a, const mesh::Point& b) {
-    return (a - inside).norm() < (b - inside).norm();
-  });
+  const auto peak =
+      std::min_element(old_centres.begin(), old_centres.end(), [&](const mesh::Point& a, const mesh::Point& b) {
+        return (a - inside).norm() < (b - inside).norm();
+      });
   strain[peak - old_centres.begin()] = 2.0;
   const remesh::PointLocator in_old(old_mesh);
   const std::vector<double> remapped = remesh::remap_element(old_mesh, strain, in_old, new_mesh);

@@ -13,7 +13,9 @@ using namespace anvil;
 
 namespace {
 /// Tags present on the boundary of `m`.
-std::set<int> tags_of(const mesh::TetMesh& m) { return {m.boundary_tags.begin(), m.boundary_tags.end()}; }
+std::set<int> tags_of(const mesh::TetMesh& m) {
+  return {m.boundary_tags.begin(), m.boundary_tags.end()};
+}
 } // namespace
 
 TEST_CASE("Remeshing a box keeps its volume, faces and tags", "[unit][remesh]") {
@@ -30,7 +32,8 @@ TEST_CASE("Remeshing a box keeps its volume, faces and tags", "[unit][remesh]") 
     const int tag = out.boundary_tags[f];
     const int axis = (tag - 1) / 2;
     const double plane = tag % 2 == 1 ? 0.0 : std::array<double, 3>{10, 6, 4}[axis];
-    for (int n : out.boundary_faces[f]) CHECK(out.nodes[n][axis] == Approx(plane).margin(1e-9));
+    for (int n : out.boundary_faces[f])
+      CHECK(out.nodes[n][axis] == Approx(plane).margin(1e-9));
   }
   CHECK(remesh::worst_quality(out) > 0.1);
 }
@@ -49,7 +52,8 @@ TEST_CASE("Remeshing a quarter cylinder keeps its volume and its lateral surface
   const double sagitta = h_old * h_old / (8.0 * radius);
   for (std::size_t f = 0; f < out.boundary_faces.size(); ++f)
     if (out.boundary_tags[f] == 2)
-      for (int n : out.boundary_faces[f]) CHECK(out.nodes[n].head<2>().norm() == Approx(radius).margin(sagitta));
+      for (int n : out.boundary_faces[f])
+        CHECK(out.nodes[n].head<2>().norm() == Approx(radius).margin(sagitta));
 }
 
 TEST_CASE("An adaptive size field refines where it asks and keeps the volume", "[unit][remesh]") {

@@ -63,15 +63,15 @@ TEST_CASE("case-file errors name file, line, key and expectation", "[unit]") {
   CHECK_THAT(error_of("range.yaml", replaced(kValid, "element_size: 0.5", "element_size: -1")),
              Contains("range.yaml:5") && Contains("bodies[0].mesh.element_size") && Contains("'-1'") &&
                  Contains("> 0") && Contains("(mm)"));
-  CHECK_THAT(error_of("missing.yaml", replaced(kValid, "anvil: 1\n", "")),
-             Contains("missing key 'anvil'"));
+  CHECK_THAT(error_of("missing.yaml", replaced(kValid, "anvil: 1\n", "")), Contains("missing key 'anvil'"));
   CHECK_THAT(error_of("version.yaml", replaced(kValid, "anvil: 1", "anvil: 7")),
              Contains("version.yaml:1") && Contains("'7'") && Contains("equal to 1"));
   CHECK_THAT(error_of("choice.yaml", replaced(kValid, "type: sticking_plate, tag: 5", "type: glue, tag: 5")),
              Contains("choice.yaml:7") && Contains("boundary[0].type") && Contains("one of"));
   CHECK_THAT(error_of("body.yaml", replaced(kValid, "{name: bottom,", "{name: bottom, body: billet,")),
              Contains("no body is named 'billet'"));
-  CHECK_THAT(error_of("syntax.yaml", kValid + "boundary: [\n"), Contains("syntax.yaml:") && Contains("YAML syntax error"));
+  CHECK_THAT(error_of("syntax.yaml", kValid + "boundary: [\n"),
+             Contains("syntax.yaml:") && Contains("YAML syntax error"));
 }
 
 TEST_CASE("an input error leaves no output behind", "[unit]") {
@@ -79,14 +79,15 @@ TEST_CASE("an input error leaves no output behind", "[unit]") {
   std::filesystem::remove_all(out);
   // The face selection is checked only once the mesh exists: still before any file is written.
   const scene::Case c = scene::read_case(write_case("tag.yaml", replaced(kValid, "tag: 6", "tag: 42")));
-  CHECK_THROWS_WITH(scene::run(c, {out.string()}), Catch::Contains("selects no boundary face") && Catch::Contains("tag 42"));
+  CHECK_THROWS_WITH(scene::run(c, {out.string()}),
+                    Catch::Contains("selects no boundary face") && Catch::Contains("tag 42"));
   CHECK_FALSE(std::filesystem::exists(out));
 }
 
 TEST_CASE("material cards must cite a source for every number", "[unit]") {
   const std::string card = write_case("card.yaml", "format: 1\nname: x\nlaw: newtonian\nviscosity: 2\nsources: {}\n");
-  CHECK_THROWS_WITH(scene::read_material(card), Catch::Contains("card.yaml:4") && Catch::Contains("viscosity") &&
-                                                    Catch::Contains("sources"));
+  CHECK_THROWS_WITH(scene::read_material(card),
+                    Catch::Contains("card.yaml:4") && Catch::Contains("viscosity") && Catch::Contains("sources"));
   for (const auto& entry : std::filesystem::directory_iterator(source_path("materials"))) {
     INFO(entry.path());
     CHECK_NOTHROW(scene::read_material(entry.path().string()));
