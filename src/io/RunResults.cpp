@@ -5,9 +5,13 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
+#include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -72,28 +76,75 @@ std::vector<InterfaceRow> read_interface(const std::string& directory) {
   return rows;
 }
 
-std::vector<double> read_last_cell_field(const std::string& directory, const std::string& name, int components) {
-  // The last body file listed in the series (dies are written as other parts).
+namespace {
+
+/// The body files of `directory`/anvil.pvd (part 0; dies are other parts), with their times.
+std::vector<std::pair<double, std::string>> body_files(const std::string& directory) {
   const std::string pvd = directory + "/anvil.pvd";
   std::ifstream in(pvd);
   if (!in) throw InputError(pvd + ": cannot open the file");
-  std::string line, file;
+  std::vector<std::pair<double, std::string>> files;
+  std::string line;
+  auto attribute = [&line](const std::string& name) {
+    const auto at = line.find(name + "=\"");
+    if (at == std::string::npos) return std::string();
+    const auto first = at + name.size() + 2;
+    return line.substr(first, line.find('"', first) - first);
+  };
   while (std::getline(in, line))
-    if (const auto at = line.find("file=\""); at != std::string::npos && line.find("part=\"0\"") != std::string::npos)
-      file = line.substr(at + 6, line.find('"', at + 6) - at - 6);
-  if (file.empty()) throw InputError(pvd + ": no body file listed");
+    if (attribute("part") == "0") files.emplace_back(std::stod(attribute("timestep")), attribute("file"));
+  if (files.empty()) throw InputError(pvd + ": no body file listed");
+  return files;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& path) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName((directory + "/" + file).c_str());
+  reader->SetFileName(path.c_str());
   reader->Update();
-  vtkDataArray* array = reader->GetOutput()->GetCellData()->GetArray(name.c_str());
+  vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
+  if (!grid || grid->GetNumberOfCells() == 0) throw InputError(path + ": no cells read");
+  return grid;
+}
+
+} // namespace
+
+std::vector<double> read_last_cell_field(const std::string& directory, const std::string& name, int components) {
+  const std::string path = directory + "/" + body_files(directory).back().second;
+  const vtkSmartPointer<vtkUnstructuredGrid> grid = read_grid(path);
+  vtkDataArray* array = grid->GetCellData()->GetArray(name.c_str());
   if (!array || array->GetNumberOfComponents() != components)
-    throw InputError(directory + "/" + file + ": no cell field '" + name + "' of " + std::to_string(components) +
-                     " components");
+    throw InputError(path + ": no cell field '" + name + "' of " + std::to_string(components) + " components");
   std::vector<double> values(static_cast<std::size_t>(array->GetNumberOfTuples() * components));
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
     for (int c = 0; c < components; ++c)
       values[static_cast<std::size_t>(i * components + c)] = array->GetComponent(i, c);
   return values;
+}
+
+std::vector<WrittenIncrement> read_written_increments(const std::string& directory) {
+  std::vector<WrittenIncrement> out;
+  for (const auto& [time, file] : body_files(directory)) {
+    // <name>_<bodies>_<increment>.vtu (VtkSeries)
+    const auto underscore = file.rfind('_'), dot = file.rfind('.');
+    WrittenIncrement w;
+    w.increment = std::stoi(file.substr(underscore + 1, dot - underscore - 1));
+    w.time = time;
+    const vtkSmartPointer<vtkUnstructuredGrid> grid = read_grid(directory + "/" + file);
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+      vtkIdType count = 0;
+      const vtkIdType* ids = nullptr;
+      grid->GetCellPoints(c, count, ids);
+      Eigen::Vector3d x[4];
+      for (int a = 0; a < 4; ++a)
+        grid->GetPoint(ids[a], x[a].data());
+      w.volume += (x[1] - x[0]).cross(x[2] - x[0]).dot(x[3] - x[0]) / 6.0;
+    }
+    if (vtkDataArray* strain = grid->GetCellData()->GetArray("equivalent_strain"))
+      for (vtkIdType i = 0; i < strain->GetNumberOfTuples(); ++i)
+        w.max_equivalent_strain = std::max(w.max_equivalent_strain, strain->GetComponent(i, 0));
+    out.push_back(w);
+  }
+  return out;
 }
 
 std::vector<double> read_summary_numbers(const std::string& directory, const std::string& key) {

@@ -176,8 +176,8 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   // lets them sink below the old surface (0.34 % of a quarter cylinder's
   // volume at h = R/10). Put boundary nodes back on the old surface; what is
   // left is the chord error of the new facets. Not where that would leave an
-  // element below quality_floor (in a die fillet's groove this move took the
-  // flash case's worst element from 0.20 to 0.16): restore_volume makes up
+  // element below quality_floor (in a die fillet's groove this move can
+  // flatten an element): restore_volume makes up
   // the volume such a node leaves.
   const contact::SurfaceSearch old_surface(body.nodes, body.boundary_faces);
   const std::vector<char> on_boundary = mesh::boundary_node_flags(out);
@@ -185,8 +185,8 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   for (std::size_t n = 0; n < out.nodes.size(); ++n)
     if (on_boundary[n]) guard.move(out, int(n), old_surface.closest(out.nodes[n]).point, settings.quality_floor);
   // A node on the border of a flat patch may land on the curved face next
-  // to it (off a symmetry plane by 0.4 µm in the flash case, enough to make
-  // the plane's faces no longer coplanar): flat patches keep their nodes.
+  // to it (off a symmetry plane by a fraction of a µm, enough to make the
+  // plane's faces no longer coplanar): flat patches keep their nodes.
   const auto planes = flat_tags(body);
   for (std::size_t f = 0; f < out.boundary_faces.size(); ++f) {
     const auto plane = planes.find(out.boundary_tags[f]);

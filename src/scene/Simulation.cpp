@@ -7,6 +7,7 @@
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/io/RunWriter.h"
+#include "anvil/io/load_plot.h"
 #include "anvil/remesh/Remesher.h"
 #include "anvil/scene/Discretisation.h"
 #include "anvil/scene/Increment.h"
@@ -135,6 +136,14 @@ void log_progress(const Scene& scene, const Discretisation& disc, const RunState
 void finish(const Scene& scene, const Discretisation& disc, RunState& state, io::RunWriter& writer,
             const solver::NewtonReport& last, Timers& timers, Clock::time_point start) {
   writer.write(scene, disc, state, true, timers);
+  if (scene.input.time.enabled) {
+    std::vector<std::string> surfaces;
+    for (const LoadSurface& s : scene.surfaces)
+      surfaces.push_back(s.name);
+    const std::string title = std::filesystem::path(scene.input.path).stem().string();
+    if (const std::string why = io::write_load_plot(writer.directory(), title, surfaces, state.loads); !why.empty())
+      log::info("loads.png not written: %s", why.c_str());
+  }
   const double total = seconds_since(start);
   writer.write_summary(scene, disc, state, last, timers, total);
   log::info("done in %.2f s (search %.2f s, assembly %.2f s, contact %.2f s, solver setup %.2f s, solve %.2f s, "

@@ -5,6 +5,7 @@
 #include "petsc_check.h"
 #include "petsc_matrix.h"
 
+#include <ml_utils.h>
 #include <petscksp.h>
 
 #include <string>
@@ -13,6 +14,18 @@
 namespace anvil::solver {
 
 using petsc::check;
+
+namespace {
+/// The seed ML gives itself at its first random vector in a process
+/// (ML_random_vec: spread over [1, 2³¹ − 2] by rank).
+int ml_initial_seed() {
+  PetscMPIInt rank = 0, size = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &size);
+  const int largest = 2147483647;
+  return static_cast<int>((largest - 1) * (1.0 - (rank + 1) / (size + 1.0)));
+}
+} // namespace
 
 struct KrylovSolver::Impl {
   SchurApproximation schur;
@@ -188,6 +201,11 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
   s.set_rigid_body_modes(data.nodes);
   check(KSPSetOperators(s.ksp, m, m), "setting up the preconditioner");
   check(KSPSetReusePreconditioner(s.ksp, PETSC_FALSE), "setting up the preconditioner");
+  // ML draws random vectors (its eigenvalue estimates) from one global seed
+  // that every set-up advances: reset, each set-up is that of a fresh
+  // process, so a resumed run and a second run in the same process solve as
+  // the first did.
+  ML_set_random_seed(ml_initial_seed());
   check(KSPSetUp(s.ksp), "setting up the preconditioner");
   if (!s.set_up) s.choose_schur_pc(pc);
   s.set_up = true;

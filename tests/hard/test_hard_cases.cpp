@@ -1,4 +1,4 @@
-// Hard cases that must finish (issue 3 §8): near rigid-plastic upsetting
+// Hard cases that must finish: near rigid-plastic upsetting
 // (m = 0.02) with friction, a die that lets go of the billet and comes back.
 #include "run_outputs.h"
 #include "two_cubes_runs.h"
@@ -85,7 +85,7 @@ TEST_CASE("a conical punch pinches the node on its apex and presses on to 2 mm",
 }
 
 TEST_CASE("quasi-symmetric contact with the master 8 times finer than the slave", "[hard]") {
-  // Issue 4d: two cubes, the master (lower) 16 cells a side, the slave 2.
+  // Two cubes, the master (lower) 16 cells a side, the slave 2.
   log::set_quiet(true);
   const auto out = (std::filesystem::temp_directory_path() / "anvil_hard_fine_master").string();
   const two_cubes::Outcome fine_master = two_cubes::run({0.625, 5.0, true, "quasi_symmetric"}, ANVIL_SOURCE_DIR, out);

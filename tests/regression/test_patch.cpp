@@ -1,4 +1,4 @@
-// The contact patch test of Fourment 2008 §5.2 (issue 4a), on tetrahedral
+// The contact patch test of Fourment 2008 §5.2, on tetrahedral
 // blocks meshed independently: matching meshes transmit the uniform stress
 // exactly with every formulation, and the quasi-symmetric formulation
 // transmits it better than master/slave on non-matching meshes. The full

@@ -1,4 +1,4 @@
-// Nothing lost (issue 3 §1): a run killed with SIGKILL part-way and resumed
+// Nothing lost: a run killed with SIGKILL part-way and resumed
 // with --resume gives the same loads as an uninterrupted run, and its VTK
 // series has no gap and no torn file.
 #include "run_outputs.h"

@@ -1,4 +1,4 @@
-// Three deformable bodies in mutual contact (issue 4, point 3):
+// Three deformable bodies in mutual contact:
 // cases/three_blocks.yaml, two C45 blocks side by side (meshed 2.0 and
 // 1.67 mm) on a base (2.5 mm), pressed 2 mm by a flat die. Three
 // quasi-symmetric pairs: left/base, right/base and left/right.

@@ -1,4 +1,4 @@
-// Two cubes squeezed with non-matching meshes (Fourment 2008 §5.3, issue 4c):
+// Two cubes squeezed with non-matching meshes (Fourment 2008 §5.3):
 // with the quasi-symmetric formulation the top load and the interface
 // velocity change by less than 2 % when master and slave are swapped, on
 // matching meshes and with one cube 2.25 times finer (lower 4, upper 9

@@ -1,5 +1,5 @@
 // Elastic bodies solved in velocity form over several increments
-// (IncrementalElastic: σ_{n+1} = σ_n + Δt C:ε̇, issue 4 point 2): two H13
+// (IncrementalElastic: σ_{n+1} = σ_n + Δt C:ε̇): two H13
 // blocks stacked with a quasi-symmetric contact pair, the top face pushed
 // down 0.01 mm in five increments, must carry the stress of one elastic
 // solve, σzz = E δ/H (cases/patch_test_displacement.yaml, exact 210 MPa on

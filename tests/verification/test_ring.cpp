@@ -1,4 +1,4 @@
-// Ring compression 6:3:2 to 50 % (issue 3 §8): the inner diameter grows
+// Ring compression 6:3:2 to 50 %: the inner diameter grows
 // without friction (exactly as sqrt(H0/H): the flow is homogeneous), and
 // shrinks more as the Tresca factor m̄ rises (Male & Cockcroft 1964).
 #include "test_common.h"

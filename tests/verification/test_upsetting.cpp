@@ -1,4 +1,4 @@
-// Upsetting between flat dies through the whole time loop (issue 3 §8):
+// Upsetting between flat dies through the whole time loop:
 // frictionless Norton-Hoff against the exact homogeneous solution, then the
 // effect of friction (ordering, slab-method band, barrelling).
 #include "test_common.h"

@@ -1,4 +1,4 @@
-// Two bars squeezed with a sticking interface (Fourment 2008 §5.1, issue 4b):
+// Two bars squeezed with a sticking interface (Fourment 2008 §5.1):
 // squeezing force against a run 4 times finer than the finest mesh, over a
 // sequence of meshes, matching (both bars h) and non-matching (upper bar one
 // cell more per side), with master/slave and quasi-symmetric contact.

@@ -1,4 +1,4 @@
-// The contact patch test table (Fourment 2008 §5.2, issue 4): the four load
+// The contact patch test table (Fourment 2008 §5.2): the four load
 // cases × the mesh pairs × master/slave, quasi-symmetric and symmetric, with
 // the relative error of the normal stress transmitted across the interface
 // (max and RMS over the interface nodes of both bodies), the largest error of

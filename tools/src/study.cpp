@@ -1,4 +1,4 @@
-// anvil_study: what accuracy costs in time (issue 3 §9).
+// anvil_study: what accuracy costs in time.
 //
 // Runs a case over lists of values of case keys (mesh size, stroke increment,
 // any other key of the case file), one key at a time with the other varied
@@ -18,8 +18,8 @@
 //                    measure only how an increment samples the first rise;
 //   remesh-jump      the worst press-load jump across a remesh at equal
 //                    geometry (remeshing.check_load: the increment after a
-//                    remesh solved on the old mesh and on the new), which
-//                    issue 5 bounds by 3 %: no reference run.
+//                    remesh solved on the old mesh and on the new), aimed
+//                    below 3 %: no reference run.
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/io/RunResults.h"
@@ -360,7 +360,7 @@ int study(int argc, char** argv) {
                 r.run->increments, r.run->nodes, r.run->load_jumps.size());
   }
   if (kind == ErrorKind::remesh_jump)
-    std::printf("\nfor 3 %% (issue 5): %s\n", cheapest_below(rows, 0.03).c_str());
+    std::printf("\nfor 3 %%: %s\n", cheapest_below(rows, 0.03).c_str());
   else
     std::printf("\nfor 1 %%:   %s\nfor 0.1 %%: %s\n", cheapest_below(rows, 0.01).c_str(),
                 cheapest_below(rows, 0.001).c_str());

@@ -39,6 +39,17 @@ std::vector<InterfaceRow> read_interface(const std::string& directory);
 /// values per cell (e.g. "stress", 6: xx yy zz xy yz zx). Throws InputError.
 std::vector<double> read_last_cell_field(const std::string& directory, const std::string& name, int components);
 
+/// One written increment of the bodies' VTK series (part 0 of anvil.pvd).
+struct WrittenIncrement {
+  int increment = 0;
+  double time = 0.0;                  ///< s
+  double volume = 0.0;                ///< mm³, of all bodies
+  double max_equivalent_strain = 0.0; ///< of cell field equivalent_strain (0 when the run writes none)
+};
+
+/// Every written increment of `directory`/anvil.pvd, in order. Throws InputError.
+std::vector<WrittenIncrement> read_written_increments(const std::string& directory);
+
 /// The first number after "key": in `directory`/summary.json. Throws
 /// InputError when the key is absent.
 double read_summary_number(const std::string& directory, const std::string& key);

@@ -1,7 +1,6 @@
-// Remeshing trigger "a die feature penetrates the body surface" (issue 5
-// point 2). Contact is nodal: it keeps body nodes out of the die, not die
-// corners out of the body. A die corner that has gone between body nodes is
-// seen here, and a remesh puts nodes where the die shapes the body.
+// Remeshing trigger "a die feature penetrates the body surface". Contact is nodal: it keeps body nodes out of the die,
+// not die corners out of the body. A die corner that has gone between body nodes is seen here, and a remesh puts nodes
+// where the die shapes the body.
 #pragma once
 #include "anvil/mesh/TetMesh.h"
 

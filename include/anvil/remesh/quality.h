@@ -1,4 +1,4 @@
-// Mesh quality watch (issue 5 point 1): the measure is the volume-edge ratio
+// Mesh quality watch: the measure is the volume-edge ratio
 // q = 6√2 V / l_rms³ of mesh::quality (1 for the regular tet, 0 flat,
 // negative inverted), on the current mesh and on the mesh the next increment
 // would give if the nodes kept their velocity.

@@ -1,4 +1,4 @@
-// Boundary conditions of issue 2: prescribed velocity components, symmetry
+// Boundary conditions: prescribed velocity components, symmetry
 // planes, flat sticking or frictionless plates (as velocity conditions; real
 // dies come later), tractions and pressures. Faces are chosen by boundary
 // tag or by a plane.

@@ -74,7 +74,7 @@ struct TimeSpec {
   double end_time = std::numeric_limits<double>::infinity(); ///< s
 };
 
-/// Automatic remeshing (issue 5). Flowing bodies only: an elastic die strains
+/// Automatic remeshing. Flowing bodies only: an elastic die strains
 /// too little to need it and keeps its mesh.
 struct RemeshSpec {
   bool enabled = false;

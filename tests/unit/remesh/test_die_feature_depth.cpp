@@ -1,4 +1,4 @@
-// The remeshing trigger "a die vertex inside the body" (issue 5 point 2).
+// The remeshing trigger "a die vertex inside the body".
 #include "anvil/mesh/generators.h"
 #include "anvil/remesh/die_feature_depth.h"
 

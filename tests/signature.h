@@ -1,0 +1,123 @@
+// A case's regression signature: per written increment (each .vtu of the
+// bodies), the stroke, the load on every load surface, the volume, the
+// largest ε̄ and the Newton iterations, read from what the run wrote as a
+// user would. Shared by the regression test and tools/update_signatures.
+#pragma once
+#include "anvil/core/error.h"
+#include "anvil/io/RunResults.h"
+#include "anvil/scene/Case.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace signature {
+
+/// A case as the signature runs it: a time-stepping case for its first 10
+/// increments (the whole runs are the hard tier's), any other as it is.
+inline anvil::scene::Case read_case(const std::string& path) {
+  const anvil::scene::Case c = anvil::scene::read_case(path);
+  return c.time.enabled ? anvil::scene::read_case(path, {"time.max_increments=10"}) : c;
+}
+
+struct Row {
+  int increment = 0;
+  double stroke = 0.0;       ///< mm, of the first load surface
+  double volume = 0.0;       ///< mm³, all bodies
+  double max_strain = 0.0;   ///< largest ε̄
+  int newton = 0;            ///< Newton iterations of the increment
+  std::vector<double> loads; ///< |F| (N) per surface, in `Signature::surfaces` order
+};
+
+struct Signature {
+  std::vector<std::string> surfaces;
+  std::vector<Row> rows;
+};
+
+inline std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::istringstream s(line);
+  for (std::string f; std::getline(s, f, ',');)
+    fields.push_back(f);
+  return fields;
+}
+
+/// The signature of the run in `directory`.
+inline Signature of_run(const std::string& directory) {
+  Signature sig;
+  // loads.csv: increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N
+  std::map<int, std::map<std::string, std::pair<double, double>>> loads; // increment → surface → (stroke, |F|)
+  std::ifstream csv(directory + "/loads.csv");
+  std::string line;
+  std::getline(csv, line);
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> f = split(line);
+    if (f.size() != 7) throw anvil::InputError(directory + "/loads.csv: a row without 7 fields: " + line);
+    if (std::find(sig.surfaces.begin(), sig.surfaces.end(), f[2]) == sig.surfaces.end()) sig.surfaces.push_back(f[2]);
+    const double force = std::hypot(std::stod(f[4]), std::stod(f[5]), std::stod(f[6]));
+    loads[std::stoi(f[0])][f[2]] = {std::stod(f[3]), force};
+  }
+  // summary.json: "iterations_per_increment": {"newton": [n1, n2, ...]
+  std::ifstream json(directory + "/summary.json");
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  const auto list = text.find("\"newton\": [");
+  if (list == std::string::npos)
+    throw anvil::InputError(directory + "/summary.json: no Newton iterations per increment");
+  std::vector<int> newton;
+  std::istringstream numbers(text.substr(list + 11, text.find(']', list) - list - 11));
+  for (std::string n; std::getline(numbers, n, ',');)
+    newton.push_back(std::stoi(n));
+  for (const anvil::io::WrittenIncrement& w : anvil::io::read_written_increments(directory)) {
+    Row row{w.increment, 0.0, w.volume, w.max_equivalent_strain, newton.at(w.increment - 1), {}};
+    const auto& at = loads.at(w.increment);
+    row.stroke = at.at(sig.surfaces.front()).first;
+    for (const std::string& s : sig.surfaces)
+      row.loads.push_back(at.at(s).second);
+    sig.rows.push_back(row);
+  }
+  return sig;
+}
+
+inline std::string to_csv(const Signature& sig) {
+  std::ostringstream out;
+  out.precision(10);
+  out << "increment,stroke_mm,volume_mm3,max_strain,newton";
+  for (const std::string& s : sig.surfaces)
+    out << ",load_" << s << "_N";
+  out << "\n";
+  for (const Row& r : sig.rows) {
+    out << r.increment << "," << r.stroke << "," << r.volume << "," << r.max_strain << "," << r.newton;
+    for (double f : r.loads)
+      out << "," << f;
+    out << "\n";
+  }
+  return out.str();
+}
+
+/// Reads a signature written by to_csv. Throws InputError.
+inline Signature read_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw anvil::InputError(path + ": no reference signature (tools/update_signatures writes it)");
+  Signature sig;
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split(line);
+  for (std::size_t k = 5; k < header.size(); ++k)
+    sig.surfaces.push_back(header[k].substr(5, header[k].size() - 7));
+  while (std::getline(in, line)) {
+    const std::vector<std::string> f = split(line);
+    if (f.size() != header.size()) throw anvil::InputError(path + ": a row of another width: " + line);
+    Row r{std::stoi(f[0]), std::stod(f[1]), std::stod(f[2]), std::stod(f[3]), std::stoi(f[4]), {}};
+    for (std::size_t k = 5; k < f.size(); ++k)
+      r.loads.push_back(std::stod(f[k]));
+    sig.rows.push_back(r);
+  }
+  return sig;
+}
+
+} // namespace signature

@@ -1,0 +1,31 @@
+// anvil_signature CASE.yaml OUT_DIR: runs a case as the regression test does
+// (its first increments) into OUT_DIR and prints its signature (CSV) on
+// stdout. tools/update_signatures calls it for every case.
+#include "signature.h"
+#include "anvil/core/error.h"
+#include "anvil/core/log.h"
+#include "anvil/scene/Case.h"
+#include "anvil/scene/Simulation.h"
+#include "anvil/solver/PetscSession.h"
+
+#include <cstdio>
+#include <filesystem>
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fputs("usage: anvil_signature CASE.yaml OUT_DIR\n", stderr);
+    return 2;
+  }
+  int petsc_argc = 1; // the tool's own arguments are not PETSc's
+  anvil::solver::PetscSession petsc(petsc_argc, argv);
+  try {
+    anvil::log::set_quiet(true);
+    std::filesystem::remove_all(argv[2]);
+    anvil::scene::run(signature::read_case(argv[1]), {argv[2]});
+    std::fputs(signature::to_csv(signature::of_run(argv[2])).c_str(), stdout);
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "anvil_signature: %s: %s\n", argv[1], e.what());
+    return 1;
+  }
+}
