@@ -188,7 +188,7 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
     }
 
   const double volume_after = mesh::volume(moved);
-  state.mesh = std::move(moved);
+  state.mesh.nodes = std::move(moved.nodes); // the elements stay: the discretisation holds on to them
   state.dies = std::move(dies);
   state.unknowns = std::move(inc.unknowns);
   append_loads(scene, state.dies, state.increment + 1, state.time + dt, inc.forces, state.loads);

@@ -41,13 +41,15 @@ std::string clock_text(double seconds) {
 }
 
 /// The time a run has left (s): the pace (wall time per unit of progress)
-/// over its last 10 increments, so that it follows the run as the contact
-/// grows or the mesh is refined, and a remesh or a cut increment weighs
-/// one in ten. Unknown (NaN) for the first 5 increments, whose Newton
-/// counts are not yet those of the run.
+/// over the last 10 increments, so that it follows the run as the contact
+/// grows or the mesh is refined, and a remesh or a cut increment weighs one
+/// in ten. The first 3 increments of a run (or of a resumed run) are left
+/// out, their Newton counts are not the run's (the contact settles, the
+/// first preconditioner is built); unknown (NaN) until 3 more are done.
 class TimeLeft {
 public:
   double update(double progress, double now) {
+    if (++updates_ <= kSettling) return std::numeric_limits<double>::quiet_NaN();
     points_.push_back({progress, now});
     if (points_.size() > kWindow + 1) points_.pop_front();
     if (points_.size() <= kFirst) return std::numeric_limits<double>::quiet_NaN();
@@ -57,8 +59,9 @@ public:
   }
 
 private:
-  static constexpr std::size_t kWindow = 10, kFirst = 5;
-  std::deque<std::pair<double, double>> points_; ///< (progress, wall time s) at the start and after each increment
+  static constexpr std::size_t kSettling = 4, kWindow = 10, kFirst = 3;
+  std::size_t updates_ = 0;                      ///< calls so far: the start, then one per increment
+  std::deque<std::pair<double, double>> points_; ///< (progress, wall time s) after each increment
 };
 
 void log_header(const Scene& scene, const Discretisation& disc, const RunState& state, const RunOptions& options) {

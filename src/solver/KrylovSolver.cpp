@@ -70,14 +70,14 @@ struct KrylovSolver::Impl {
     // anvil's choices go in as defaults that the user's options override.
     set_default_option("-fieldsplit_0_ksp_type", "preonly");
     set_default_option("-fieldsplit_0_pc_type", "ml");
-    // ML aggregates with the block size's three translations: the six rigid-body
-    // modes (for GAMG) make its set-up 2.5x and its V-cycle 2x dearer at 12k
-    // nodes for one Krylov iteration less (Newtonian; 3 more for m = 0.1).
+    // ML aggregates with the block size's three translations: the six
+    // rigid-body modes make its set-up and V-cycle dearer for about one
+    // Krylov iteration less.
     set_default_option("-fieldsplit_0_pc_ml_nullspace", "block");
     // Chebyshev with Jacobi smooths every ML level (velocity and BFBT's
-    // pressure Laplacian): against PETSc's default (two SOR sweeps) 1.5-1.6x
-    // the Krylov iterations, each half the price: one Newton iteration of the
-    // bench at 50k nodes 6.5 s against 8.8 s (m = 0.1 at 12k: 1.10 against 1.22 s).
+    // pressure Laplacian): more Krylov iterations than PETSc's default (two
+    // SOR sweeps), each about half the price, cheaper overall (README, the
+    // linear solve).
     for (const char* levels : {"-fieldsplit_0_mg_levels_", "-fieldsplit_1_bfbt_mg_levels_"}) {
       set_default_option(std::string(levels) + "ksp_type", "chebyshev");
       set_default_option(std::string(levels) + "pc_type", "jacobi");
