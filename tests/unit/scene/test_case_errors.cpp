@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <unistd.h>
 
 using namespace anvil;
 
@@ -23,8 +24,13 @@ boundary:
   - {name: top, type: sticking_plate, tag: 6, velocity: [0, 0, -1]}
 )";
 
+/// A folder of this process's own: ctest runs test cases side by side.
+std::filesystem::path scratch() {
+  return std::filesystem::temp_directory_path() / ("anvil_case_tests_" + std::to_string(getpid()));
+}
+
 std::string write_case(const std::string& name, std::string text) {
-  const auto dir = std::filesystem::temp_directory_path() / "anvil_case_tests";
+  const auto dir = scratch();
   std::filesystem::create_directories(dir);
   const std::string material = source_path("materials/newtonian_reference.yaml");
   if (auto at = text.find("MATERIAL"); at != std::string::npos) text.replace(at, 8, material);
@@ -75,7 +81,7 @@ TEST_CASE("case-file errors name file, line, key and expectation", "[unit]") {
 }
 
 TEST_CASE("an input error leaves no output behind", "[unit]") {
-  const auto out = std::filesystem::temp_directory_path() / "anvil_case_tests" / "no_output";
+  const auto out = scratch() / "no_output";
   std::filesystem::remove_all(out);
   // The face selection is checked only once the mesh exists: still before any file is written.
   const scene::Case c = scene::read_case(write_case("tag.yaml", replaced(kValid, "tag: 6", "tag: 42")));
