@@ -30,31 +30,36 @@ void JsonWriter::next_item(bool is_object_value) {
   level.empty = false;
 }
 
+void JsonWriter::open(bool object) {
+  next_item(object);
+  out_ << (object ? '{' : '[');
+  levels_.push_back({object});
+}
+
+void JsonWriter::close() {
+  const Level level = levels_.back();
+  levels_.pop_back();
+  if (level.object && !level.empty) newline();
+  out_ << (level.object ? '}' : ']');
+}
+
 JsonWriter& JsonWriter::begin_object() {
-  next_item(true);
-  out_ << '{';
-  levels_.push_back({true});
+  open(true);
   return *this;
 }
 
 JsonWriter& JsonWriter::end_object() {
-  const bool empty = levels_.back().empty;
-  levels_.pop_back();
-  if (!empty) newline();
-  out_ << '}';
+  close();
   return *this;
 }
 
 JsonWriter& JsonWriter::begin_array() {
-  next_item(false);
-  out_ << '[';
-  levels_.push_back({false});
+  open(false);
   return *this;
 }
 
 JsonWriter& JsonWriter::end_array() {
-  levels_.pop_back();
-  out_ << ']';
+  close();
   return *this;
 }
 

@@ -1,6 +1,7 @@
 #include "anvil/io/RunResults.h"
 
 #include "anvil/core/error.h"
+#include "anvil/mesh/tet_geometry.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -8,8 +9,6 @@
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
-
-#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <fstream>
@@ -134,10 +133,10 @@ std::vector<WrittenIncrement> read_written_increments(const std::string& directo
       vtkIdType count = 0;
       const vtkIdType* ids = nullptr;
       grid->GetCellPoints(c, count, ids);
-      Eigen::Vector3d x[4];
+      mesh::Point x[4];
       for (int a = 0; a < 4; ++a)
         grid->GetPoint(ids[a], x[a].data());
-      w.volume += (x[1] - x[0]).cross(x[2] - x[0]).dot(x[3] - x[0]) / 6.0;
+      w.volume += mesh::signed_volume(x[0], x[1], x[2], x[3]);
     }
     if (vtkDataArray* strain = grid->GetCellData()->GetArray("equivalent_strain"))
       for (vtkIdType i = 0; i < strain->GetNumberOfTuples(); ++i)

@@ -46,6 +46,9 @@ private:
   /// Separator and layout before a value or a key.
   void next_item(bool is_object_value);
   void newline();
+  /// Opens an object or an array; close() ends the innermost one.
+  void open(bool object);
+  void close();
   void write_string(std::string_view text);
 
   std::ostringstream out_;
