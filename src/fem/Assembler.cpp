@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 namespace anvil::fem {
 namespace {
@@ -47,11 +48,11 @@ void sort_unique(std::vector<std::vector<int>>& lists) {
 
 } // namespace
 
-Assembler::Assembler(const mesh::TetMesh& mesh, const DofMap& dofs)
-    : dofs_(dofs), tets_(mesh.tets), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()),
+Assembler::Assembler(const mesh::TetMesh& mesh, DofMap dofs)
+    : dofs_(std::move(dofs)), tets_(mesh.tets), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()),
       bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0), element_blocks_(mesh.tets.size()),
       element_neighbours_(mesh.nodes.size()) {
-  ANVIL_ASSERT(dofs.dof_count() == kDofsPerNode * mesh.node_count());
+  ANVIL_ASSERT(dofs_.dof_count() == kDofsPerNode * mesh.node_count());
   for (const mesh::Tet& t : mesh.tets)
     for (int a : t)
       for (int b : t)
@@ -147,6 +148,7 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
                                    const std::vector<material::PointState>& states, const BodyUnknowns& unknowns,
                                    const Eigen::VectorXd& nodal_forces, const BodyForce& body_force,
                                    bool with_tangent) {
+  ANVIL_ASSERT(mesh.tets.size() == tets_.size());
   AssemblyResult result;
   result.residual = -nodal_forces;
   if (with_tangent) {

@@ -77,7 +77,12 @@ void RunWriter::write_loads(const scene::Scene& scene, const scene::RunState& st
 void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state) {
   const mesh::TetMesh& mesh = state.mesh;
   const bool elastic = scene.solve_displacement;
-  const fem::ElementFields fields = fem::element_fields(mesh, disc.element_laws, disc.point_states, state.unknowns);
+  fem::ElementFields fields = fem::element_fields(mesh, disc.element_laws, disc.point_states, state.unknowns);
+  // An elastic body in velocity form carries σ_{n+1}, accepted with the increment.
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    if (scene.bodies[b].velocity_form)
+      for (int e = state.bodies[b].first_tet; e < state.bodies[b].first_tet + state.bodies[b].tet_count; ++e)
+        fields.stress[e] = Eigen::Map<const material::Vec6>(&state.elastic_stress[6 * e]);
   Field velocity{elastic ? "displacement" : "velocity", 3, {}}, pressure{"pressure", 1, {}};
   Field contact_status{"contact_status", 1, std::vector<double>(mesh.nodes.size(), 0.0)};
   Field contact_pressure{"contact_pressure", 1, std::vector<double>(mesh.nodes.size(), 0.0)};

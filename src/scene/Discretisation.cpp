@@ -45,7 +45,7 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const Body& body = scene.bodies[b];
     const mesh::MeshRange& range = state.bodies[b];
-    laws.insert(laws.end(), range.tet_count, &body.element_law());
+    laws.insert(laws.end(), range.tet_count, body.law.get());
     const bool remeshed = std::any_of(state.remeshes.begin(), state.remeshes.end(),
                                       [&](const RemeshRecord& r) { return r.body == static_cast<int>(b); });
     Timers::Scope scope(timers, "effect boundary_conditions");

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace anvil::scene {
 namespace {
@@ -40,11 +41,28 @@ Eigen::VectorXd external_vector(const Scene& scene, const Discretisation& disc, 
   return external;
 }
 
+/// The law of each element over an increment of `dt`: its body's law, or for
+/// an elastic body in velocity form that law over `dt` (σ = σ_n + Δt C:ε̇).
+struct IncrementLaws {
+  std::vector<std::unique_ptr<material::IncrementalElastic>> velocity_form; ///< the bodies' that need one
+  fem::ElementLaws of_element;
+};
+
+IncrementLaws increment_laws(const Scene& scene, const Discretisation& disc, const RunState& state, double dt) {
+  IncrementLaws laws{{}, disc.element_laws};
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    if (!scene.bodies[b].velocity_form) continue;
+    laws.velocity_form.push_back(std::make_unique<material::IncrementalElastic>(
+        dynamic_cast<const material::LinearElastic&>(*scene.bodies[b].law), dt));
+    const mesh::MeshRange& range = state.bodies[b];
+    std::fill_n(laws.of_element.begin() + range.first_tet, range.tet_count, laws.velocity_form.back().get());
+  }
+  return laws;
+}
+
 /// Newton on (v, p) for an increment of `dt` from `state`, with contact scales `scales`.
 IncrementOutcome solve_at(const Scene& scene, Discretisation& disc, const RunState& state, double dt, double nominal,
                           const contact::ContactScales& scales, Timers& timers) {
-  for (const Body& body : scene.bodies)
-    if (body.increment_law) body.increment_law->set_time_step(dt);
   // Candidates: boundary nodes that can reach a die or another body within the increment.
   std::vector<contact::DieView> views;
   double die_speed = 0.0, body_speed = 0.0;
@@ -77,9 +95,10 @@ IncrementOutcome solve_at(const Scene& scene, Discretisation& disc, const RunSta
   IncrementOutcome out;
   out.time_step = dt;
   const Eigen::VectorXd external = external_vector(scene, disc, state, dt, nominal, out.compensation);
+  const IncrementLaws laws = increment_laws(scene, disc, state, dt);
   const solver::IncrementProblem problem{
-      disc.element_laws,        disc.point_states,     external, {}, disc.contact_terms(scene),
-      scene.reference_velocity, scales.reference_force};
+      state.mesh, laws.of_element,           disc.point_states,        external,
+      {},         disc.contact_terms(scene), scene.reference_velocity, scales.reference_force};
   out.unknowns = state.unknowns;
   Timers::Scope scope(timers, "newton");
   out.report = disc.solver->solve(problem, scene.input.newton, out.unknowns);
@@ -145,7 +164,8 @@ IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const
   }
   if (out.converged()) {
     out.forces = surface_forces(scene, disc, out);
-    out.fields = fem::element_fields(state.mesh, disc.element_laws, disc.point_states, out.unknowns);
+    out.fields = fem::element_fields(state.mesh, increment_laws(scene, disc, state, out.time_step).of_element,
+                                     disc.point_states, out.unknowns);
   }
   return out;
 }
@@ -211,7 +231,7 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
   }
   // σ_{n+1} = σ_n + Δt C:ε̇ in elastic bodies (IncrementalElastic): the stress just solved.
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-    if (scene.bodies[b].increment_law)
+    if (scene.bodies[b].velocity_form)
       for (int e = state.bodies[b].first_tet; e < state.bodies[b].first_tet + state.bodies[b].tet_count; ++e) {
         disc.point_states[e].elastic_stress = inc.fields.stress[e];
         Eigen::Map<material::Vec6>(&state.elastic_stress[6 * e]) = inc.fields.stress[e];

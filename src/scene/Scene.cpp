@@ -77,10 +77,8 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
   solve_displacement = !c.time.enabled && std::all_of(laws.begin(), laws.end(),
                                                       [](const material::Material* l) { return l->is_elastic(); });
   for (Body& body : bodies)
-    if (body.law->is_elastic() && !solve_displacement)
-      body.increment_law =
-          std::make_unique<material::IncrementalElastic>(dynamic_cast<const material::LinearElastic&>(*body.law));
-  carries_stress = std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return bool(b.increment_law); });
+    body.velocity_form = body.law->is_elastic() && !solve_displacement;
+  carries_stress = std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.velocity_form; });
   effects = resolve_effects(c, laws);
   compensate_volume = std::find(effects.begin(), effects.end(), "volume_compensation") != effects.end();
 

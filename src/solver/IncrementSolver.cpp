@@ -54,15 +54,16 @@ double max_velocity(const Eigen::VectorXd& nodal) {
 
 IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed,
                                  const LinearSolverSettings& linear, Timers& timers)
-    : mesh_(mesh), dofs_(std::move(prescribed)), assembler_(mesh, dofs_), linear_solver_(linear, dofs_.free_count()),
+    : assembler_(mesh, fem::DofMap(std::move(prescribed))), linear_solver_(linear, assembler_.dofs().free_count()),
       timers_(timers) {}
 
 IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns) {
+  const fem::DofMap& dofs = assembler_.dofs();
   Merit m{0.0, 0.0, 0.0};
   {
     Timers::Scope scope(timers_, "assembly");
-    fem::AssemblyResult r = assembler_.assemble(mesh_, problem.laws, problem.states, unknowns, problem.nodal_forces,
-                                                problem.body_force, true);
+    fem::AssemblyResult r = assembler_.assemble(problem.mesh, problem.laws, problem.states, unknowns,
+                                                problem.nodal_forces, problem.body_force, true);
     residual_ = std::move(r.residual);
     bad_element_ = r.bad_element;
     m.bubble_sq = r.bubble_residual_sq;
@@ -79,8 +80,8 @@ IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem
   } else
     nodal_term_residual_.resize(0);
   assembler_.finish_tangent();
-  for (int d = 0; d < dofs_.dof_count(); ++d) {
-    if (dofs_.prescribed(d)) continue;
+  for (int d = 0; d < dofs.dof_count(); ++d) {
+    if (dofs.prescribed(d)) continue;
     (d % kDofsPerNode == 3 ? m.flux_sq : m.force_sq) += residual_[d] * residual_[d];
   }
   return m;
@@ -88,11 +89,12 @@ IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem
 
 double IncrementSolver::force_scale(const IncrementProblem& problem) const {
   const Eigen::VectorXd& nodal_forces = problem.nodal_forces;
+  const fem::DofMap& dofs = assembler_.dofs();
   double reaction_sq = 0.0;
-  for (int d = 0; d < dofs_.dof_count(); ++d)
-    if (dofs_.prescribed(d) && d % kDofsPerNode != 3) reaction_sq += residual_[d] * residual_[d];
+  for (int d = 0; d < dofs.dof_count(); ++d)
+    if (dofs.prescribed(d) && d % kDofsPerNode != 3) reaction_sq += residual_[d] * residual_[d];
   double applied_sq = 0.0;
-  for (int d = 0; d < dofs_.dof_count(); ++d)
+  for (int d = 0; d < dofs.dof_count(); ++d)
     if (d % kDofsPerNode != 3) applied_sq += nodal_forces[d] * nodal_forces[d];
   // A body at rest (a billet between dies that let go) has no load of its
   // own: the reference force keeps the measure finite.
@@ -103,8 +105,10 @@ double IncrementSolver::force_scale(const IncrementProblem& problem) const {
 NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const NewtonSettings& settings,
                                     fem::BodyUnknowns& unknowns) {
   NewtonReport report;
-  const int n = dofs_.dof_count();
-  const double body_volume = std::abs(mesh::volume(mesh_));
+  const mesh::TetMesh& mesh = problem.mesh;
+  const fem::DofMap& dofs = assembler_.dofs();
+  const int n = dofs.dof_count();
+  const double body_volume = std::abs(mesh::volume(mesh));
 
   // Predictor: a near-rigid-plastic law started from rest sees huge viscosities
   // wherever the guess is still, and Newton crawls. One solve with each
@@ -112,7 +116,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   // reference rate (|v|max / body size) gives a start in the quadratic basin.
   bool at_rest = true;
   for (int d = 0; d < n && at_rest; ++d)
-    if (!dofs_.prescribed(d) && unknowns.nodal[d] != 0.0) at_rest = false;
+    if (!dofs.prescribed(d) && unknowns.nodal[d] != 0.0) at_rest = false;
   const double reference_velocity =
       problem.reference_velocity > 0.0 ? problem.reference_velocity : max_velocity(unknowns.nodal);
   const bool nonlinear = std::any_of(problem.laws.begin(), problem.laws.end(),
@@ -141,8 +145,13 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     predictor.verbose = false;    // contact set, one step of it is enough for a start)
     predictor.tolerance = 1e-2;   // a start, not an answer: its Krylov solve need not be tight
     Timers::Scope scope(timers_, "effect nonlinear_law (predictor)");
-    const IncrementProblem newtonian_problem{newtonian_laws,         problem.states,      problem.nodal_forces,
-                                             problem.body_force,     problem.nodal_terms, reference_velocity,
+    const IncrementProblem newtonian_problem{mesh,
+                                             newtonian_laws,
+                                             problem.states,
+                                             problem.nodal_forces,
+                                             problem.body_force,
+                                             problem.nodal_terms,
+                                             reference_velocity,
                                              problem.reference_force};
     report.linear_iterations += solve(newtonian_problem, predictor, unknowns).linear_iterations;
     if (settings.verbose)
@@ -158,8 +167,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   const double area = std::pow(body_volume, 2.0 / 3.0);
   // |Δv| is measured against |v|, or against 1e-3 of the reference speed at
   // every node when the body is (nearly) at rest.
-  const double velocity_floor_sq =
-      std::max(1e-6 * reference_velocity * reference_velocity * mesh_.node_count(), 1e-300);
+  const double velocity_floor_sq = std::max(1e-6 * reference_velocity * reference_velocity * mesh.node_count(), 1e-300);
   auto relative = [](const Merit& m, double force, double flux) {
     return (m.force_sq + m.bubble_sq) / (force * force) + m.flux_sq / (flux * flux);
   };
@@ -190,7 +198,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       return report;
     }
     for (int d = 0; d < n; ++d)
-      rhs[d] = dofs_.prescribed(d) ? 0.0 : -residual_[d];
+      rhs[d] = dofs.prescribed(d) ? 0.0 : -residual_[d];
     // The relative residual Newton starts this step from (a body at rest with
     // no velocity scale has only its force part).
     const double flux_now = std::max(max_velocity(unknowns.nodal), reference_velocity) * area;
@@ -201,7 +209,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     bool solved = false;
     {
       Timers::Scope scope(timers_, "solver setup");
-      solved = linear_solver_.factorize(assembler_.tangent(), SaddlePointData{mesh_.nodes, assembler_.pressure_mass()});
+      solved = linear_solver_.factorize(assembler_.tangent(), SaddlePointData{mesh.nodes, assembler_.pressure_mass()});
     }
     if (solved) {
       Timers::Scope scope(timers_, "solve");
@@ -213,8 +221,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     }
     report.linear_iterations += linear_solver_.iterations();
     for (int d = 0; d < n; ++d)
-      if (dofs_.prescribed(d)) delta[d] = 0.0; // decoupled rows: zero to the solve's accuracy, exactly zero here
-    assembler_.bubble_increment(mesh_, delta, bubble_delta);
+      if (dofs.prescribed(d)) delta[d] = 0.0; // decoupled rows: zero to the solve's accuracy, exactly zero here
+    assembler_.bubble_increment(problem.mesh, delta, bubble_delta);
 
     // Backtracking line search on the squared relative residual (Armijo with
     // c = 1e-4; for the exact Newton direction its slope at step 0 is −2 × merit).

@@ -43,7 +43,7 @@ Solved solve(const mesh::TetMesh& mesh, const material::Material& law, const std
   solver::NewtonSettings settings;
   settings.tolerance = tolerance;
   settings.verbose = false;
-  s.report = solver.solve(law, {}, s.imposed.nodal_forces, {}, settings, s.unknowns);
+  s.report = solver.solve(mesh, law, {}, s.imposed.nodal_forces, {}, settings, s.unknowns);
   s.residual = solver.residual();
   return s;
 }
@@ -174,7 +174,7 @@ TEST_CASE("the iterative solvers give the direct solver's answer", "[verificatio
     solver::NewtonSettings newton;
     newton.tolerance = newton.increment_tolerance = 1e-10;
     newton.verbose = false;
-    REQUIRE(solver.solve(law, {}, imposed.nodal_forces, {}, newton, u).converged);
+    REQUIRE(solver.solve(mesh, law, {}, imposed.nodal_forces, {}, newton, u).converged);
     const double load = scene::reaction(imposed, 1, solver.residual()).z();
     if (name == "umfpack") reference = load;
     INFO(name << ": " << load << " N, umfpack " << reference << " N");

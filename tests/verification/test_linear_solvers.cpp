@@ -48,7 +48,7 @@ TEST_CASE("Norton-Hoff m = 0.1 with a rigid zone: FGMRES gives MUMPS's punch loa
     newton.tolerance = newton.increment_tolerance = 1e-10;
     newton.max_iterations = 60; // from rest, the damped phase alone takes about 25 iterations
     newton.verbose = false;
-    const solver::NewtonReport report = solver.solve(law, {}, imposed.nodal_forces, {}, newton, u);
+    const solver::NewtonReport report = solver.solve(mesh, law, {}, imposed.nodal_forces, {}, newton, u);
     INFO(name << ": " << report.failure);
     REQUIRE(report.converged);
     double load = 0.0;

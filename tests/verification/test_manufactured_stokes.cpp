@@ -75,7 +75,7 @@ Errors solve_on(int cells) {
   solver::NewtonSettings settings;
   settings.verbose = false;
   settings.tolerance = 1e-10;
-  const auto report = solver.solve(newtonian, {}, Eigen::VectorXd::Zero(4 * n), body_force, settings, u);
+  const auto report = solver.solve(mesh, newtonian, {}, Eigen::VectorXd::Zero(4 * n), body_force, settings, u);
   REQUIRE(report.converged);
 
   // Pressure mean offset (the pin fixes one node, the comparison is up to a constant).

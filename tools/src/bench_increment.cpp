@@ -118,7 +118,8 @@ int main(int argc, char** argv) {
     log::set_quiet(!settings.verbose);
     solver::IncrementSolver solver(problem.mesh, problem.imposed.prescribed, linear, timers);
     fem::BodyUnknowns unknowns{problem.imposed.values, Eigen::VectorXd::Zero(3 * problem.mesh.tet_count())};
-    const auto report = solver.solve(*problem.law, {}, problem.imposed.nodal_forces, {}, settings, unknowns);
+    const auto report =
+        solver.solve(problem.mesh, *problem.law, {}, problem.imposed.nodal_forces, {}, settings, unknowns);
 
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);

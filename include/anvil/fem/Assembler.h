@@ -40,12 +40,15 @@ struct AssemblyResult {
 
 class Assembler {
 public:
-  Assembler(const mesh::TetMesh& mesh, const DofMap& dofs);
+  /// The pattern of `mesh`'s elements (its nodes may move, its elements not)
+  /// over the dofs of `dofs`.
+  Assembler(const mesh::TetMesh& mesh, DofMap dofs);
 
   /// Residual R = internal − external (external = `nodal_forces`, 4 × nodes,
   /// e.g. tractions) and, when `with_tangent`, the condensed tangent (tangent())
   /// and the viscous pressure mass (pressure_mass()). Stores what the bubble
   /// update needs; call bubble_increment() after the linear solve.
+  /// `mesh` has the elements the assembler was built for, at their current nodes.
   AssemblyResult assemble(const mesh::TetMesh& mesh, const ElementLaws& laws,
                           const std::vector<material::PointState>& states, const BodyUnknowns& unknowns,
                           const Eigen::VectorXd& nodal_forces, const BodyForce& body_force, bool with_tangent);
@@ -77,6 +80,7 @@ public:
   /// neither tiny nor huge for a solver.
   void finish_tangent();
   int colour_count() const { return static_cast<int>(colours_.size()); }
+  const DofMap& dofs() const { return dofs_; }
 
 private:
   void build_pattern();
@@ -84,8 +88,8 @@ private:
   /// `row_node`, component `c` of node `col_node`).
   int entry(int row_node, int d, int col_node, int c) const;
 
-  const DofMap& dofs_;
-  const std::vector<mesh::Tet>& tets_; ///< the mesh's elements (the assembler lives with its mesh)
+  DofMap dofs_;
+  std::vector<mesh::Tet> tets_; ///< the elements the pattern is built on
   SparseMatrix tangent_;
   Eigen::VectorXd pressure_mass_;
   std::vector<std::vector<int>> colours_; ///< element indices per colour

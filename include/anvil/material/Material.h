@@ -123,11 +123,12 @@ private:
 /// updated Lagrangian, rotations neglected: die strains are ~1e-3). With σ_n
 /// from PointState::elastic_stress, s = dev σ_n + 2GΔt dev ε̇, and the
 /// pressure equation is div v + (p − p_n)/(κΔt) = 0, p_n = −tr σ_n / 3:
-/// a Newtonian law of viscosity GΔt with an initial stress.
+/// a Newtonian law of viscosity GΔt with an initial stress. One object per
+/// increment length: the law of an increment is built for its Δt.
 class IncrementalElastic final : public Material {
 public:
-  explicit IncrementalElastic(const LinearElastic& elastic) : elastic_(elastic) {}
-  void set_time_step(double time_step) { time_step_ = time_step; }
+  /// `time_step` Δt > 0 in s; `elastic` must outlive the law.
+  IncrementalElastic(const LinearElastic& elastic, double time_step) : elastic_(elastic), time_step_(time_step) {}
 
   void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress, Mat6& tangent) const override;
   double bulk_modulus() const override { return elastic_.bulk_modulus() * time_step_; }
@@ -139,7 +140,7 @@ public:
 
 private:
   const LinearElastic& elastic_;
-  double time_step_ = 1.0; ///< s
+  double time_step_; ///< s
 };
 
 /// Hansel-Spittel flow stress (isothermal use: T is a constant of the scene):

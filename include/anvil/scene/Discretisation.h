@@ -19,7 +19,9 @@
 namespace anvil::scene {
 
 struct Discretisation {
-  fem::ElementLaws element_laws;                  ///< per element
+  /// Per element, its body's law as the case gives it (an elastic body in
+  /// velocity form is solved with the law of each increment's Δt instead).
+  fem::ElementLaws element_laws;
   ImposedConditions imposed;                      ///< on the dofs of the whole mesh
   std::vector<material::PointState> point_states; ///< per element: T, ε̄ and carried σ of the run state
   /// Die contact and body-pair contact: the Newton terms of the increment

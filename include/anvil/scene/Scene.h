@@ -23,10 +23,11 @@ struct Body {
   std::string name;
   std::string material_file;
   std::unique_ptr<material::Material> law;
-  /// An elastic body solved with flowing ones or over time: its law in
-  /// velocity form (null otherwise). Its Δt is that of the increment being
-  /// solved: solve_increment sets it before each solve.
-  std::unique_ptr<material::IncrementalElastic> increment_law;
+  /// An elastic body solved with flowing ones or over time: its unknown is
+  /// a velocity, each increment applies its law in velocity form over that
+  /// increment's Δt (material::IncrementalElastic), and it carries its
+  /// stress from one increment to the next (RunState::elastic_stress).
+  bool velocity_form = false;
   material::PointState state;                ///< the body's temperature (isothermal)
   std::vector<BoundaryCondition> conditions; ///< the case's conditions on this body
   /// What they impose on the mesh as the case builds it (faces chosen on the
@@ -34,11 +35,6 @@ struct Body {
   ImposedConditions initial_imposed;
   double initial_volume = 0.0; ///< mm³, of the mesh as built
   double remesh_size = 0.0;    ///< mm, target edge of a remesh: the case's, else the mean boundary edge as built
-
-  /// The law its elements are solved with.
-  const material::Material& element_law() const {
-    return increment_law ? static_cast<const material::Material&>(*increment_law) : *law;
-  }
 };
 
 /// A load surface of loads.csv: a die, or a velocity condition (a plate).

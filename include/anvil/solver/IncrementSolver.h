@@ -47,6 +47,7 @@ struct NewtonReport {
 
 /// What one increment solves for, besides the unknowns.
 struct IncrementProblem {
+  const mesh::TetMesh& mesh;                       ///< the solver's elements at the geometry of the increment
   const fem::ElementLaws& laws;                    ///< per element
   const std::vector<material::PointState>& states; ///< per element; empty = default state
   const Eigen::VectorXd& nodal_forces;             ///< external nodal forces (N), 4 × nodes
@@ -58,7 +59,9 @@ struct IncrementProblem {
 
 class IncrementSolver {
 public:
-  /// `prescribed` marks dofs (4 × nodes, see DofMap) whose values are imposed.
+  /// For the elements of `mesh` (the problems it solves carry the mesh, its
+  /// nodes where the increment starts); `prescribed` marks dofs (4 × nodes,
+  /// see DofMap) whose values are imposed.
   IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, const LinearSolverSettings& linear,
                   Timers& timers);
 
@@ -66,18 +69,18 @@ public:
   /// as given), starting from their current values.
   NewtonReport solve(const IncrementProblem& problem, const NewtonSettings& settings, fem::BodyUnknowns& unknowns);
   /// One body of one law, without contact: `nodal_forces` are external nodal forces (N), 4 × nodes.
-  NewtonReport solve(const material::Material& law, const std::vector<material::PointState>& states,
-                     const Eigen::VectorXd& nodal_forces, const fem::BodyForce& body_force,
-                     const NewtonSettings& settings, fem::BodyUnknowns& unknowns) {
-    const fem::ElementLaws laws(mesh_.tets.size(), &law);
-    return solve(IncrementProblem{laws, states, nodal_forces, body_force, {}}, settings, unknowns);
+  NewtonReport solve(const mesh::TetMesh& mesh, const material::Material& law,
+                     const std::vector<material::PointState>& states, const Eigen::VectorXd& nodal_forces,
+                     const fem::BodyForce& body_force, const NewtonSettings& settings, fem::BodyUnknowns& unknowns) {
+    const fem::ElementLaws laws(mesh.tets.size(), &law);
+    return solve(IncrementProblem{mesh, laws, states, nodal_forces, body_force, {}}, settings, unknowns);
   }
 
   /// Residual of the last evaluation, 4 × nodes: at prescribed dofs it is the
   /// reaction (N) that the constraint exerts, with the sign of an internal force.
   const Eigen::VectorXd& residual() const { return residual_; }
-  const fem::DofMap& dofs() const { return dofs_; }
-  int free_count() const { return dofs_.free_count(); }
+  const fem::DofMap& dofs() const { return assembler_.dofs(); }
+  int free_count() const { return dofs().free_count(); }
   const LinearSolver& linear_solver() const { return linear_solver_; }
   void restart_linear_solver() { linear_solver_.restart(); } ///< see LinearSolver::restart
 
@@ -93,9 +96,6 @@ private:
   /// norm and the applied load norm.
   double force_scale(const IncrementProblem& problem) const;
 
-  const mesh::TetMesh& mesh_;
-  std::vector<char> prescribed_;
-  fem::DofMap dofs_;
   fem::Assembler assembler_;
   LinearSolver linear_solver_;
   Timers& timers_;
