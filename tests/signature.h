@@ -31,7 +31,7 @@ struct Row {
   double volume = 0.0;       ///< mm³, all bodies
   double max_strain = 0.0;   ///< largest ε̄
   int newton = 0;            ///< Newton iterations of the increment
-  std::vector<double> loads; ///< |F| (N) per surface, in `Signature::surfaces` order
+  std::vector<double> loads; ///< press load |Fz| (N) per surface, in `Signature::surfaces` order
 };
 
 struct Signature {
@@ -51,7 +51,7 @@ inline std::vector<std::string> split(const std::string& line) {
 inline Signature of_run(const std::string& directory) {
   Signature sig;
   // loads.csv: increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N
-  std::map<int, std::map<std::string, std::pair<double, double>>> loads; // increment → surface → (stroke, |F|)
+  std::map<int, std::map<std::string, std::pair<double, double>>> loads; // increment → surface → (stroke, |Fz|)
   std::ifstream csv(directory + "/loads.csv");
   std::string line;
   std::getline(csv, line);
@@ -59,7 +59,7 @@ inline Signature of_run(const std::string& directory) {
     const std::vector<std::string> f = split(line);
     if (f.size() != 7) throw anvil::InputError(directory + "/loads.csv: a row without 7 fields: " + line);
     if (std::find(sig.surfaces.begin(), sig.surfaces.end(), f[2]) == sig.surfaces.end()) sig.surfaces.push_back(f[2]);
-    const double force = std::hypot(std::stod(f[4]), std::stod(f[5]), std::stod(f[6]));
+    const double force = std::abs(std::stod(f[6])); // the press load (LoadRecord::press_load)
     loads[std::stoi(f[0])][f[2]] = {std::stod(f[3]), force};
   }
   // summary.json: "iterations_per_increment": {"newton": [n1, n2, ...]

@@ -13,29 +13,48 @@
 namespace anvil::fem {
 namespace {
 
-/// Greedy colouring: each element takes the lowest colour not used at its nodes.
-std::vector<std::vector<int>> colour_elements(const mesh::TetMesh& mesh) {
-  constexpr int kWords = 8; // up to 512 colours; meshes need a few tens
-  std::vector<std::uint64_t> used(static_cast<std::size_t>(mesh.node_count()) * kWords, 0);
-  std::vector<std::vector<int>> colours;
-  for (int e = 0; e < mesh.tet_count(); ++e) {
-    int colour = 0;
-    for (int w = 0; w < kWords; ++w) {
+/// Consecutive elements [first, end) assembled in order by one task.
+/// Chunks of `size` consecutive elements, coloured greedily (each takes the
+/// lowest colour not used at its nodes) so that no two chunks of a colour
+/// share a node. Empty when more than 512 colours would be needed.
+std::vector<std::vector<ElementChunk>> colour_chunks(const std::vector<mesh::Tet>& tets, int node_count, int size) {
+  constexpr int kWords = 8; // up to 512 colours
+  std::vector<std::uint64_t> used(static_cast<std::size_t>(node_count) * kWords, 0);
+  std::vector<std::vector<ElementChunk>> colours;
+  const int count = static_cast<int>(tets.size());
+  for (int first = 0; first < count; first += size) {
+    const int end = std::min(first + size, count);
+    int colour = -1;
+    for (int w = 0; w < kWords && colour < 0; ++w) {
       std::uint64_t taken = 0;
-      for (int v : mesh.tets[e])
-        taken |= used[static_cast<std::size_t>(v) * kWords + w];
-      if (~taken != 0) {
-        colour = 64 * w + __builtin_ctzll(~taken);
-        break;
-      }
-      colour = -1;
+      for (int e = first; e < end; ++e)
+        for (int v : tets[e])
+          taken |= used[static_cast<std::size_t>(v) * kWords + w];
+      if (~taken != 0) colour = 64 * w + __builtin_ctzll(~taken);
     }
-    ANVIL_ASSERT(colour >= 0);
-    for (int v : mesh.tets[e])
-      used[static_cast<std::size_t>(v) * kWords + colour / 64] |= std::uint64_t{1} << (colour % 64);
+    if (colour < 0) return {};
+    for (int e = first; e < end; ++e)
+      for (int v : tets[e])
+        used[static_cast<std::size_t>(v) * kWords + colour / 64] |= std::uint64_t{1} << (colour % 64);
     if (colour >= static_cast<int>(colours.size())) colours.resize(static_cast<std::size_t>(colour) + 1);
-    colours[colour].push_back(e);
+    colours[colour].push_back({first, end});
   }
+  return colours;
+}
+
+/// The largest chunks that still leave every thread work in each colour: a
+/// chunk's elements share nodes, so their matrix rows stay in cache while it
+/// is assembled. A mesh whose element order has no locality falls back to
+/// single elements (then it is the classic element colouring).
+std::vector<std::vector<ElementChunk>> chunk_colouring(const std::vector<mesh::Tet>& tets, int node_count) {
+  constexpr int kChunksPerColour = 16; // a few per thread, for load balance
+  for (int size : {256, 64, 16, 4}) {
+    std::vector<std::vector<ElementChunk>> colours = colour_chunks(tets, node_count, size);
+    const std::size_t chunks = (tets.size() + size - 1) / size;
+    if (!colours.empty() && chunks >= kChunksPerColour * colours.size()) return colours;
+  }
+  std::vector<std::vector<ElementChunk>> colours = colour_chunks(tets, node_count, 1);
+  ANVIL_ASSERT(!colours.empty() || tets.empty());
   return colours;
 }
 
@@ -49,9 +68,9 @@ void sort_unique(std::vector<std::vector<int>>& lists) {
 } // namespace
 
 Assembler::Assembler(const mesh::TetMesh& mesh, DofMap dofs)
-    : dofs_(std::move(dofs)), tets_(mesh.tets), colours_(colour_elements(mesh)), bubble_condensation_(mesh.tets.size()),
-      bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0), element_blocks_(mesh.tets.size()),
-      element_neighbours_(mesh.nodes.size()) {
+    : dofs_(std::move(dofs)), tets_(mesh.tets), colours_(chunk_colouring(mesh.tets, mesh.node_count())),
+      bubble_condensation_(mesh.tets.size()), bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0),
+      element_blocks_(mesh.tets.size()), element_neighbours_(mesh.nodes.size()) {
   ANVIL_ASSERT(dofs_.dof_count() == kDofsPerNode * mesh.node_count());
   for (const mesh::Tet& t : mesh.tets)
     for (int a : t)
@@ -157,46 +176,46 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
   }
   std::fill(bad_.begin(), bad_.end(), 0);
   double* values = tangent_.valuePtr();
-  for (const std::vector<int>& colour : colours_) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, colour.size(), 64), [&](const auto& range) {
+  for (const std::vector<ElementChunk>& colour : colours_) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, colour.size(), 1), [&](const auto& range) {
       MiniElementInput in;
       MiniElementSystem system;
-      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        const int e = colour[i];
-        const mesh::Tet& t = mesh.tets[e];
-        for (int a = 0; a < 4; ++a) {
-          in.vertices[a] = mesh.nodes[t[a]];
-          in.nodal_velocity[a] = unknowns.nodal.segment<3>(kDofsPerNode * t[a]);
-          in.nodal_pressure[a] = unknowns.nodal[kDofsPerNode * t[a] + 3];
-        }
-        in.bubble_velocity = unknowns.bubble.segment<3>(3 * e);
-        in.state = states.empty() ? material::PointState{} : states[e];
-        if (!mini_element(in, *laws[e], with_tangent, body_force, system)) {
-          bad_[e] = 1;
-          bubble_sq_[e] = 0.0;
-          continue;
-        }
-        bubble_sq_[e] = system.bubble_residual_sq;
-        bubble_condensation_[e].leftCols<16>() = system.bubble_gain;
-        bubble_condensation_[e].col(16) = system.bubble_residual_solved;
-        for (int a = 0; a < 4; ++a)
-          result.residual.segment<4>(kDofsPerNode * t[a]) += system.residual.segment<4>(4 * a);
-        if (!with_tangent) continue;
-        if (system.viscosity > 0.0)
-          for (int a = 0; a < 4; ++a)
-            pressure_mass_[t[a]] += 0.25 * system.volume / system.viscosity;
-        // Every entry, prescribed ones too: finish_tangent() takes those out.
-        const std::array<int, 16>& blocks = element_blocks_[e];
-        for (int b = 0; b < 4; ++b) {
-          const int row_length = kDofsPerNode * static_cast<int>(neighbours_[t[b]].size());
+      for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk)
+        for (int e = colour[chunk].first; e < colour[chunk].end; ++e) {
+          const mesh::Tet& t = mesh.tets[e];
           for (int a = 0; a < 4; ++a) {
-            double* block = values + blocks[4 * b + a]; // row 4 t[b], column 4 t[a]
-            for (int d = 0; d < 4; ++d)
-              for (int c = 0; c < 4; ++c)
-                block[d * row_length + c] += system.tangent(4 * b + d, 4 * a + c);
+            in.vertices[a] = mesh.nodes[t[a]];
+            in.nodal_velocity[a] = unknowns.nodal.segment<3>(kDofsPerNode * t[a]);
+            in.nodal_pressure[a] = unknowns.nodal[kDofsPerNode * t[a] + 3];
+          }
+          in.bubble_velocity = unknowns.bubble.segment<3>(3 * e);
+          in.state = states.empty() ? material::PointState{} : states[e];
+          if (!mini_element(in, *laws[e], with_tangent, body_force, system)) {
+            bad_[e] = 1;
+            bubble_sq_[e] = 0.0;
+            continue;
+          }
+          bubble_sq_[e] = system.bubble_residual_sq;
+          bubble_condensation_[e].leftCols<16>() = system.bubble_gain;
+          bubble_condensation_[e].col(16) = system.bubble_residual_solved;
+          for (int a = 0; a < 4; ++a)
+            result.residual.segment<4>(kDofsPerNode * t[a]) += system.residual.segment<4>(4 * a);
+          if (!with_tangent) continue;
+          if (system.viscosity > 0.0)
+            for (int a = 0; a < 4; ++a)
+              pressure_mass_[t[a]] += 0.25 * system.volume / system.viscosity;
+          // Every entry, prescribed ones too: finish_tangent() takes those out.
+          const std::array<int, 16>& blocks = element_blocks_[e];
+          for (int b = 0; b < 4; ++b) {
+            const int row_length = kDofsPerNode * static_cast<int>(neighbours_[t[b]].size());
+            for (int a = 0; a < 4; ++a) {
+              double* block = values + blocks[4 * b + a]; // row 4 t[b], column 4 t[a]
+              for (int d = 0; d < 4; ++d)
+                for (int c = 0; c < 4; ++c)
+                  block[d * row_length + c] += system.tangent(4 * b + d, 4 * a + c);
+            }
           }
         }
-      }
     });
   }
   for (std::size_t e = 0; e < bad_.size(); ++e) {

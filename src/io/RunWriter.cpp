@@ -8,6 +8,7 @@
 #include "anvil/material/mandel.h"
 #include "anvil/mesh/tet_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numeric>
@@ -272,6 +273,18 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
   json.key("dies").begin_array();
   for (std::size_t d = 0; d < scene.dies.size(); ++d)
     json.begin_object().member("name", scene.dies[d].name).member("stroke_mm", state.dies[d].stroke).end_object();
+  // The press load (along z, LoadRecord::press_load) of each load surface: its peak and its last value.
+  json.end_array().key("press_loads_N").begin_array();
+  for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+    double peak = 0.0, last_load = 0.0;
+    for (const scene::LoadRecord& r : state.loads)
+      if (r.surface == static_cast<int>(s)) peak = std::max(peak, r.press_load()), last_load = r.press_load();
+    json.begin_object()
+        .member("surface", scene.surfaces[s].name)
+        .member("peak", peak)
+        .member("last", last_load)
+        .end_object();
+  }
   json.end_array().key("effects").begin_array();
   for (const std::string& effect : scene.effects)
     json.value(effect);

@@ -14,14 +14,14 @@ std::string write_load_plot(const std::string& directory, const std::string& tit
   std::map<int, double> press; // increment → press stroke
   for (const scene::LoadRecord& r : loads)
     press[r.increment] = std::max(press[r.increment], r.stroke);
-  // One data block per surface (gnuplot's "index"), stroke and |F| in kN.
+  // One data block per surface (gnuplot's "index"), stroke and press load in kN.
   const std::string data = directory + "/loads.png.dat", png = directory + "/loads.png";
   {
     std::ofstream out(data);
     out.precision(10);
     for (std::size_t s = 0; s < surfaces.size(); ++s) {
       for (const scene::LoadRecord& r : loads)
-        if (r.surface == static_cast<int>(s)) out << press[r.increment] << " " << r.force.norm() / 1e3 << "\n";
+        if (r.surface == static_cast<int>(s)) out << press[r.increment] << " " << r.press_load() / 1e3 << "\n";
       out << "\n\n";
     }
     if (!out) return "cannot write " + data;
@@ -29,7 +29,7 @@ std::string write_load_plot(const std::string& directory, const std::string& tit
   std::ostringstream script;
   script << "set terminal pngcairo size 900,600 noenhanced\nset output '" << png << ".tmp'\n"
          << "set title 'Press load against stroke: " << title << "'\nset xlabel 'press stroke (mm)'\n"
-         << "set ylabel 'load |F| (kN)'\nset grid\nset key top left\nplot ";
+         << "set ylabel 'press load Fz (kN)'\nset grid\nset key top left\nplot ";
   for (std::size_t s = 0; s < surfaces.size(); ++s)
     script << (s ? ", " : "") << "'" << data << "' index " << s << " using 1:2 with linespoints pointsize 0.5 title '"
            << surfaces[s] << "'";

@@ -13,15 +13,14 @@ namespace {
 /// s = ∂φ/∂ε̇ = 2η e with e = dev ε̇, η = K (√3 ε̄̇_r)^(m−1),
 /// ∂s/∂ε̇ = 2η [P + (m−1)(2/3) e⊗e / ε̄̇_r²]. Shared by every viscoplastic law.
 void norton_hoff_stress(double consistency, double sensitivity, double regularisation_rate, const Vec6& strain_rate,
-                        Vec6& stress, Mat6& tangent) {
+                        Vec6& stress, J2Tangent& tangent) {
   const Vec6 e = deviator(strain_rate);
   const double rate_sq = 2.0 / 3.0 * e.squaredNorm() + regularisation_rate * regularisation_rate;
-  const double eta = consistency * std::pow(3.0 * rate_sq, 0.5 * (sensitivity - 1.0));
-  static const Mat6 projector = deviatoric_projector();
+  const bool linear = sensitivity == 1.0;
+  const double eta = linear ? consistency : consistency * std::pow(3.0 * rate_sq, 0.5 * (sensitivity - 1.0));
   stress = 2.0 * eta * e;
-  tangent = 2.0 * eta * projector;
-  if (sensitivity != 1.0 && rate_sq > 0.0)
-    tangent.noalias() += (2.0 * eta * (sensitivity - 1.0) * 2.0 / 3.0 / rate_sq) * (e * e.transpose());
+  tangent.two_eta = 2.0 * eta;
+  tangent.beta = !linear && rate_sq > 0.0 ? 2.0 * eta * (sensitivity - 1.0) * 2.0 / 3.0 / rate_sq : 0.0;
 }
 
 double norton_hoff_viscosity(double consistency, double sensitivity, double regularisation_rate,
@@ -45,7 +44,7 @@ double NortonHoff::viscosity(double equivalent_rate) const {
   return norton_hoff_viscosity(consistency_, sensitivity_, regularisation_rate_, equivalent_rate);
 }
 
-void NortonHoff::deviatoric_stress(const Vec6& strain_rate, const PointState&, Vec6& stress, Mat6& tangent) const {
+void NortonHoff::deviatoric_stress(const Vec6& strain_rate, const PointState&, Vec6& stress, J2Tangent& tangent) const {
   norton_hoff_stress(consistency_, sensitivity_, regularisation_rate_, strain_rate, stress, tangent);
 }
 
@@ -65,11 +64,10 @@ LinearElastic::LinearElastic(double young_modulus, double poisson_ratio)
   if (!(poisson_ratio > -1.0 && poisson_ratio <= 0.5)) throw InputError("linear elastic: nu must be in (-1, 0.5]");
 }
 
-void LinearElastic::deviatoric_stress(const Vec6& strain, const PointState&, Vec6& stress, Mat6& tangent) const {
-  const double shear = shear_modulus();
-  static const Mat6 projector = deviatoric_projector();
-  stress = 2.0 * shear * deviator(strain);
-  tangent = 2.0 * shear * projector;
+void LinearElastic::deviatoric_stress(const Vec6& strain, const PointState&, Vec6& stress, J2Tangent& tangent) const {
+  tangent.two_eta = 2.0 * shear_modulus();
+  tangent.beta = 0.0;
+  stress = tangent.two_eta * deviator(strain);
 }
 
 double LinearElastic::bulk_modulus() const {
@@ -78,10 +76,10 @@ double LinearElastic::bulk_modulus() const {
 }
 
 void IncrementalElastic::deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
-                                           Mat6& tangent) const {
+                                           J2Tangent& tangent) const {
   elastic_.deviatoric_stress(strain_rate, state, stress, tangent);
   stress = time_step_ * stress + deviator(state.elastic_stress);
-  tangent *= time_step_;
+  tangent.two_eta *= time_step_;
 }
 
 std::string LinearElastic::describe() const {
@@ -113,7 +111,7 @@ double HanselSpittel::secant_viscosity(double equivalent_rate, const PointState&
 }
 
 void HanselSpittel::deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
-                                      Mat6& tangent) const {
+                                      J2Tangent& tangent) const {
   // K(ε̄, T) is constant within an increment (ε̄ is updated after it), so the
   // potential, its stress and tangent are those of Norton-Hoff.
   norton_hoff_stress(consistency(state), rate_sensitivity(state), regularisation_rate_, strain_rate, stress, tangent);

@@ -3,6 +3,7 @@
 #include "anvil/scene/Discretisation.h"
 #include "anvil/scene/Increment.h"
 
+#include <cmath>
 #include <limits>
 
 namespace anvil::remesh {
@@ -16,7 +17,7 @@ double next_increment_load(const scene::Scene& scene, const scene::RunState& sta
   for (int k = 0; k < solves; ++k) {
     scene::IncrementOutcome inc = scene::solve_increment(scene, disc, copy, step, timers, scene::ContactEvents::ignore);
     if (!inc.converged()) return std::numeric_limits<double>::quiet_NaN();
-    load = inc.forces.front().norm();
+    load = std::abs(inc.forces.front().z()); // the press load, as LoadRecord::press_load
     copy.unknowns = std::move(inc.unknowns);
   }
   return load;

@@ -130,7 +130,7 @@ void log_progress(const Scene& scene, const Discretisation& disc, const RunState
   log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN  newton %zu%s  contact %d  volume %+.3f%% "
             "(%.3f%% inside dies)  left ~%s",
             state.increment, state.time, lead.stroke, inc.time_step, scene.surfaces[lead.surface].name.c_str(),
-            lead.force.norm() / 1e3, inc.report.iterations.size(), krylov.c_str(), contacts,
+            lead.press_load() / 1e3, inc.report.iterations.size(), krylov.c_str(), contacts,
             100.0 * (mesh::volume(state.mesh) / state.volume.initial - 1.0),
             100.0 * std::accumulate(state.inside_dies.begin(), state.inside_dies.end(), 0.0) / state.volume.initial,
             std::isnan(time_left) ? "?" : clock_text(time_left).c_str());

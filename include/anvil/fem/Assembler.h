@@ -3,10 +3,11 @@
 //   [ B −C  ] [Δp] = − [r_p]      (DESIGN §2), over every nodal dof.
 // The matrix is compressed sparse rows with 32-bit indices, the layout of a
 // PETSc AIJ matrix, which wraps it without a copy. Its pattern is 4×4 blocks
-// of node adjacency, built once per mesh and contact-coupling set; an element
-// colouring (no two elements of a colour share a node) lets assembly write
-// the values in place, colour by colour with TBB, so the result does not
-// depend on the thread count. Prescribed dofs are decoupled rows and columns
+// of node adjacency, built once per mesh and contact-coupling set. Elements
+// are assembled in chunks of consecutive elements (their rows stay in cache);
+// a colouring of the chunks (no two chunks of a colour share a node) lets
+// assembly write the values in place, colour by colour with TBB, each chunk
+// in element order, so the result does not depend on the thread count. Prescribed dofs are decoupled rows and columns
 // with a scaled identity on the diagonal (DofMap).
 #pragma once
 #include "anvil/fem/DofMap.h"
@@ -24,6 +25,11 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 /// The law of each element: bodies of different materials are solved in one
 /// system, each element with its own body's law.
 using ElementLaws = std::vector<const material::Material*>;
+
+/// Elements first, …, end − 1: assembled in order by one task.
+struct ElementChunk {
+  int first, end;
+};
 
 /// The unknowns of one body.
 struct BodyUnknowns {
@@ -79,7 +85,6 @@ public:
   /// diagonal of the velocity rows, or of the pressure rows, so the rows are
   /// neither tiny nor huge for a solver.
   void finish_tangent();
-  int colour_count() const { return static_cast<int>(colours_.size()); }
   const DofMap& dofs() const { return dofs_; }
 
 private:
@@ -92,7 +97,7 @@ private:
   std::vector<mesh::Tet> tets_; ///< the elements the pattern is built on
   SparseMatrix tangent_;
   Eigen::VectorXd pressure_mass_;
-  std::vector<std::vector<int>> colours_; ///< element indices per colour
+  std::vector<std::vector<ElementChunk>> colours_; ///< the chunks of each colour
   /// Per element: K_bb⁻¹ [K_bl G_b] (3×16) and K_bb⁻¹ r_b (3).
   std::vector<Eigen::Matrix<double, 3, 17>> bubble_condensation_;
   /// Per element, from the last assemble(): inverted/flat flag and |r_b|²

@@ -19,6 +19,16 @@ struct PointState {
   Vec6 elastic_stress = Vec6::Zero();
 };
 
+/// The tangent ds/dε of a J2 law: s depends on ε through e = dev ε only and
+/// points along e (s = 2η(ε̄̇) e, plus a carried stress for elastic memory),
+/// so that
+///   ds/dε = 2η P + β e⊗e      (P the deviatoric projector, Mandel).
+/// Every law here is of this kind; assembly uses the form, not a 6×6 matrix.
+struct J2Tangent {
+  double two_eta = 0.0; ///< 2η: MPa·s (MPa for elastic laws)
+  double beta = 0.0;    ///< of the rank-one term, MPa·s³ (0 for linear laws)
+};
+
 /// Deviatoric stress s and its tangent ds/dε for a strain rate ε (Mandel,
 /// any trace: the law applies it to dev ε). s derives from a convex potential,
 /// so the tangent is symmetric positive semi-definite.
@@ -26,9 +36,10 @@ class Material {
 public:
   virtual ~Material() = default;
 
-  /// s (MPa) and tangent (MPa·s) at strain rate ε (1/s); for elastic laws ε is
-  /// the small strain (-) and the tangent is in MPa.
-  virtual void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress, Mat6& tangent) const = 0;
+  /// s (MPa) and tangent at strain rate ε (1/s); for elastic laws ε is the
+  /// small strain (-) and 2η is twice the shear modulus (MPa).
+  virtual void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress,
+                                 J2Tangent& tangent) const = 0;
 
   /// Bulk modulus κ (MPa, or MPa·s): the pressure equation is
   /// div v + p/κ = 0. Infinite for incompressible laws.
@@ -73,7 +84,8 @@ public:
   /// that rigid zones have a finite viscosity).
   NortonHoff(double consistency, double sensitivity, double regularisation_rate);
 
-  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress, Mat6& tangent) const override;
+  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
+                         J2Tangent& tangent) const override;
   std::string describe() const override;
   bool is_linear() const override { return sensitivity_ == 1.0; }
   double secant_viscosity(double equivalent_rate, const PointState&) const override {
@@ -101,7 +113,7 @@ public:
   /// E in MPa, -1 < ν ≤ 0.5.
   LinearElastic(double young_modulus, double poisson_ratio);
 
-  void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress, Mat6& tangent) const override;
+  void deviatoric_stress(const Vec6& strain, const PointState& state, Vec6& stress, J2Tangent& tangent) const override;
   double bulk_modulus() const override;
   bool is_elastic() const override { return true; }
   bool is_linear() const override { return true; }
@@ -130,7 +142,8 @@ public:
   /// `time_step` Δt > 0 in s; `elastic` must outlive the law.
   IncrementalElastic(const LinearElastic& elastic, double time_step) : elastic_(elastic), time_step_(time_step) {}
 
-  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress, Mat6& tangent) const override;
+  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
+                         J2Tangent& tangent) const override;
   double bulk_modulus() const override { return elastic_.bulk_modulus() * time_step_; }
   bool is_linear() const override { return true; }
   double secant_viscosity(double, const PointState&) const override { return elastic_.shear_modulus() * time_step_; }
@@ -157,7 +170,8 @@ public:
   };
   HanselSpittel(const Coefficients& c, double minimum_strain, double regularisation_rate);
 
-  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress, Mat6& tangent) const override;
+  void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
+                         J2Tangent& tangent) const override;
   std::string describe() const override;
   bool is_linear() const override { return false; }
   /// ε̄ matters only through m2, m4, m5, m7; a steady-state card (all zero)

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -31,6 +32,12 @@ struct LoadRecord {
   int surface;           ///< index into the run's load surfaces (dies, then velocity plates)
   double stroke;         ///< mm
   Eigen::Vector3d force; ///< N, exerted by the body on the surface
+
+  /// The press load (N): the force along the press axis z (DESIGN §1), as
+  /// the press's gauge reads it. A symmetry model's dies also carry lateral
+  /// friction forces that the whole part would balance: they are in `force`
+  /// only.
+  double press_load() const { return std::abs(force.z()); }
 };
 
 /// Volume budget (mm³): where volume went, by cause.
