@@ -23,9 +23,13 @@ usage:
                                  case's output.directory, else out/<case name>)
   anvil run CASE.yaml --verbose  also show each Newton iteration and the mesh
                                  quality on the terminal (always in anvil.log)
-  anvil run CASE.yaml --resume DIR
+  anvil run CASE.yaml --resume DIR [--allow-changes]
                                  continue a stopped or killed run from the last
-                                 checkpoint in DIR (DIR/checkpoint.h5)
+                                 checkpoint in DIR (DIR/checkpoint.h5); a case,
+                                 material card, mesh or die changed since is
+                                 refused unless --allow-changes (then the log
+                                 lists the changes); stop criteria, output and
+                                 linear-solver keys may change freely
   anvil run CASE.yaml --set KEY=VALUE ...
                                  change a key of the case file for this run,
                                  e.g. --set time.stroke_increment=0.1
@@ -94,6 +98,8 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) return usage_error("--resume needs the directory of the run to continue");
       options.output_directory = argv[++i];
       options.resume = true;
+    } else if (arg == "--allow-changes") {
+      options.allow_changes = true;
     } else if (arg == "--set") {
       if (i + 1 >= argc) return usage_error("--set needs KEY=VALUE, e.g. --set time.stroke_increment=0.1");
       overrides.emplace_back(argv[++i]);
@@ -121,10 +127,14 @@ int main(int argc, char** argv) {
     petsc_arguments.push_back(nullptr);
     char** petsc_argv = petsc_arguments.data();
     anvil::solver::PetscSession petsc(petsc_argc, petsc_argv);
-    anvil::scene::run(c, options);
+    const anvil::scene::RunEnd end = anvil::scene::run(c, options);
     for (const std::string& unused : anvil::solver::PetscSession::unused_options())
       std::fprintf(stderr, "anvil: warning: PETSc option %s was not used by the solver of this run (misspelt?)\n",
                    unused.c_str());
+    if (!end.complete) {
+      std::fprintf(stderr, "anvil: run stopped: %s\n", end.stop.c_str());
+      return 4;
+    }
     return 0;
   } catch (const anvil::InputError& e) {
     std::fprintf(stderr, "anvil: input error: %s\n", e.what());

@@ -17,8 +17,15 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 
 namespace anvil::die {
 namespace {
@@ -65,8 +72,9 @@ public:
     // is not, and the offset direction is the normal of the surface there.
     // The side (sign) comes from the facet the closest point belongs to.
     const double side = offset.dot(facet_normal) >= 0.0 ? 1.0 : -1.0;
-    if (distance < 1e-12 * (1.0 + x.norm())) return {point, facet_normal, 0.0};
-    return {point, side * offset / distance, side * distance};
+    if (distance < 1e-12 * (1.0 + x.norm())) return {point, facet_normal, 0.0, true};
+    const bool on_facet = std::abs(offset.dot(facet_normal)) >= (1.0 - 1e-9) * distance;
+    return {point, side * offset / distance, side * distance, on_facet};
   }
 
   const SurfaceTriangles& triangles() const override { return triangles_; }
@@ -80,16 +88,61 @@ private:
   std::string description_;
 };
 
+/// Refuses a vertex that is not a finite number, read from the file's own
+/// numbers: CGAL's reader merges vertices through comparisons that NaN
+/// breaks, so after it a NaN vertex may sit anywhere.
+void check_finite_vertices(const std::string& path, const std::string& at) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto refuse = [&](const std::string& where, const std::string& value) {
+    throw InputError(at + ": " + where + ": vertex coordinate '" + value + "' is not a finite number");
+  };
+  if (bytes.size() >= 84) {
+    std::uint32_t count = 0;
+    std::memcpy(&count, bytes.data() + 80, 4);
+    if (bytes.size() == 84 + 50 * static_cast<std::size_t>(count)) { // binary: 50 bytes a facet
+      for (std::size_t f = 0; f < count; ++f)
+        for (int k = 3; k < 12; ++k) { // the normal (floats 0-2) is not used
+          float value = 0.0f;
+          std::memcpy(&value, bytes.data() + 84 + 50 * f + 4 * k, 4);
+          if (!std::isfinite(value))
+            refuse("facet " + std::to_string(f + 1) + ", vertex " + std::to_string(k / 3), std::to_string(value));
+        }
+      return;
+    }
+  }
+  std::istringstream text(bytes);
+  int line_number = 0;
+  for (std::string line; std::getline(text, line);) {
+    ++line_number;
+    std::istringstream words(line);
+    std::string word;
+    if (!(words >> word) || word != "vertex") continue;
+    for (int c = 0; c < 3 && words >> word; ++c) {
+      char* end = nullptr;
+      const double value = std::strtod(word.c_str(), &end);
+      if (end == word.c_str() || *end != '\0' || !std::isfinite(value))
+        refuse("line " + std::to_string(line_number), word);
+    }
+  }
+}
+
 } // namespace
 
 std::unique_ptr<DieSurface> read_stl_surface(const std::string& path, const std::string& source,
                                              const Eigen::Vector3d& offset) {
   const std::string at = source + ": STL die '" + path + "'";
   if (!std::filesystem::exists(path)) throw InputError(at + ": file not found");
+  check_finite_vertices(path, at);
   std::vector<Point3> points;
   std::vector<std::array<std::size_t, 3>> triangles;
   if (!CGAL::IO::read_polygon_soup(path, points, triangles) || triangles.empty())
     throw InputError(at + ": not a readable STL surface (ASCII or binary) with at least one facet");
+  for (std::size_t v = 0; v < points.size(); ++v)
+    if (!std::isfinite(points[v].x()) || !std::isfinite(points[v].y()) || !std::isfinite(points[v].z()))
+      throw InputError(at + ": vertex " + std::to_string(v + 1) + " is not a finite number (" +
+                       std::to_string(points[v].x()) + ", " + std::to_string(points[v].y()) + ", " +
+                       std::to_string(points[v].z()) + ")");
   const Vector3 shift(offset.x(), offset.y(), offset.z());
   for (Point3& p : points)
     p = p + shift;

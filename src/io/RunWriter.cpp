@@ -53,7 +53,7 @@ bool RunWriter::write(const scene::Scene& scene, const scene::Discretisation& di
   const bool checkpoint_due = scene.input.time.enabled && every > 0 && (force || state.increment % every == 0);
   if (!checkpoint_due || last_checkpoint_ == state.increment) return false;
   Timers::Scope scope(timers, "checkpoint");
-  scene::write_checkpoint(directory_ + "/checkpoint.h5", state);
+  scene::write_checkpoint(directory_ + "/checkpoint.h5", state, scene.fingerprint);
   last_checkpoint_ = state.increment;
   return true;
 }
@@ -67,10 +67,9 @@ void RunWriter::write_loads(const scene::Scene& scene, const scene::RunState& st
     write_file_atomically(path, whole.str());
     loads_started_ = true;
   } else if (loads_written_ < state.loads.size()) {
-    std::ofstream out(path, std::ios::app);
-    put_load_rows(out, scene, state.loads, loads_written_);
-    out.flush();
-    if (!out) throw RunError("cannot append to " + path);
+    std::ostringstream rows;
+    put_load_rows(rows, scene, state.loads, loads_written_);
+    append_whole(path, rows.str());
   }
   loads_written_ = state.loads.size();
 }

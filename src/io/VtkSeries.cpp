@@ -6,8 +6,10 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
+#include <vtkObject.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkUnstructuredGrid.h>
@@ -37,7 +39,10 @@ vtkNew<vtkDoubleArray> to_vtk(const Field& f, std::size_t count) {
 } // namespace
 
 VtkSeries::VtkSeries(std::string directory, std::string name)
-    : directory_(std::move(directory)), name_(std::move(name)) {}
+    : directory_(std::move(directory)), name_(std::move(name)) {
+  // VTK prints its warnings and errors on stderr; ours say what failed.
+  vtkObject::GlobalWarningDisplayOff();
+}
 
 void VtkSeries::write(int increment, double time, int body, const std::string& body_name, const mesh::TetMesh& mesh,
                       const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields) {
@@ -92,7 +97,15 @@ void VtkSeries::write_grid(int increment, double time, int part, const std::stri
   writer->SetCompressorTypeToZLib();
   writer->SetCompressionLevel(5);
   writer->SetHeaderTypeToUInt64();
-  if (writer->Write() == 0) throw RunError(path + ": VTK could not write the file");
+  // VTK reports a full disk through its error code, not always through Write().
+  if (writer->Write() == 0 || writer->GetErrorCode() != vtkErrorCode::NoError) {
+    const unsigned long code = writer->GetErrorCode();
+    discard_temporary(path);
+    throw RunError(path + ": cannot write the file: " +
+                   (code == vtkErrorCode::OutOfDiskSpaceError
+                        ? std::string("no space left on the disk")
+                        : std::string(vtkErrorCode::GetStringFromErrorCode(code))));
+  }
   commit_temporary(path);
 
   entries_.push_back({time, part, file});

@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
 
 namespace anvil::mesh {
@@ -17,6 +20,9 @@ class Tokens {
 public:
   explicit Tokens(const std::string& path) : path_(path), in_(path) {
     if (!in_) throw InputError(path + ": cannot open the mesh file");
+    std::error_code error;
+    bytes_ = static_cast<long>(std::filesystem::file_size(path, error));
+    if (error) bytes_ = 0;
   }
 
   bool at_end() { return !fill(); }
@@ -33,7 +39,18 @@ public:
     std::istringstream s(w);
     T value{};
     if (!(s >> value) || !s.eof()) fail(std::string("expected ") + what + ", found '" + w + "'");
+    if constexpr (std::is_floating_point_v<T>)
+      if (!std::isfinite(value)) fail(std::string("expected ") + what + ", found '" + w + "' (not finite)");
     return value;
+  }
+
+  /// A count of entries that follow: at least 0, and no more than the file's
+  /// bytes could hold (a damaged count must not allocate the machine away).
+  long count(const char* what) {
+    const long n = number<long>(what);
+    if (n < 0 || n > bytes_)
+      fail(std::string("expected ") + what + " between 0 and the file's size, found " + std::to_string(n));
+    return n;
   }
 
   /// Skips tokens up to and including `keyword`.
@@ -59,6 +76,7 @@ private:
 
   std::string path_;
   std::ifstream in_;
+  long bytes_ = 0;
   std::istringstream line_stream_;
   int line_ = 0;
 };
@@ -111,7 +129,7 @@ void read_gmsh2(Tokens& tokens, RawMesh& raw) {
     if (tokens.at_end()) return;
     const std::string section = tokens.word();
     if (section == "$Nodes") {
-      const long n = tokens.number<long>("a node count");
+      const long n = tokens.count("a node count");
       for (long i = 0; i < n; ++i) {
         const long id = tokens.number<long>("a node id");
         const double x = tokens.number<double>("x"), y = tokens.number<double>("y"), z = tokens.number<double>("z");
@@ -119,11 +137,11 @@ void read_gmsh2(Tokens& tokens, RawMesh& raw) {
       }
       tokens.skip_to("$EndNodes");
     } else if (section == "$Elements") {
-      const long n = tokens.number<long>("an element count");
+      const long n = tokens.count("an element count");
       for (long i = 0; i < n; ++i) {
         tokens.number<long>("an element id");
         const int type = tokens.number<int>("an element type");
-        const int tag_count = tokens.number<int>("a tag count");
+        const long tag_count = tokens.count("a tag count");
         int physical = 0;
         for (int t = 0; t < tag_count; ++t) {
           const int tag = tokens.number<int>("a tag");
@@ -157,34 +175,34 @@ void read_gmsh4(Tokens& tokens, RawMesh& raw) {
     if (section == "$Entities") {
       long counts[4];
       for (auto& c : counts)
-        c = tokens.number<long>("an entity count");
+        c = tokens.count("an entity count");
       for (int dim = 0; dim < 4; ++dim)
         for (long i = 0; i < counts[dim]; ++i) {
           const int tag = tokens.number<int>("an entity tag");
           for (int c = 0; c < (dim == 0 ? 3 : 6); ++c)
             tokens.number<double>("a bounding coordinate");
-          const long physical_count = tokens.number<long>("a physical tag count");
+          const long physical_count = tokens.count("a physical tag count");
           for (long p = 0; p < physical_count; ++p) {
             const int physical = tokens.number<int>("a physical tag");
             if (dim == 2 && p == 0) surface_physical[tag] = physical;
           }
           if (dim > 0) {
-            const long bounding = tokens.number<long>("a bounding entity count");
+            const long bounding = tokens.count("a bounding entity count");
             for (long b = 0; b < bounding; ++b)
               tokens.number<long>("a bounding entity tag");
           }
         }
       tokens.skip_to("$EndEntities");
     } else if (section == "$Nodes") {
-      const long blocks = tokens.number<long>("a block count");
-      tokens.number<long>("a node count");
+      const long blocks = tokens.count("a block count");
+      tokens.count("a node count");
       tokens.number<long>("a min node tag");
       tokens.number<long>("a max node tag");
       for (long b = 0; b < blocks; ++b) {
         tokens.number<int>("an entity dimension");
         tokens.number<int>("an entity tag");
         if (tokens.number<int>("the parametric flag") != 0) tokens.fail("parametric nodes are not supported");
-        const long n = tokens.number<long>("a node count");
+        const long n = tokens.count("a node count");
         std::vector<long> ids(static_cast<std::size_t>(n));
         for (auto& id : ids)
           id = tokens.number<long>("a node tag");
@@ -195,14 +213,14 @@ void read_gmsh4(Tokens& tokens, RawMesh& raw) {
       }
       tokens.skip_to("$EndNodes");
     } else if (section == "$Elements") {
-      const long blocks = tokens.number<long>("a block count");
+      const long blocks = tokens.count("a block count");
       for (int c = 0; c < 3; ++c)
         tokens.number<long>("an element count or tag");
       for (long b = 0; b < blocks; ++b) {
         tokens.number<int>("an entity dimension");
         const int entity = tokens.number<int>("an entity tag");
         const int type = tokens.number<int>("an element type");
-        const long n = tokens.number<long>("an element count");
+        const long n = tokens.count("an element count");
         const int node_count = type == 4 ? 4 : type == 2 ? 3 : type == 15 ? 1 : type == 1 ? 2 : -1;
         if (node_count < 0)
           tokens.fail("element type " + std::to_string(type) +
@@ -238,17 +256,17 @@ TetMesh read_gmsh(const std::string& path) {
   Tokens tokens(path);
   if (tokens.word() != "$MeshFormat") tokens.fail("expected $MeshFormat: not a Gmsh ASCII file");
   const std::string version = tokens.word();
+  const bool version_2 = version.rfind("2.2", 0) == 0, version_4 = version.rfind("4.1", 0) == 0;
+  if (!version_2 && !version_4) tokens.fail("Gmsh format " + version + " is not supported (2.2 or 4.1)");
   if (tokens.number<int>("the file type (0 = ASCII)") != 0)
     tokens.fail("binary Gmsh files are not supported; save as ASCII");
   tokens.number<int>("the data size");
   tokens.skip_to("$EndMeshFormat");
   RawMesh raw;
-  if (version.rfind("2.2", 0) == 0)
+  if (version_2)
     read_gmsh2(tokens, raw);
-  else if (version.rfind("4.1", 0) == 0)
-    read_gmsh4(tokens, raw);
   else
-    tokens.fail("Gmsh format " + version + " is not supported (2.2 or 4.1)");
+    read_gmsh4(tokens, raw);
   return raw.finish(path);
 }
 
@@ -264,14 +282,14 @@ TetMesh read_medit(const std::string& path) {
     } else if (keyword == "dimension") {
       if (tokens.number<int>("the dimension") != 3) tokens.fail("only 3D meshes are supported (Dimension 3)");
     } else if (keyword == "vertices") {
-      const long n = tokens.number<long>("a vertex count");
+      const long n = tokens.count("a vertex count");
       for (long i = 0; i < n; ++i) {
         const double x = tokens.number<double>("x"), y = tokens.number<double>("y"), z = tokens.number<double>("z");
         tokens.number<int>("a vertex reference");
         raw.add_node(i + 1, Point(x, y, z), tokens);
       }
     } else if (keyword == "triangles") {
-      const long n = tokens.number<long>("a triangle count");
+      const long n = tokens.count("a triangle count");
       for (long i = 0; i < n; ++i) {
         std::array<long, 3> v{};
         for (auto& x : v)
@@ -280,7 +298,7 @@ TetMesh read_medit(const std::string& path) {
         raw.triangle_tags.push_back(tokens.number<int>("a triangle reference"));
       }
     } else if (keyword == "tetrahedra") {
-      const long n = tokens.number<long>("a tetrahedron count");
+      const long n = tokens.count("a tetrahedron count");
       for (long i = 0; i < n; ++i) {
         std::array<long, 4> v{};
         for (auto& x : v)
@@ -289,7 +307,7 @@ TetMesh read_medit(const std::string& path) {
         raw.tets.push_back(v);
       }
     } else if (keyword == "edges" || keyword == "corners" || keyword == "ridges" || keyword == "requiredvertices") {
-      const long n = tokens.number<long>("a count");
+      const long n = tokens.count("a count");
       const int per = keyword == "edges" ? 3 : 1;
       for (long i = 0; i < n * per; ++i)
         tokens.number<long>("an entry");

@@ -195,6 +195,8 @@ void read_time(const CheckedYaml& doc, Case& c) {
   time.min_step_fraction = doc.number(t, "min_step_fraction", "time.min_step_fraction");
   time.max_cuts = doc.integer(t, "max_cuts", "time.max_cuts");
   time.max_increments = doc.integer(t, "max_increments", "time.max_increments");
+  time.max_increments_given = static_cast<bool>(t["max_increments"]);
+  time.source = doc.at(t);
   time.volume_compensation = doc.boolean(t, "volume_compensation", "time.volume_compensation");
   const YAML::Node stop = t["stop"];
   if (!stop || stop.size() == 0)
@@ -230,6 +232,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   Case c;
   c.path = path;
   c.overrides = overrides;
+  c.settings = flatten(root);
   c.title = doc.text(root, "title", "title");
   const YAML::Node output = root["output"] ? root["output"] : YAML::Node(YAML::NodeType::Map);
   c.output_directory = doc.text(output, "directory", "output.directory");

@@ -1,18 +1,29 @@
 // HDF5 checkpoint of a RunState (C API, numbered calls, TECH-NOTES §5).
-// Layout: datasets /nodes (n×3), /tets (m×4), /boundary_faces (f×3),
+// Written with HDF5 1.10's file format (checksummed metadata) and every
+// non-empty dataset checksummed (Fletcher32), so a damaged file is refused
+// rather than read; every index and size is checked against the mesh on read.
+// Layout (format 5): datasets /nodes (n×3), /tets (m×4), /boundary_faces (f×3),
 // /boundary_tags, /nodal (4n), /bubble (3m), /equivalent_strain (m),
 // /elastic_stress (m×6, or empty), /body_ranges (b×6), /remeshes (r×13; r×12
 // in format 3, before the material kept; r×10 in format 2, before the load check),
-// /dies (d×7), /loads (r×8), /outputs (k×2) with /output_files (strings),
-// scalar attributes on the root group.
+// /dies (d×6), /loads (r×7), /iterations (i×2), /outputs (k×2) with
+// /output_files (strings), /fingerprint (strings: the case, as a resumed run
+// compares it), scalar attributes on the root group.
 #include "anvil/core/error.h"
 #include "anvil/io/atomic_file.h"
+#include "anvil/mesh/TetMesh.h"
 #include "anvil/scene/RunState.h"
 
 #include <hdf5.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace anvil::scene {
@@ -35,10 +46,23 @@ private:
   herr_t (*close_)(hid_t);
 };
 
+/// HDF5 reports its own errors on stderr unless told not to: ours say it in our words.
+void silence_hdf5() {
+  static const bool silenced = [] { return H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr) >= 0; }();
+  (void)silenced;
+}
+
 void write_array(hid_t file, const char* name, hid_t type, const void* data, hsize_t rows, hsize_t cols) {
   const hsize_t dims[2] = {rows, cols};
   Handle space(H5Screate_simple(cols ? 2 : 1, dims, nullptr), H5Sclose);
-  Handle set(H5Dcreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  // Chunked and checksummed when not empty (a chunk cannot have a zero extent).
+  Handle create(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  if (rows > 0) {
+    const hsize_t chunk[2] = {std::min<hsize_t>(rows, 1 << 16), cols};
+    if (H5Pset_chunk(create, cols ? 2 : 1, chunk) < 0 || H5Pset_fletcher32(create) < 0)
+      throw RunError(std::string("checkpoint: cannot set up dataset ") + name);
+  }
+  Handle set(H5Dcreate2(file, name, type, space, H5P_DEFAULT, create, H5P_DEFAULT), H5Dclose);
   if (!set.valid() || (rows > 0 && H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0))
     throw RunError(std::string("checkpoint: cannot write dataset ") + name);
 }
@@ -47,15 +71,22 @@ void write_array(hid_t file, const char* name, hid_t type, const void* data, hsi
 template <class T>
 void read_array(hid_t file, const std::string& path, const char* name, hid_t type, std::vector<T>& out,
                 hsize_t per_row) {
+  if (H5Lexists(file, name, H5P_DEFAULT) <= 0) throw InputError(path + ": checkpoint has no dataset '" + name + "'");
   Handle set(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose);
-  if (!set.valid()) throw InputError(path + ": checkpoint has no dataset '" + name + "'");
+  if (!set.valid()) throw InputError(path + ": checkpoint dataset '" + name + "' cannot be opened (damaged file)");
   Handle space(H5Dget_space(set), H5Sclose);
   const hssize_t count = H5Sget_simple_extent_npoints(space);
   if (count < 0 || (per_row && count % static_cast<hssize_t>(per_row)))
     throw InputError(path + ": checkpoint dataset '" + name + "' has a wrong size");
+  // A damaged size must not allocate the machine away: no dataset holds more
+  // elements than the file has bytes.
+  hsize_t file_size = 0;
+  if (H5Fget_filesize(file, &file_size) < 0 || static_cast<hsize_t>(count) > file_size)
+    throw InputError(path + ": checkpoint dataset '" + name + "' claims more values than the file holds");
   out.resize(static_cast<std::size_t>(count));
   if (count > 0 && H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
-    throw InputError(path + ": cannot read checkpoint dataset '" + name + "'");
+    throw InputError(path + ": checkpoint dataset '" + name +
+                     "' cannot be read (its checksum does not match: the file is damaged)");
 }
 
 void write_attribute(hid_t file, const char* name, hid_t type, const void* value) {
@@ -66,19 +97,65 @@ void write_attribute(hid_t file, const char* name, hid_t type, const void* value
 }
 
 void read_attribute(hid_t file, const std::string& path, const char* name, hid_t type, void* value) {
+  if (H5Aexists(file, name) <= 0) throw InputError(path + ": checkpoint has no attribute '" + name + "'");
   Handle attribute(H5Aopen(file, name, H5P_DEFAULT), H5Aclose);
   if (!attribute.valid() || H5Aread(attribute, type, value) < 0)
     throw InputError(path + ": checkpoint has no attribute '" + name + "'");
 }
 
-} // namespace
+/// The bytes of an HDF5 file that the core driver builds in memory, taken
+/// when HDF5 frees its buffer at H5Fclose, after the last flush. (The copy
+/// H5Fget_file_image makes of an open file carries a stale superblock
+/// checksum in HDF5 1.10.) The size is that of the last allocation, at least
+/// the file's end; HDF5 reads a file longer than its end.
+struct ImageCapture {
+  std::size_t size = 0;
+  std::string image;
 
-void write_checkpoint(const std::string& path, const RunState& s) {
-  const std::string temporary = path + ".tmp";
+  static void* allocate(std::size_t size, H5FD_file_image_op_t, void* self) {
+    static_cast<ImageCapture*>(self)->size = size;
+    return std::malloc(size);
+  }
+  static void* copy(void* to, const void* from, std::size_t size, H5FD_file_image_op_t, void*) {
+    return std::memcpy(to, from, size);
+  }
+  static void* resize(void* buffer, std::size_t size, H5FD_file_image_op_t, void* self) {
+    static_cast<ImageCapture*>(self)->size = size;
+    return std::realloc(buffer, size);
+  }
+  static herr_t release(void* buffer, H5FD_file_image_op_t op, void* self) {
+    auto* capture = static_cast<ImageCapture*>(self);
+    if (op == H5FD_FILE_IMAGE_OP_FILE_CLOSE && buffer) capture->image.assign(static_cast<char*>(buffer), capture->size);
+    std::free(buffer);
+    return 0;
+  }
+  static void* share(void* self) { return self; }
+  static herr_t keep(void*) { return 0; }
+};
+
+/// The checkpoint of `s` as the bytes of an HDF5 file. HDF5 builds it in
+/// memory (the core driver without a backing store): the disk is written by
+/// write_file_atomically alone, so a full disk is one clear error and HDF5
+/// is never left with a file it failed to close (it crashes at exit then).
+std::string checkpoint_image(const RunState& s, const std::vector<std::string>& fingerprint) {
+  ImageCapture capture;
   {
-    Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-    if (!file.valid()) throw RunError(temporary + ": cannot create the checkpoint file");
-    const int format = 4;
+    // HDF5 1.10's format: checksums on the superblock and object headers.
+    Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+    H5FD_file_image_callbacks_t callbacks{ImageCapture::allocate,
+                                          ImageCapture::copy,
+                                          ImageCapture::resize,
+                                          ImageCapture::release,
+                                          ImageCapture::share,
+                                          ImageCapture::keep,
+                                          &capture};
+    if (H5Pset_fapl_core(access, 1 << 16, false) < 0 ||
+        H5Pset_libver_bounds(access, H5F_LIBVER_V110, H5F_LIBVER_LATEST) < 0 ||
+        H5Pset_file_image_callbacks(access, &callbacks) < 0)
+      throw RunError("checkpoint: cannot set up the HDF5 file");
+    Handle file(H5Fcreate("checkpoint in memory", H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose);
+    if (!file.valid()) throw RunError("checkpoint: cannot create the HDF5 file in memory");
+    const int format = 5;
     write_attribute(file, "format", H5T_NATIVE_INT, &format);
     write_attribute(file, "increment", H5T_NATIVE_INT, &s.increment);
     write_attribute(file, "time", H5T_NATIVE_DOUBLE, &s.time);
@@ -135,33 +212,57 @@ void write_checkpoint(const std::string& path, const RunState& s) {
     }
     write_array(file, "outputs", H5T_NATIVE_DOUBLE, outputs.data(), s.outputs.size(), 2);
     write_array(file, "output_files", H5T_NATIVE_CHAR, files.data(), files.size(), 0);
-    if (H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) throw RunError(temporary + ": cannot flush the checkpoint");
+    std::string lines;
+    for (const std::string& line : fingerprint)
+      lines += line + '\n';
+    write_array(file, "fingerprint", H5T_NATIVE_CHAR, lines.data(), lines.size(), 0);
   }
-  io::commit_temporary(path);
+  if (capture.image.empty()) throw RunError("checkpoint: HDF5 did not hand over the file it built in memory");
+  return std::move(capture.image);
+}
+
+} // namespace
+
+void write_checkpoint(const std::string& path, const RunState& s, const std::vector<std::string>& fingerprint) {
+  silence_hdf5();
+  io::write_file_atomically(path, checkpoint_image(s, fingerprint));
 }
 
 RunState read_checkpoint(const std::string& path) {
+  silence_hdf5();
   if (!std::filesystem::exists(path)) throw InputError(path + ": no checkpoint to resume from");
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!file.valid()) throw InputError(path + ": not a readable HDF5 checkpoint");
+  if (!file.valid()) throw InputError(path + ": not a readable HDF5 checkpoint (damaged, or not a checkpoint)");
   RunState s;
   int format = 0;
   read_attribute(file, path, "format", H5T_NATIVE_INT, &format);
-  if (format < 2 || format > 4)
+  if (format < 2 || format > 5)
     throw InputError(path + ": checkpoint format " + std::to_string(format) +
-                     ", expected 2 to 4 (written by another "
+                     ", expected 2 to 5 (written by another "
                      "version of anvil: run the case again without --resume)");
   read_attribute(file, path, "increment", H5T_NATIVE_INT, &s.increment);
   read_attribute(file, path, "time", H5T_NATIVE_DOUBLE, &s.time);
   read_attribute(file, path, "newton_iterations", H5T_NATIVE_INT, &s.newton_iterations);
+  if (s.increment < 0 || !std::isfinite(s.time) || s.time < 0.0 || s.newton_iterations < 0)
+    throw InputError(path + ": checkpoint attributes increment " + std::to_string(s.increment) + ", time " +
+                     std::to_string(s.time) + " s, Newton iterations " + std::to_string(s.newton_iterations) +
+                     ": expected numbers >= 0 (damaged file)");
+  const auto finite = [&](const char* name, const std::vector<double>& values) {
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (!std::isfinite(values[i]))
+        throw InputError(path + ": checkpoint dataset '" + name + "', value " + std::to_string(i + 1) +
+                         ": not a finite number (damaged file)");
+  };
   std::vector<double> volume, nodes, nodal, bubble, dies, loads, outputs;
   std::vector<long long> tets, faces;
   std::vector<char> files;
   read_array(file, path, "volume", H5T_NATIVE_DOUBLE, volume, 6);
+  finite("volume", volume);
   s.volume.initial = volume[0], s.volume.solver = volume[1], s.volume.projection = volume[2];
   s.volume.largest_increment = volume[3], s.volume.compensation = volume[4], s.volume.remeshing = volume[5];
   std::vector<int> ranges;
   read_array(file, path, "body_ranges", H5T_NATIVE_INT, ranges, 6);
+  if (ranges.empty()) throw InputError(path + ": checkpoint dataset 'body_ranges' is empty");
   for (std::size_t i = 0; i < ranges.size(); i += 6)
     s.bodies.push_back({ranges[i], ranges[i + 1], ranges[i + 2], ranges[i + 3], ranges[i + 4], ranges[i + 5]});
   std::vector<double> remeshes;
@@ -169,40 +270,72 @@ RunState read_checkpoint(const std::string& path) {
   read_array(file, path, "remeshes", H5T_NATIVE_DOUBLE, remeshes, per_remesh);
   for (std::size_t i = 0; i < remeshes.size(); i += per_remesh) {
     const double* r = &remeshes[i];
+    for (int k = 0; k < 4; ++k)
+      if (!(r[k] >= 0.0 && r[k] <= std::numeric_limits<int>::max()))
+        throw InputError(path + ": checkpoint dataset 'remeshes', record " + std::to_string(i / per_remesh + 1) +
+                         ": a count or index out of range (damaged file)");
     s.remeshes.push_back({int(r[0]), int(r[1]), int(r[2]), int(r[3]), r[4], r[5], r[6], r[7], r[8], r[9]});
     if (per_remesh >= 12) s.remeshes.back().load_old_mesh = r[10], s.remeshes.back().load_new_mesh = r[11];
     if (per_remesh >= 13) s.remeshes.back().material_change = r[12];
   }
   read_array(file, path, "nodes", H5T_NATIVE_DOUBLE, nodes, 3);
+  finite("nodes", nodes);
   for (std::size_t i = 0; i < nodes.size(); i += 3)
     s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);
+  const long long node_count = s.mesh.node_count();
+  const auto node_indices = [&](const char* name, const std::vector<long long>& indices, std::size_t per_record) {
+    for (std::size_t i = 0; i < indices.size(); ++i)
+      if (indices[i] < 0 || indices[i] >= node_count)
+        throw InputError(path + ": checkpoint dataset '" + name + "', record " + std::to_string(i / per_record + 1) +
+                         ": node " + std::to_string(indices[i]) + " is out of range (the mesh has " +
+                         std::to_string(node_count) + " nodes; damaged file)");
+  };
   read_array(file, path, "tets", H5T_NATIVE_LLONG, tets, 4);
+  node_indices("tets", tets, 4);
   for (std::size_t i = 0; i < tets.size(); i += 4)
     s.mesh.tets.push_back({int(tets[i]), int(tets[i + 1]), int(tets[i + 2]), int(tets[i + 3])});
   read_array(file, path, "boundary_faces", H5T_NATIVE_LLONG, faces, 3);
+  node_indices("boundary_faces", faces, 3);
   for (std::size_t i = 0; i < faces.size(); i += 3)
     s.mesh.boundary_faces.push_back({int(faces[i]), int(faces[i + 1]), int(faces[i + 2])});
+  mesh::validate(s.mesh, path + ": checkpoint dataset 'tets'");
   read_array(file, path, "boundary_tags", H5T_NATIVE_INT, s.mesh.boundary_tags, 1);
   read_array(file, path, "nodal", H5T_NATIVE_DOUBLE, nodal, 4);
+  finite("nodal", nodal);
   read_array(file, path, "bubble", H5T_NATIVE_DOUBLE, bubble, 3);
+  finite("bubble", bubble);
   s.unknowns.nodal = Eigen::Map<Eigen::VectorXd>(nodal.data(), static_cast<long>(nodal.size()));
   s.unknowns.bubble = Eigen::Map<Eigen::VectorXd>(bubble.data(), static_cast<long>(bubble.size()));
   read_array(file, path, "equivalent_strain", H5T_NATIVE_DOUBLE, s.equivalent_strain, 1);
+  finite("equivalent_strain", s.equivalent_strain);
   read_array(file, path, "elastic_stress", H5T_NATIVE_DOUBLE, s.elastic_stress, 6);
+  finite("elastic_stress", s.elastic_stress);
   read_array(file, path, "dies", H5T_NATIVE_DOUBLE, dies, 6);
+  finite("dies", dies);
   for (std::size_t i = 0; i < dies.size(); i += 6)
     s.dies.push_back({dies[i], dies[i + 1], dies[i + 2], {dies[i + 3], dies[i + 4], dies[i + 5]}});
   read_array(file, path, "loads", H5T_NATIVE_DOUBLE, loads, 7);
-  for (std::size_t i = 0; i < loads.size(); i += 7)
+  finite("loads", loads);
+  for (std::size_t i = 0; i < loads.size(); i += 7) {
+    if (!(loads[i] >= 0.0 && loads[i] <= s.increment && loads[i + 2] >= 0.0 && loads[i + 2] < 1e6))
+      throw InputError(path + ": checkpoint dataset 'loads', record " + std::to_string(i / 7 + 1) + ": increment " +
+                       std::to_string(loads[i]) + ", surface " + std::to_string(loads[i + 2]) +
+                       " out of range (damaged file)");
     s.loads.push_back(
         {int(loads[i]), loads[i + 1], int(loads[i + 2]), loads[i + 3], {loads[i + 4], loads[i + 5], loads[i + 6]}});
+  }
   if (H5Lexists(file, "iterations", H5P_DEFAULT) > 0) { // absent in checkpoints written before it
     std::vector<int> iterations;
     read_array(file, path, "iterations", H5T_NATIVE_INT, iterations, 2);
-    for (std::size_t i = 0; i < iterations.size(); i += 2)
+    for (std::size_t i = 0; i < iterations.size(); i += 2) {
+      if (iterations[i] < 0 || iterations[i + 1] < 0)
+        throw InputError(path + ": checkpoint dataset 'iterations', record " + std::to_string(i / 2 + 1) +
+                         ": a negative count (damaged file)");
       s.iterations.push_back({iterations[i], iterations[i + 1]});
+    }
   }
   read_array(file, path, "outputs", H5T_NATIVE_DOUBLE, outputs, 2);
+  finite("outputs", outputs);
   read_array(file, path, "output_files", H5T_NATIVE_CHAR, files, 1);
   std::string name;
   std::size_t k = 0;
@@ -212,6 +345,9 @@ RunState read_checkpoint(const std::string& path) {
       continue;
     }
     if (2 * k + 1 >= outputs.size()) throw InputError(path + ": checkpoint output list is inconsistent");
+    if (!(outputs[2 * k + 1] >= 0.0 && outputs[2 * k + 1] < 1e6) || name.find('/') != std::string::npos)
+      throw InputError(path + ": checkpoint dataset 'outputs', record " + std::to_string(k + 1) +
+                       ": part or file name out of range (damaged file)");
     s.outputs.push_back({outputs[2 * k], int(outputs[2 * k + 1]), name});
     name.clear();
     ++k;
@@ -224,7 +360,8 @@ RunState read_checkpoint(const std::string& path) {
   // The bodies follow one another and make up the whole mesh.
   mesh::MeshRange end;
   for (const mesh::MeshRange& r : s.bodies) {
-    if (r.first_node != end.first_node || r.first_tet != end.first_tet || r.first_face != end.first_face)
+    if (r.first_node != end.first_node || r.first_tet != end.first_tet || r.first_face != end.first_face ||
+        r.node_count < 0 || r.tet_count < 0 || r.face_count < 0)
       throw InputError(path + ": checkpoint body ranges do not follow one another");
     end = {r.first_node + r.node_count, 0, r.first_tet + r.tet_count, 0, r.first_face + r.face_count, 0};
   }
@@ -232,6 +369,23 @@ RunState read_checkpoint(const std::string& path) {
       end.first_face != static_cast<int>(s.mesh.boundary_faces.size()))
     throw InputError(path + ": checkpoint body ranges do not cover the mesh");
   return s;
+}
+
+std::vector<std::string> read_checkpoint_fingerprint(const std::string& path) {
+  silence_hdf5();
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) throw InputError(path + ": not a readable HDF5 checkpoint (damaged, or not a checkpoint)");
+  std::vector<std::string> lines;
+  if (H5Lexists(file, "fingerprint", H5P_DEFAULT) <= 0) return lines; // written before format 5
+  std::vector<char> text;
+  read_array(file, path, "fingerprint", H5T_NATIVE_CHAR, text, 1);
+  std::string line;
+  for (char ch : text)
+    if (ch == '\n')
+      lines.push_back(std::move(line)), line.clear();
+    else
+      line += ch;
+  return lines;
 }
 
 } // namespace anvil::scene

@@ -4,17 +4,39 @@
 #include "anvil/die/overlap_volume.h"
 #include "anvil/mesh/generators.h"
 #include "anvil/mesh/mesh_io.h"
+#include "anvil/mesh/node_budget.h"
 #include "anvil/scene/effects.h"
+#include "anvil/scene/fingerprint.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <numbers>
 
 namespace anvil::scene {
 namespace {
 
-mesh::TetMesh build_mesh(const MeshSpec& spec) {
+/// Nodes the generated shape of `spec` will have, counted before it is built.
+double generated_nodes(const MeshSpec& spec) {
+  const auto cells = [&](double length) { return std::max(1.0, std::round(length / spec.element_size)); };
+  if (spec.generate == "box")
+    return (cells(spec.size.x()) + 1) * (cells(spec.size.y()) + 1) * (cells(spec.size.z()) + 1);
+  if (spec.generate == "cylinder") {
+    const double rings = cells(spec.radius);
+    return (1.0 + 3.0 * rings * (rings + 1.0)) * (cells(spec.height) + 1);
+  }
+  if (spec.generate == "quarter_cylinder")
+    return (cells(spec.radius) + 1) * (cells(spec.radius) + 1) * (cells(spec.height) + 1);
+  const double mid = 0.5 * (spec.radius + spec.inner_radius);
+  return (cells(spec.radius - spec.inner_radius) + 1) * (cells(0.5 * std::numbers::pi * mid) + 1) *
+         (cells(spec.height) + 1);
+}
+
+mesh::TetMesh build_mesh(const MeshSpec& spec, const std::string& key) {
   if (!spec.file.empty()) return mesh::read_mesh(spec.file);
+  mesh::check_node_budget(generated_nodes(spec), spec.source + ": key '" + key + ".element_size' " +
+                                                     std::to_string(spec.element_size) + " mm");
   mesh::TetMesh m = spec.generate == "box"        ? mesh::make_box(spec.origin, spec.size, spec.element_size)
                     : spec.generate == "cylinder" ? mesh::make_cylinder(spec.radius, spec.height, spec.element_size)
                     : spec.generate == "quarter_cylinder"
@@ -46,6 +68,101 @@ double initial_die_gap(const std::vector<Die>& dies, int& upper) {
   return upper == 0 ? a.first - b.second : b.first - a.second;
 }
 
+/// Refuses stop criteria that the dies' motion can never meet, and a stroke
+/// increment so small that the stop is out of time.max_increments' reach.
+/// Exact for dies at rest or at constant velocity (constant, hydraulic: a
+/// load limit only slows them); table and crank motions are not judged.
+void check_stops_reachable(const Scene& scene) {
+  const Case& c = scene.input;
+  const TimeSpec& t = c.time;
+  const auto judged = [&](int d) {
+    return c.dies[d].motion == "fixed" || c.dies[d].motion == "constant" || c.dies[d].motion == "hydraulic";
+  };
+  const auto velocity = [&](int d) { return scene.dies[d].velocity(DieState{}, 1.0); };
+  const double nominal = t.stroke_increment / scene.reference_velocity; // s an increment at the start
+  const auto check_count = [&](double seconds, const std::string& what) {
+    const double needed = seconds / nominal;
+    if (t.max_increments_given || needed <= t.max_increments) return;
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  ": key 'time.stroke_increment' %g mm: reaching %s takes about %.3g increments, more than "
+                  "time.max_increments (%d); is the stroke increment in mm?",
+                  t.stroke_increment, what.c_str(), needed, t.max_increments);
+    throw InputError(t.source + text);
+  };
+  if (std::isfinite(t.final_stroke) && judged(t.stroke_die)) {
+    const double speed = velocity(t.stroke_die).norm();
+    if (!(speed > 0.0))
+      throw InputError(t.source + ": key 'time.stop.stroke': die '" + scene.dies[t.stroke_die].name +
+                       "' does not move, its stroke stays 0 mm");
+    check_count(t.final_stroke / speed, "the final stroke of " + std::to_string(t.final_stroke) + " mm");
+  }
+  if (t.final_gap > 0.0 && judged(scene.upper_die) && judged(1 - scene.upper_die)) {
+    const double closing = velocity(1 - scene.upper_die).z() - velocity(scene.upper_die).z();
+    char text[300];
+    if (!(closing > 0.0)) {
+      std::snprintf(text, sizeof text,
+                    ": key 'time.stop.gap': %s (closing speed %g mm/s along z): the gap of %g mm is "
+                    "never reached",
+                    closing < 0.0 ? "the dies move apart" : "the dies do not close along z", closing, t.final_gap);
+      throw InputError(t.source + text);
+    }
+    if (scene.die_gap0 > t.final_gap) check_count((scene.die_gap0 - t.final_gap) / closing, "the final die gap");
+  }
+  if (std::isfinite(t.max_load)) {
+    // A load builds up when a die moves towards the bodies or a plate moves.
+    mesh::Point centre = mesh::Point::Zero();
+    for (const mesh::Point& x : scene.initial_mesh.nodes)
+      centre += x / static_cast<double>(scene.initial_mesh.nodes.size());
+    bool pressing = scene.surfaces.size() > scene.dies.size(); // a moving plate
+    std::string away;
+    for (std::size_t d = 0; d < scene.dies.size() && !pressing; ++d) {
+      if (!judged(int(d))) pressing = true;
+      const Eigen::Vector3d v = velocity(int(d));
+      if (v.norm() == 0.0) continue;
+      if (v.dot(centre - scene.dies[d].surface->project(centre).point) > 0.0)
+        pressing = true;
+      else
+        away = scene.dies[d].name;
+    }
+    if (!pressing)
+      throw InputError(t.source + ": key 'time.stop.load': no die moves towards the bodies" +
+                       (away.empty() ? std::string() : " (die '" + away + "' moves away)") + ": no load builds up to " +
+                       std::to_string(t.max_load) + " N");
+  }
+  if (std::isfinite(t.end_time)) check_count(t.end_time, "the end time");
+}
+
+/// Refuses a die that starts inside a body deeper than half the mean
+/// boundary edge (faceting and placement leave less): the first increment
+/// would push the body out by that much, or, with an open die surface whose
+/// normals point into the body, crush it.
+void check_dies_outside_bodies(const Scene& scene) {
+  const double tolerance = 0.5 * scene.reference_length;
+  const std::vector<char> boundary = mesh::boundary_node_flags(scene.initial_mesh);
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+      const mesh::MeshRange& range = scene.initial_ranges[b];
+      double depth = 0.0;
+      int deepest = -1;
+      for (int i = range.first_node; i < range.first_node + range.node_count; ++i) {
+        if (!boundary[i]) continue;
+        const die::SurfaceProjection p = scene.dies[d].surface->project(scene.initial_mesh.nodes[i]);
+        if (p.on_facet && -p.distance > depth) depth = -p.distance, deepest = i;
+      }
+      if (depth <= tolerance) continue;
+      const mesh::Point& x = scene.initial_mesh.nodes[deepest];
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    ": die '%s' starts %.4g mm inside body '%s' (node %d at (%.4g, %.4g, %.4g) mm), more than half "
+                    "the mean boundary edge (%.3g mm): move the die (plane.point or offset); an open STL surface "
+                    "whose normals point into the body reads this way too",
+                    scene.dies[d].name.c_str(), depth, scene.bodies[b].name.c_str(), deepest - range.first_node + 1,
+                    x.x(), x.y(), x.z(), tolerance);
+      throw InputError(scene.input.dies[d].source + text);
+    }
+}
+
 } // namespace
 
 Scene::Scene(const Case& c, Timers& timers) : input(c) {
@@ -58,7 +175,7 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     body.material_file = spec.material_file;
     body.law = std::move(card.law);
     body.state.temperature = spec.temperature.value_or(card.temperature.value_or(20.0));
-    const mesh::TetMesh part = build_mesh(spec.mesh);
+    const mesh::TetMesh part = build_mesh(spec.mesh, "bodies[" + std::to_string(b) + "].mesh");
     for (std::size_t i = 0; i < c.boundary.size(); ++i)
       if (c.boundary_body[i] == static_cast<int>(b)) body.conditions.push_back(c.boundary[i]);
     conditions.insert(conditions.end(), body.conditions.begin(), body.conditions.end());
@@ -68,6 +185,11 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     }
     body.initial_volume = mesh::volume(part);
     body.remesh_size = c.remeshing.element_size > 0.0 ? c.remeshing.element_size : mean_boundary_edge(part);
+    // A regular mesh of edge h has about 1.5 V/h³ nodes.
+    if (c.remeshing.enabled)
+      mesh::check_node_budget(1.5 * body.initial_volume / std::pow(body.remesh_size, 3),
+                              c.path + ": key 'remeshing.element_size' " + std::to_string(body.remesh_size) +
+                                  " mm, remeshing body '" + body.name + "'");
     initial_ranges.push_back(mesh::append(initial_mesh, part));
     bodies.push_back(std::move(body));
   }
@@ -113,6 +235,9 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
   if (c.time.enabled && !(reference_velocity > 0.0))
     throw InputError(c.path + ": nothing moves at t = 0 (no moving die, no prescribed velocity): the time loop "
                               "needs a motion");
+  if (c.time.enabled) check_stops_reachable(*this);
+  check_dies_outside_bodies(*this);
+  fingerprint = case_fingerprint(c);
 }
 
 double Scene::die_gap(std::span<const DieState> dies_now) const {
@@ -133,18 +258,35 @@ RunState initial_state(const Scene& scene) {
   return state;
 }
 
-void check_resumable(const Scene& scene, const RunState& state) {
+void check_resumable(const Scene& scene, const RunState& state, const std::string& path) {
   if (state.dies.size() != scene.dies.size())
-    throw InputError("checkpoint: " + std::to_string(state.dies.size()) + " dies, the case has " +
-                     std::to_string(scene.dies.size()));
+    throw InputError(path + ": checkpoint dataset 'dies' has " + std::to_string(state.dies.size()) +
+                     " dies, the case " + std::to_string(scene.dies.size()));
   // Until a remesh the bodies keep the meshes the case builds.
   bool same_bodies = state.bodies.size() == scene.bodies.size();
   for (std::size_t b = 0; same_bodies && state.remeshes.empty() && b < scene.bodies.size(); ++b)
     same_bodies = state.bodies[b].node_count == scene.initial_ranges[b].node_count &&
                   state.bodies[b].tet_count == scene.initial_ranges[b].tet_count;
-  if (!same_bodies) throw InputError("checkpoint: the bodies do not match the case's (was the case changed?)");
+  if (!same_bodies)
+    throw InputError(path + ": checkpoint dataset 'body_ranges': the bodies do not match the case's (was the case "
+                            "changed?)");
   if (scene.carries_stress != !state.elastic_stress.empty())
-    throw InputError("checkpoint: elastic stresses do not match the case's bodies (was the case changed?)");
+    throw InputError(path + ": checkpoint dataset 'elastic_stress' does not match the case's bodies (was the case "
+                            "changed?)");
+  for (std::size_t i = 0; i < state.loads.size(); ++i)
+    if (state.loads[i].surface >= static_cast<int>(scene.surfaces.size()))
+      throw InputError(path + ": checkpoint dataset 'loads', record " + std::to_string(i + 1) + ": surface " +
+                       std::to_string(state.loads[i].surface) + " out of range (the case has " +
+                       std::to_string(scene.surfaces.size()) + " load surfaces; damaged file)");
+  for (std::size_t i = 0; i < state.outputs.size(); ++i)
+    if (state.outputs[i].part > static_cast<int>(scene.dies.size()))
+      throw InputError(path + ": checkpoint dataset 'outputs', record " + std::to_string(i + 1) + ": part " +
+                       std::to_string(state.outputs[i].part) + " out of range (the bodies and " +
+                       std::to_string(scene.dies.size()) + " dies; damaged file)");
+  for (std::size_t i = 0; i < state.remeshes.size(); ++i)
+    if (state.remeshes[i].body >= static_cast<int>(scene.bodies.size()))
+      throw InputError(path + ": checkpoint dataset 'remeshes', record " + std::to_string(i + 1) + ": body " +
+                       std::to_string(state.remeshes[i].body) + " out of range (damaged file)");
 }
 
 double inside_dies(const Scene& scene, const mesh::TetMesh& mesh, const mesh::MeshRange& range, int body,

@@ -13,6 +13,7 @@
 #include "anvil/scene/Increment.h"
 #include "anvil/scene/Scene.h"
 #include "anvil/scene/TimeStepControl.h"
+#include "anvil/scene/fingerprint.h"
 #include "anvil/solver/PetscSession.h"
 
 #include <tbb/info.h>
@@ -157,6 +158,46 @@ void finish(const Scene& scene, const Discretisation& disc, RunState& state, io:
   log::close_file();
 }
 
+/// The changes of the case since the checkpoint at `path`: refused unless
+/// the user allowed them, then listed in the log.
+void compare_with_checkpoint(const Scene& scene, const std::string& path, bool allow_changes) {
+  const std::vector<std::string> before = read_checkpoint_fingerprint(path);
+  if (before.empty()) {
+    log::info("checkpoint written by an older anvil: the case is not compared with the run it continues");
+    return;
+  }
+  const std::vector<std::string> changes = fingerprint_changes(before, scene.fingerprint);
+  if (changes.empty()) return;
+  if (!allow_changes) {
+    std::string list;
+    for (std::size_t i = 0; i < changes.size() && i < 8; ++i)
+      list += (i ? "; " : "") + changes[i];
+    if (changes.size() > 8) list += "; and " + std::to_string(changes.size() - 8) + " more";
+    throw InputError(path + ": the case changed since this checkpoint was written (" + list +
+                     "); resume anyway with --allow-changes");
+  }
+  log::info("resuming with %zu change(s) since the checkpoint (--allow-changes):", changes.size());
+  for (const std::string& change : changes)
+    log::info("  %s", change.c_str());
+}
+
+/// Creates the output folder `out`, or throws InputError saying why it cannot
+/// be used: the last input check, so an input error leaves nothing behind.
+void prepare_output_folder(const std::string& out) {
+  std::error_code error;
+  if (std::filesystem::exists(out, error) && !std::filesystem::is_directory(out, error))
+    throw InputError(out + ": the output folder is not a folder (a file of that name exists)");
+  std::filesystem::create_directories(out, error);
+  if (error) throw InputError(out + ": cannot create the output folder: " + error.message());
+  const std::string probe = out + "/.anvil_write_test";
+  if (std::FILE* f = std::fopen(probe.c_str(), "w")) {
+    std::fclose(f);
+    std::remove(probe.c_str());
+  } else {
+    throw InputError(out + ": cannot write in the output folder (read-only?)");
+  }
+}
+
 } // namespace
 
 std::string output_directory(const Case& c, const RunOptions& options) {
@@ -165,7 +206,7 @@ std::string output_directory(const Case& c, const RunOptions& options) {
   return "out/" + std::filesystem::path(c.path).stem().string();
 }
 
-void run(const Case& c, const RunOptions& options) {
+RunEnd run(const Case& c, const RunOptions& options) {
   const solver::ScopedPetscOptions petsc_options(c.petsc_options, c.path + ": solver.petsc_options");
   const Clock::time_point start = Clock::now();
   Timers timers;
@@ -173,13 +214,15 @@ void run(const Case& c, const RunOptions& options) {
   const std::string out = output_directory(c, options);
   RunState state;
   if (options.resume) {
-    state = read_checkpoint(out + "/checkpoint.h5");
-    check_resumable(scene, state);
+    const std::string checkpoint = out + "/checkpoint.h5";
+    state = read_checkpoint(checkpoint);
+    compare_with_checkpoint(scene, checkpoint, options.allow_changes);
+    check_resumable(scene, state, checkpoint);
     state.inside_dies = inside_dies(scene, state);
   } else {
     state = initial_state(scene);
   }
-  std::filesystem::create_directories(out);
+  prepare_output_folder(out);
   log::open_file(out + "/anvil.log", options.resume);
   Discretisation disc = discretise(scene, state, timers);
   log_header(scene, disc, state, options);
@@ -198,15 +241,15 @@ void run(const Case& c, const RunOptions& options) {
       log::info("  load on '%s': Fx %.6g N  Fy %.6g N  Fz %.6g N", scene.surfaces[s].name.c_str(), f.x(), f.y(), f.z());
     }
     finish(scene, disc, state, writer, inc.report, timers, start);
-    return;
+    return {"one increment solved", true};
   }
 
   const TimeStepControl clock(scene);
   TimeLeft time_left;
   time_left.update(clock.progress(state), seconds_since(start));
   solver::NewtonReport last;
-  std::string stop;
-  while ((stop = clock.stop_reason(state)).empty()) {
+  Stop stop;
+  while (!(stop = clock.stop(state))) {
     TimeStep step = clock.next_step(state);
     IncrementOutcome inc = solve_increment(scene, disc, state, step, timers);
     // A failed try leaves the state as it was: try again with half the Δt tried.
@@ -226,7 +269,7 @@ void run(const Case& c, const RunOptions& options) {
     }
     last = inc.report;
     log_progress(scene, disc, state, inc, time_left.update(clock.progress(state), seconds_since(start)));
-    if (c.remeshing.enabled && clock.stop_reason(state).empty()) {
+    if (c.remeshing.enabled && !clock.stop(state)) {
       const std::vector<remesh::RemeshDue> due = remesh::remesh_due(scene, state, inc.time_step);
       if (!due.empty()) {
         remesh::remesh(scene, state, due, disc.touching_die(state.unknowns.nodal), inc.fields.rate,
@@ -238,8 +281,13 @@ void run(const Case& c, const RunOptions& options) {
     // preconditioner): so does this one, and --resume stays exact.
     if (writer.write(scene, disc, state, false, timers)) disc.solver->restart_linear_solver();
   }
-  log::info("stop: %s at increment %d, t = %.6g s", stop.c_str(), state.increment, state.time);
+  log::info("stop: %s at increment %d, t = %.6g s", stop.reason.c_str(), state.increment, state.time);
   finish(scene, disc, state, writer, last, timers, start);
+  if (!stop.complete)
+    return {"stopped at increment " + std::to_string(state.increment) + ": " + stop.reason +
+                "; the results so far are in " + out,
+            false};
+  return {stop.reason, true};
 }
 
 } // namespace anvil::scene

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace anvil::scene {
 namespace {
@@ -78,21 +81,62 @@ bool TimeStepControl::ends_at_contact(const TimeStep& step, double touch) const 
   return touch > sliver && touch < step.length - sliver;
 }
 
-std::string TimeStepControl::stop_reason(const RunState& state) const {
+Stop TimeStepControl::stop(const RunState& state) const {
   const double tolerance = 1e-9;
-  if (state.time >= time_.end_time * (1.0 - tolerance)) return "end time reached";
+  if (state.time >= time_.end_time * (1.0 - tolerance)) return {"end time reached"};
   if (std::isfinite(time_.final_stroke) &&
       state.dies[time_.stroke_die].stroke >= time_.final_stroke * (1.0 - tolerance))
-    return "final stroke reached";
+    return {"final stroke reached"};
   if (time_.final_gap > 0.0 && scene_.die_gap(state.dies) <= time_.final_gap * (1.0 + tolerance))
-    return "final die gap reached";
+    return {"final die gap reached"};
   if (std::isfinite(time_.max_load))
     for (auto r = state.loads.rbegin(); r != state.loads.rend() && r->increment == state.increment; ++r)
-      if (r->force.norm() >= time_.max_load) return "maximum load reached";
+      if (r->press_load() >= time_.max_load) return {"maximum load reached"};
   for (std::size_t d = 0; d < scene_.dies.size(); ++d)
-    if (state.dies[d].speed_factor < 1e-3) return "press stalled at its load limit (die '" + scene_.dies[d].name + "')";
-  if (state.increment >= time_.max_increments) return "maximum number of increments reached";
-  return "";
+    if (state.dies[d].speed_factor < 1e-3)
+      return {"press stalled at its load limit (die '" + scene_.dies[d].name + "')"};
+  // A motion over for good (a table past its last time) can no longer meet
+  // a stroke or gap stop.
+  const auto describe = [&](const std::string& what) {
+    return Stop{what + " before the stop criterion (" + describe_stop(state) + ")", false};
+  };
+  if (std::isfinite(time_.final_stroke) && scene_.dies[time_.stroke_die].at_rest_for_good(state.dies[time_.stroke_die]))
+    return describe("die '" + scene_.dies[time_.stroke_die].name + "' has come to rest for good");
+  if (time_.final_gap > 0.0 && scene_.dies[0].at_rest_for_good(state.dies[0]) &&
+      scene_.dies[1].at_rest_for_good(state.dies[1]))
+    return describe("both dies have come to rest for good");
+  if (state.increment >= time_.max_increments)
+    return describe("time.max_increments (" + std::to_string(time_.max_increments) + ") reached");
+  return {};
+}
+
+std::string TimeStepControl::describe_stop(const RunState& state) const {
+  std::vector<std::string> criteria;
+  char text[200];
+  if (std::isfinite(time_.final_stroke)) {
+    std::snprintf(text, sizeof text, "final stroke %g mm of die '%s', at %.4g mm", time_.final_stroke,
+                  scene_.dies[time_.stroke_die].name.c_str(), state.dies[time_.stroke_die].stroke);
+    criteria.push_back(text);
+  }
+  if (time_.final_gap > 0.0) {
+    std::snprintf(text, sizeof text, "final die gap %g mm, at %.4g mm", time_.final_gap, scene_.die_gap(state.dies));
+    criteria.push_back(text);
+  }
+  if (std::isfinite(time_.max_load)) {
+    double load = 0.0;
+    for (auto r = state.loads.rbegin(); r != state.loads.rend() && r->increment == state.increment; ++r)
+      load = std::max(load, r->press_load());
+    std::snprintf(text, sizeof text, "press load %g N, at %.4g N", time_.max_load, load);
+    criteria.push_back(text);
+  }
+  if (std::isfinite(time_.end_time)) {
+    std::snprintf(text, sizeof text, "end time %g s, at %.4g s", time_.end_time, state.time);
+    criteria.push_back(text);
+  }
+  std::string all;
+  for (const std::string& c : criteria)
+    all += (all.empty() ? "" : "; ") + c;
+  return all;
 }
 
 double TimeStepControl::progress(const RunState& state) const {

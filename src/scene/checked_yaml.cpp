@@ -1,7 +1,11 @@
 #include "checked_yaml.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -29,17 +33,53 @@ std::optional<double> parse_number(const YAML::Node& node) {
 }
 
 std::string shown_value(const YAML::Node& node) {
-  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsScalar()) {
+    // One line, whatever the value holds: control characters as \n, \t, \xNN.
+    std::string shown;
+    for (const char c : node.Scalar()) {
+      if (c == '\n')
+        shown += "\\n";
+      else if (c == '\t')
+        shown += "\\t";
+      else if (static_cast<unsigned char>(c) < 0x20) {
+        char code[8];
+        std::snprintf(code, sizeof code, "\\x%02x", static_cast<unsigned char>(c));
+        shown += code;
+      } else
+        shown += c;
+    }
+    return "'" + shown + "'";
+  }
   if (node.IsNull()) return "(empty)";
   if (node.IsSequence()) return "a list";
   return "a map";
 }
 
+void flatten_into(const YAML::Node& node, const std::string& prefix, std::vector<std::string>& lines) {
+  if (node.IsMap()) {
+    for (const auto& entry : node)
+      flatten_into(entry.second, join(prefix, entry.first.Scalar()), lines);
+  } else if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i)
+      flatten_into(node[i], prefix + "[" + std::to_string(i) + "]", lines);
+  } else {
+    lines.push_back(prefix + " = " + (node.IsNull() ? std::string("~") : node.Scalar()));
+  }
+}
+
 } // namespace
+
+std::vector<std::string> flatten(const YAML::Node& node) {
+  std::vector<std::string> lines;
+  flatten_into(node, "", lines);
+  return lines;
+}
 
 CheckedYaml::CheckedYaml(const std::string& path, const std::vector<KeySpec>& schema,
                          const std::vector<std::string>& overrides)
     : path_(path), schema_(schema) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) throw InputError(path + ": is a folder, not a YAML file");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file");
   try {
@@ -167,9 +207,15 @@ void CheckedYaml::check(const YAML::Node& node, const std::string& spec_prefix, 
     throw InputError(at(node) + ": " + (shown_prefix.empty() ? std::string("the file") : "key '" + shown_prefix + "'") +
                      ": expected a map of keys, found " + shown_value(node));
   }
+  std::vector<std::pair<std::string, YAML::Node>> seen;
   for (const auto& entry : node) {
     const std::string key = entry.first.as<std::string>();
     const std::string spec_path = join(spec_prefix, key), shown = join(shown_prefix, key);
+    // YAML maps have unique keys; a reader would silently keep one of two.
+    for (const auto& [name, first] : seen)
+      if (name == key)
+        throw InputError(at(entry.first) + ": key '" + shown + "' is given twice (first at " + at(first) + ")");
+    seen.emplace_back(key, entry.first);
     const KeySpec* k = find_key(schema_, spec_path);
     if (!k) {
       std::string known;
@@ -201,6 +247,15 @@ void CheckedYaml::check_value(const YAML::Node& value, const KeySpec& k, const s
     if (!value.IsScalar()) wrong();
     if (!k.choices.empty() && std::find(k.choices.begin(), k.choices.end(), value.Scalar()) == k.choices.end()) wrong();
     return;
+  case KeyType::name: {
+    if (!value.IsScalar()) wrong();
+    const std::string& text = value.Scalar();
+    const bool allowed = std::all_of(text.begin(), text.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+    });
+    if (text.empty() || text.size() > 64 || !allowed || text == "." || text == "..") wrong();
+    return;
+  }
   case KeyType::boolean:
     if (!value.IsScalar() || (value.Scalar() != "true" && value.Scalar() != "false")) wrong();
     return;

@@ -13,6 +13,10 @@
 
 namespace anvil::scene {
 
+/// `node` as "key = value" lines in document order: maps as dotted keys, lists
+/// as key[i], an empty value as "~".
+std::vector<std::string> flatten(const YAML::Node& node);
+
 class CheckedYaml {
 public:
   /// Parses `path`, applies the command-line `overrides` ("key.path=value",

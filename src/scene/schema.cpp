@@ -1,5 +1,6 @@
 #include "anvil/scene/schema.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -14,6 +15,10 @@ KeySpec key(std::string path, KeyType type, std::string doc, std::string unit = 
   k.type = type;
   k.doc = std::move(doc);
   k.unit = std::move(unit);
+  if (type == KeyType::integer) { // what the reader stores them in: int
+    k.min = std::numeric_limits<int>::min();
+    k.max = std::numeric_limits<int>::max();
+  }
   return k;
 }
 KeySpec required(KeySpec k) {
@@ -25,9 +30,9 @@ KeySpec with_default(KeySpec k, std::string value) {
   return k;
 }
 KeySpec range(KeySpec k, double min, double max, bool min_exclusive = false) {
-  k.min = min;
-  k.max = max;
-  k.min_exclusive = min_exclusive;
+  k.min = std::max(k.min, min);
+  k.max = std::min(k.max, max);
+  k.min_exclusive = min_exclusive && k.min == min;
   return k;
 }
 KeySpec choices(KeySpec k, std::vector<std::string> values) {
@@ -43,6 +48,8 @@ const char* type_name(KeyType t) {
     return "number";
   case KeyType::string:
     return "string";
+  case KeyType::name:
+    return "a name of letters, digits, '_', '-' and '.' (part of file names and CSV fields), at most 64 characters";
   case KeyType::boolean:
     return "boolean";
   case KeyType::vector3:
@@ -124,7 +131,7 @@ const std::vector<KeySpec>& case_schema() {
                 "mumps); the same options on the anvil command line win"),
             ""),
         required(key("bodies", T::list, "deformable bodies, solved together (billets, deformable dies)")),
-        required(key("bodies[].name", T::string, "name used by boundary conditions and in outputs")),
+        required(key("bodies[].name", T::name, "name used by boundary conditions and in outputs")),
         required(key("bodies[].material", T::string, "material card (YAML), path relative to the case file")),
         required(key("bodies[].mesh", T::map, "a mesh file or a generated shape")),
         key("bodies[].mesh.file", T::string, "Gmsh .msh (2.2, 4.1 ASCII) or Medit .mesh, relative to the case file"),
@@ -143,7 +150,7 @@ const std::vector<KeySpec>& case_schema() {
         range(key("bodies[].mesh.element_size", T::number, "generated shapes: target edge length", "mm"), 0, kInf,
               true),
         key("boundary", T::list, "boundary conditions, applied in order (later ones win on shared nodes)"),
-        required(key("boundary[].name", T::string, "name shown in loads.csv")),
+        required(key("boundary[].name", T::name, "name shown in loads.csv")),
         key("boundary[].body", T::string, "body it applies to; required when there are several"),
         required(
             choices(key("boundary[].type", T::string,
@@ -174,7 +181,7 @@ const std::vector<KeySpec>& case_schema() {
                            0, kInf),
                      "10"),
         key("dies", T::list, "rigid dies: a surface, a press motion, friction with the body"),
-        required(key("dies[].name", T::string, "name shown in loads.csv, the log and the VTK series")),
+        required(key("dies[].name", T::name, "name shown in loads.csv, the log and the VTK series")),
         key("dies[].stl", T::string,
             "die surface (STL, ASCII or binary), relative to the case file; normals out of the die"),
         with_default(key("dies[].offset", T::vector3,
@@ -251,7 +258,8 @@ const std::vector<KeySpec>& case_schema() {
         range(key("time.stop.stroke", T::number, "travel of the die `die`", "mm"), 0, kInf, true),
         key("time.stop.die", T::string, "die whose stroke is checked; default the first moving die"),
         range(key("time.stop.gap", T::number, "distance between the two dies along z", "mm"), 0, kInf, true),
-        range(key("time.stop.load", T::number, "largest load magnitude on any die", "N"), 0, kInf, true),
+        range(key("time.stop.load", T::number, "largest press load (force along z) on any die or plate", "N"), 0, kInf,
+              true),
         range(key("time.stop.time", T::number, "end time", "s"), 0, kInf, true),
         key("remeshing", T::map, "automatic remeshing of the flowing bodies (CGAL, fields transferred); absent: never"),
         with_default(range(key("remeshing.quality", T::number,

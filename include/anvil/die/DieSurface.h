@@ -18,6 +18,10 @@ struct SurfaceProjection {
   mesh::Point point;      ///< closest point on the surface (mm)
   Eigen::Vector3d normal; ///< unit, out of the die material (towards the body side)
   double distance = 0.0;  ///< signed: > 0 outside the die, < 0 penetrated (mm)
+  /// The closest point is inside a facet (the query lies along that facet's
+  /// normal), not on an edge or a corner; behind an open surface's border
+  /// the side (sign) means little.
+  bool on_facet = true;
 };
 
 /// Triangles of a surface, for output.

@@ -15,6 +15,9 @@ public:
   virtual ~PressKinematics() = default;
   /// Die displacement from its initial position at press time t (mm, s).
   virtual Eigen::Vector3d displacement(double t) const = 0;
+  /// Press time (s) from which the die stays where it is; infinite when it
+  /// never comes to rest for good.
+  virtual double rest_time() const { return std::numeric_limits<double>::infinity(); }
   virtual std::string describe() const = 0;
 };
 
@@ -23,6 +26,7 @@ class ConstantVelocity final : public PressKinematics {
 public:
   explicit ConstantVelocity(const Eigen::Vector3d& velocity) : velocity_(velocity) {}
   Eigen::Vector3d displacement(double t) const override { return t * velocity_; }
+  double rest_time() const override { return velocity_.norm() == 0.0 ? 0.0 : std::numeric_limits<double>::infinity(); }
   std::string describe() const override;
 
 private:
@@ -38,6 +42,11 @@ public:
   enum class Quantity { speed, displacement };
   TableMotion(const Eigen::Vector3d& direction, std::vector<double> times, std::vector<double> values, Quantity q);
   Eigen::Vector3d displacement(double t) const override;
+  /// A displacement table's last time; a speed table's when its last speed is 0.
+  double rest_time() const override {
+    return quantity_ == Quantity::displacement || values_.back() == 0.0 ? times_.back()
+                                                                        : std::numeric_limits<double>::infinity();
+  }
   std::string describe() const override;
 
 private:

@@ -65,7 +65,9 @@ struct TimeSpec {
       0.1;          ///< contact events shorten Δt down to this fraction of the nominal one, and not by less
   int max_cuts = 5; ///< Δt halvings after a Newton failure
   int max_increments = 100000;
-  bool volume_compensation = true; ///< incompressible bodies: restore lost volume each increment
+  bool max_increments_given = false; ///< set in the case: a run cut short on purpose (it then ends with exit 4)
+  std::string source;                ///< "file:line" of the time section
+  bool volume_compensation = true;   ///< incompressible bodies: restore lost volume each increment
   // Stop criteria; the first one reached ends the run.
   double final_stroke = std::numeric_limits<double>::infinity(); ///< mm, of `stroke_die`
   int stroke_die = 0;
@@ -97,6 +99,7 @@ struct ContactSpec {
 struct Case {
   std::string path;                   ///< the case file
   std::vector<std::string> overrides; ///< command-line "key.path=value" changes applied to the file
+  std::vector<std::string> settings;  ///< every key as "key = value", overrides applied (the resume fingerprint)
   std::string title;
   std::string output_directory; ///< empty = out/<case name>
   bool write_vtk = true;

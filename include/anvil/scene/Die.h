@@ -19,6 +19,9 @@ struct Die {
 
   /// Mean velocity over [t, t + Δt] from state `s` (mm/s).
   Eigen::Vector3d velocity(const DieState& s, double time_step) const;
+  /// True when the die will not move again from state `s` (fixed, or its
+  /// motion over: PressKinematics::rest_time).
+  bool at_rest_for_good(const DieState& s) const { return !kinematics || s.press_time >= kinematics->rest_time(); }
   /// Moves the die by one increment of length Δt.
   void advance(DieState& s, double time_step) const;
   /// Load-limited press: after an increment with load `resisting` (N, the

@@ -97,10 +97,17 @@ struct RunState {
   std::vector<double> inside_dies;
 };
 
-/// Writes `state` to `path` through a temporary file and a rename, so a
-/// reader never sees a torn checkpoint. Throws RunError.
-void write_checkpoint(const std::string& path, const RunState& state);
-/// Reads a checkpoint written by write_checkpoint. Throws InputError.
+/// Writes `state` and the case's `fingerprint` (Scene::fingerprint) to `path`
+/// through a temporary file, flushed, then renamed, so a reader never sees a
+/// torn checkpoint and a failed write leaves the one before in place. Throws
+/// RunError.
+void write_checkpoint(const std::string& path, const RunState& state, const std::vector<std::string>& fingerprint);
+/// Reads a checkpoint written by write_checkpoint, checking every index and
+/// size against its mesh and every number for finiteness. Throws InputError
+/// naming the dataset and record.
 RunState read_checkpoint(const std::string& path);
+/// The case fingerprint a checkpoint was written with; empty for checkpoints
+/// written before anvil kept it. Throws InputError.
+std::vector<std::string> read_checkpoint_fingerprint(const std::string& path);
 
 } // namespace anvil::scene

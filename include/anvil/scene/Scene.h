@@ -55,6 +55,7 @@ struct Scene {
   std::vector<Die> dies;
   std::vector<LoadSurface> surfaces;           ///< the dies, then the velocity conditions
   std::vector<std::string> effects;            ///< resolve_effects
+  std::vector<std::string> fingerprint;        ///< case_fingerprint: what a resumed run compares
   mesh::TetMesh initial_mesh;                  ///< the bodies as built: one mesh of disjoint parts
   std::vector<mesh::MeshRange> initial_ranges; ///< each body in initial_mesh
   /// Every body elastic and no time loop: the unknown is the displacement
@@ -78,8 +79,9 @@ struct Scene {
 /// The state of a run that starts: the bodies as built, at rest, t = 0.
 RunState initial_state(const Scene& scene);
 
-/// Throws InputError when a checkpoint's state does not belong to the scene.
-void check_resumable(const Scene& scene, const RunState& state);
+/// Throws InputError when the state of the checkpoint at `path` does not
+/// belong to the scene (its dies, bodies, load surfaces, outputs).
+void check_resumable(const Scene& scene, const RunState& state, const std::string& path);
 
 /// mm³ of body `body`, as `range` of `mesh` holds it, inside the dies at `dies_now`.
 double inside_dies(const Scene& scene, const mesh::TetMesh& mesh, const mesh::MeshRange& range, int body,

@@ -10,11 +10,23 @@ namespace anvil::scene {
 struct RunOptions {
   std::string output_directory; ///< overrides the case's when not empty
   bool resume = false;          ///< continue from <output directory>/checkpoint.h5
+  /// With resume: continue although the case, its material cards, meshes or
+  /// dies changed since the checkpoint (the log lists the changes).
+  bool allow_changes = false;
 };
 
-/// Returns normally on success; throws InputError for bad input (before any
-/// result file is written) and RunError when the solve fails.
-void run(const Case& c, const RunOptions& options);
+/// How a run that returned ended.
+struct RunEnd {
+  std::string stop; ///< the stop criterion met, or why the run stopped short
+  /// False when time.max_increments ended the run before its stop criterion
+  /// (`anvil run` then exits with 4).
+  bool complete = true;
+};
+
+/// Returns when the run ends, its outputs written; throws InputError for bad
+/// input (before any result file is written) and RunError when the solve or
+/// a write fails.
+RunEnd run(const Case& c, const RunOptions& options);
 
 /// The folder a run of `c` writes to.
 std::string output_directory(const Case& c, const RunOptions& options);

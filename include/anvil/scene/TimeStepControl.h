@@ -9,6 +9,13 @@
 
 namespace anvil::scene {
 
+/// Why a run stops.
+struct Stop {
+  std::string reason;   ///< empty while the run goes on
+  bool complete = true; ///< false when it ends short of its stop criterion (`anvil run` exits with 4)
+  explicit operator bool() const { return !reason.empty(); }
+};
+
 /// The lengths of one increment (s).
 struct TimeStep {
   /// The stroke increment at the current press speed: contact recovery and
@@ -35,8 +42,14 @@ public:
   /// the increment there: not when it leaves a sliver of the step, below
   /// min_step_fraction of the planned Δt, before or after it.
   bool ends_at_contact(const TimeStep& step, double touch) const;
-  /// Why the run stops at `state`, empty while it goes on.
-  std::string stop_reason(const RunState& state) const;
+  /// Whether and why the run stops at `state`: a stop criterion met
+  /// (complete), or one that can no longer be met (a stroke die come to
+  /// rest, dies that no longer close on a gap stop) or time.max_increments
+  /// reached first (not complete).
+  Stop stop(const RunState& state) const;
+  /// The stop criteria and where `state` stands against them, e.g.
+  /// "final stroke 1 mm of die 'top', at 0.5 mm".
+  std::string describe_stop(const RunState& state) const;
   /// Fraction of the run done at `state` (the stop criterion nearest to being met).
   double progress(const RunState& state) const;
 

@@ -9,14 +9,17 @@
 
 namespace anvil::scene {
 
-enum class KeyType { integer, number, string, boolean, vector3, numbers, list, map };
+/// `name`: a string that becomes part of file names and CSV fields (letters,
+/// digits, '_', '-', '.'; not '.' or '..'; at most 64 characters).
+enum class KeyType { integer, number, string, name, boolean, vector3, numbers, list, map };
 
 struct KeySpec {
   std::string path; ///< dotted; list items as "[]", e.g. "bodies[].mesh.file"
   KeyType type;
   std::string default_value; ///< as text; empty when required or optional without default
   bool required = false;
-  double min = -std::numeric_limits<double>::infinity(); ///< numbers: allowed range
+  /// numbers: allowed range; integers are at most that of a 32-bit int
+  double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
   bool min_exclusive = false;
   std::vector<std::string> choices; ///< strings: allowed values (empty = any)

@@ -1,0 +1,21 @@
+// How many nodes a run can afford on this machine, checked before a mesh is
+// built (a mistyped element size must not grow to gigabytes first).
+#pragma once
+#include <string>
+
+namespace anvil::mesh {
+
+/// Memory a run takes per mesh node with the iterative solver: 17-23 kB
+/// measured (tools/bench_increment: 4.5 GB at 269k nodes for a Newtonian
+/// block, 6.3 GB for Norton-Hoff m = 0.1); the direct solvers take more.
+inline constexpr double kRunBytesPerNode = 20e3;
+
+/// Physical memory of this machine (bytes).
+double physical_memory();
+
+/// Throws InputError "`where`: about N nodes ..." when a mesh of `nodes`
+/// nodes would not fit in this machine's memory, or past the 32-bit indices
+/// of the linear system.
+void check_node_budget(double nodes, const std::string& where);
+
+} // namespace anvil::mesh
