@@ -7,6 +7,7 @@
 #include "anvil/scene/Simulation.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -53,39 +54,135 @@ inline const std::vector<MeshPair>& mesh_pairs() {
 struct Errors {
   double interface_max = 0.0, interface_rms = 0.0; ///< over the interface nodes of both bodies
   double interior_max = 0.0;                       ///< over the elements of both bodies
+  std::array<double, 2> body_max{}, body_rms{};    ///< σzz over the elements of the lower and upper body
+  double master_penetration = 0.0; ///< deepest master node into the slave (mm; mm/s for flowing bodies), ≥ 0
   int interface_nodes = 0;
-  double wall_time = 0.0; ///< s
+  double wall_time = 0.0;    ///< s, the whole run
+  double contact_time = 0.0; ///< s, contact search and contact terms
   int newton_iterations = 0;
 };
 
-/// Runs one configuration into `out` (emptied first) and measures the
-/// relative errors against the uniform exact stress.
-inline Errors run(const LoadCase& load, const MeshPair& meshes, const std::string& formulation,
-                  const std::string& source_dir, const std::string& out) {
-  auto size = [](int cells) { return std::to_string(10.0 / cells); };
-  anvil::scene::Case c = anvil::scene::read_case(source_dir + "/" + load.file,
-                                                 {"bodies[0].mesh.element_size=" + size(meshes.master_cells),
-                                                  "bodies[1].mesh.element_size=" + size(meshes.slave_cells),
-                                                  "contact_pairs[0].formulation=" + formulation,
-                                                  // the table measures the formulation's error: Newton far below it
-                                                  // (the run's default 1e-6 moves the errors' fourth digit)
-                                                  "solver.tolerance=1e-10", "solver.increment_tolerance=1e-10"});
+/// Runs `case_file` (relative to the source tree) with `overrides` into
+/// `out` (emptied first) and measures the relative errors against the
+/// uniform exact stress. Newton is converged far below the errors measured
+/// (the runs' default 1e-6 would move their fourth digit).
+inline Errors run_case(const std::string& case_file, std::vector<std::string> overrides, double exact_stress,
+                       const std::string& master_body, const std::string& source_dir, const std::string& out) {
+  overrides.insert(overrides.end(), {"solver.tolerance=1e-10", "solver.increment_tolerance=1e-10"});
+  anvil::scene::Case c = anvil::scene::read_case(source_dir + "/" + case_file, overrides);
   std::filesystem::remove_all(out);
   anvil::scene::run(c, {out});
   Errors e;
   double sum_sq = 0.0;
   for (const anvil::io::InterfaceRow& row : anvil::io::read_interface(out)) {
-    const double error = std::abs(row.normal_stress - load.exact_stress) / load.exact_stress;
+    const double error = std::abs(row.normal_stress - exact_stress) / exact_stress;
     e.interface_max = std::max(e.interface_max, error);
     sum_sq += error * error;
     ++e.interface_nodes;
+    // The run starts touching (gap 0): the penetration is the closing motion.
+    if (row.body == master_body) e.master_penetration = std::max(e.master_penetration, -(row.gap + row.gap_rate));
   }
   e.interface_rms = std::sqrt(sum_sq / std::max(e.interface_nodes, 1));
   const std::vector<double> stress = anvil::io::read_last_cell_field(out, "stress", 6);
-  for (std::size_t k = 2; k < stress.size(); k += 6)
-    e.interior_max = std::max(e.interior_max, std::abs(-stress[k] - load.exact_stress) / load.exact_stress);
+  const std::vector<double> body = anvil::io::read_last_cell_field(out, "body_id", 1);
+  std::array<int, 2> cells{};
+  for (std::size_t cell = 0; cell < body.size(); ++cell) {
+    const int b = body[cell] > 0.5 ? 1 : 0;
+    const double error = std::abs(-stress[6 * cell + 2] - exact_stress) / exact_stress;
+    e.body_max[b] = std::max(e.body_max[b], error);
+    e.body_rms[b] += error * error;
+    ++cells[b];
+  }
+  for (int b = 0; b < 2; ++b)
+    e.body_rms[b] = std::sqrt(e.body_rms[b] / std::max(cells[b], 1));
+  e.interior_max = std::max(e.body_max[0], e.body_max[1]);
   e.wall_time = anvil::io::read_summary_number(out, "total");
+  e.contact_time = anvil::io::read_summary_number(out, "search") + anvil::io::read_summary_number(out, "contact");
   e.newton_iterations = static_cast<int>(anvil::io::read_summary_number(out, "newton_iterations"));
+  return e;
+}
+
+/// One configuration of the paper's blocks: the lower block is the master.
+inline Errors run(const LoadCase& load, const MeshPair& meshes, const std::string& formulation,
+                  const std::string& source_dir, const std::string& out) {
+  auto size = [](int cells) { return std::to_string(10.0 / cells); };
+  return run_case(load.file,
+                  {"bodies[0].mesh.element_size=" + size(meshes.master_cells),
+                   "bodies[1].mesh.element_size=" + size(meshes.slave_cells),
+                   "contact_pairs[0].formulation=" + formulation},
+                  load.exact_stress, "lower", source_dir, out);
+}
+
+// The 3D patch test on two stacked unit cubes (cases/patch_test_cubes*.yaml),
+// the set-up contact codes are compared on: n_l cells per edge in the lower
+// cube, n_u in the upper one, either body as master, every formulation and
+// integration.
+
+struct CubesLoad {
+  const char* name;
+  const char* file;     ///< relative to the source tree
+  const char* material; ///< card for both cubes, relative to the case file
+  double stiffness;     ///< G (elastic) or η (Newtonian): the secant viscosity ρ is scaled by (MPa, MPa·s)
+  double penalty;       ///< ρ wanted (MPa/mm elastic, MPa·s/mm Newtonian)
+  double exact_stress;  ///< MPa, the uniform |σzz|
+};
+
+/// ρ = 1e6 MPa/mm for the elastic cubes (the compared codes' penalty), and
+/// for the Newtonian ones the same compliance relative to the motion:
+/// (σ/ρ)/(σH/3η) = 3η/(ρH) = E/(1e6 H) = 5e-4 gives ρ = 3000 MPa·s/mm.
+/// Exact stresses: 1 MPa pressure; E u/H = 1000 × 0.002/2; 3ηV/H = 3 × 0.002/2.
+inline const std::vector<CubesLoad>& cubes_loads() {
+  static const std::vector<CubesLoad> loads = {
+      {"elastic 0.3, pressure", "cases/patch_test_cubes.yaml", "../materials/patch_test_elastic.yaml", 1000.0 / 2.6,
+       1e6, 1.0},
+      {"elastic 0.49, pressure", "cases/patch_test_cubes.yaml",
+       "../materials/patch_test_elastic_nearly_incompressible.yaml", 1000.0 / 2.98, 1e6, 1.0},
+      {"elastic 0.3, displacement", "cases/patch_test_cubes_displacement.yaml", "../materials/patch_test_elastic.yaml",
+       1000.0 / 2.6, 1e6, 1.0},
+      {"elastic 0.49, displacement", "cases/patch_test_cubes_displacement.yaml",
+       "../materials/patch_test_elastic_nearly_incompressible.yaml", 1000.0 / 2.98, 1e6, 1.0},
+      {"Newtonian, pressure", "cases/patch_test_cubes.yaml", "../materials/newtonian_reference.yaml", 1.0, 3000.0, 1.0},
+      {"Newtonian, velocity", "cases/patch_test_cubes_displacement.yaml", "../materials/newtonian_reference.yaml", 1.0,
+       3000.0, 0.003},
+  };
+  return loads;
+}
+
+struct CubesMeshes {
+  int lower, upper; ///< cells per edge
+};
+
+inline const std::vector<CubesMeshes>& cubes_meshes() {
+  static const std::vector<CubesMeshes> meshes = {{2, 8}, {3, 7}, {4, 4},  {4, 5}, {5, 4},
+                                                  {7, 3}, {8, 2}, {2, 16}, {16, 2}};
+  return meshes;
+}
+
+struct CubesMethod {
+  std::string formulation = "quasi_symmetric", integration = "facet";
+  bool lower_master = true;
+  int facet_subdivision = -1; ///< −1: the case's default
+};
+
+inline Errors run_cubes(const CubesLoad& load, const CubesMeshes& meshes, const CubesMethod& method,
+                        const std::string& source_dir, const std::string& out) {
+  auto size = [](int cells) { return std::to_string(1.0 / cells); };
+  // contact.penalty scales 3 × the secant viscosity over the scene size (the
+  // stacked cubes' diagonal, √6 mm) into ρ.
+  const double factor = load.penalty * std::sqrt(6.0) / (3.0 * load.stiffness);
+  const std::string master = method.lower_master ? "lower" : "upper", slave = method.lower_master ? "upper" : "lower";
+  std::vector<std::string> overrides = {"bodies[].material=" + std::string(load.material),
+                                        "bodies[0].mesh.element_size=" + size(meshes.lower),
+                                        "bodies[1].mesh.element_size=" + size(meshes.upper),
+                                        "contact_pairs[0].master=" + master,
+                                        "contact_pairs[0].slave=" + slave,
+                                        "contact_pairs[0].formulation=" + method.formulation,
+                                        "contact_pairs[0].integration=" + method.integration,
+                                        "contact.penalty=" + std::to_string(factor)};
+  if (method.facet_subdivision >= 0)
+    overrides.push_back("contact_pairs[0].facet_subdivision=" + std::to_string(method.facet_subdivision));
+  Errors e = run_case(load.file, overrides, load.exact_stress, master, source_dir, out);
+  e.master_penetration /= load.exact_stress / load.penalty; // over the penalty's own penetration σ/ρ
   return e;
 }
 

@@ -1,12 +1,14 @@
 #include "anvil/contact/BodyContact.h"
 
 #include "anvil/contact/SurfaceSearch.h"
+#include "anvil/contact/facet_quadrature.h"
 #include "anvil/core/error.h"
 #include "anvil/fem/DofMap.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace anvil::contact {
 
@@ -17,6 +19,23 @@ PairFormulation pair_formulation(const std::string& name) {
   if (name == "symmetric") return PairFormulation::symmetric;
   if (name == "quasi_symmetric") return PairFormulation::quasi_symmetric;
   throw InputError("unknown contact formulation '" + name + "' (expected master_slave, symmetric or quasi_symmetric)");
+}
+
+PairIntegration pair_integration(const std::string& name) {
+  if (name == "nodal") return PairIntegration::nodal;
+  if (name == "facet") return PairIntegration::facet;
+  throw InputError("unknown contact integration '" + name + "' (expected nodal or facet)");
+}
+
+std::string to_string(PairIntegration integration) {
+  return integration == PairIntegration::nodal ? "nodal" : "facet";
+}
+
+std::string describe(const PairMethod& method) {
+  std::string text = to_string(method.formulation) + ", " + to_string(method.integration);
+  if (method.integration == PairIntegration::facet)
+    text += " (facets split up to " + std::to_string(method.facet_subdivision) + " levels)";
+  return text;
 }
 
 std::string to_string(PairFormulation formulation) {
@@ -33,8 +52,9 @@ std::string to_string(PairFormulation formulation) {
 
 namespace {
 
-/// Barycentric coordinates of `q` (on or near the plane of triangle abc), clamped to the triangle.
-Eigen::Vector3d barycentric(const mesh::Point& q, const mesh::Point& a, const mesh::Point& b, const mesh::Point& c) {
+/// Barycentric coordinates of the projection of `q` onto the plane of triangle abc.
+Eigen::Vector3d plane_barycentric(const mesh::Point& q, const mesh::Point& a, const mesh::Point& b,
+                                  const mesh::Point& c) {
   const Eigen::Vector3d e0 = b - a, e1 = c - a, r = q - a;
   const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = r.dot(e0), d21 = r.dot(e1);
   const double det = d00 * d11 - d01 * d01;
@@ -42,7 +62,12 @@ Eigen::Vector3d barycentric(const mesh::Point& q, const mesh::Point& a, const me
   l[1] = (d11 * d20 - d01 * d21) / det;
   l[2] = (d00 * d21 - d01 * d20) / det;
   l[0] = 1.0 - l[1] - l[2];
-  l = l.cwiseMax(0.0);
+  return l;
+}
+
+/// Barycentric coordinates of `q` (on or near the plane of triangle abc), clamped to the triangle.
+Eigen::Vector3d barycentric(const mesh::Point& q, const mesh::Point& a, const mesh::Point& b, const mesh::Point& c) {
+  const Eigen::Vector3d l = plane_barycentric(q, a, b, c).cwiseMax(0.0);
   return l / l.sum();
 }
 
@@ -59,25 +84,125 @@ Eigen::Vector3d own_normal(const mesh::TetMesh& mesh, const std::vector<int>& fa
   return n.normalized();
 }
 
-/// The smaller of a nodal value at the point's node and at its projection:
+/// Σ_j w_j value[node_j] over the nodes of positive weight.
+double interpolate(const std::vector<double>& nodal_value, const std::array<int, 3>& nodes, const Eigen::Vector3d& w) {
+  double value = 0.0;
+  for (int j = 0; j < 3; ++j)
+    if (w[j] > 0.0) value += w[j] * nodal_value[nodes[j]];
+  return value;
+}
+
+/// The smaller of a nodal value at the point and at its projection:
 /// friction is bounded by the weaker body (an elastic die's value is infinite).
 double weaker_side(const std::vector<double>& nodal_value, const ContactPoint& p) {
-  double facet = 0.0;
-  for (int j = 0; j < 3; ++j)
-    if (p.shape[j] > 0.0) facet += p.shape[j] * nodal_value[p.facet[j]];
-  return std::min(nodal_value[p.node], facet);
+  return std::min(interpolate(nodal_value, p.own, p.own_shape), interpolate(nodal_value, p.facet, p.shape));
+}
+
+/// The six nodes of a point's relative velocity and their coefficients in
+/// w = sense (Σ M_i v_i − Σ N_j v_j); an own node of −1 is absent.
+struct RelativeStencil {
+  std::array<int, 6> nodes;
+  std::array<double, 6> coefficient;
+};
+RelativeStencil stencil(const ContactPoint& p, double sense) {
+  RelativeStencil s;
+  for (int k = 0; k < 3; ++k) {
+    s.nodes[k] = p.own[k], s.coefficient[k] = sense * p.own_shape[k];
+    s.nodes[3 + k] = p.facet[k], s.coefficient[3 + k] = -sense * p.shape[k];
+  }
+  return s;
+}
+
+/// Where a point projects onto the other body of its pair.
+struct Projection {
+  int facet;              ///< index into mesh.boundary_faces
+  Eigen::Vector3d shape;  ///< N_j(ξ)
+  Eigen::Vector3d normal; ///< the facet body's outward normal, towards the point
+  double gap;             ///< δ₀ (mm)
+};
+
+/// One side of a pair seen from the other: its boundary facets, their search
+/// tree, and the facets around each node.
+struct Side {
+  const mesh::TetMesh& mesh;
+  const mesh::MeshRange& range;
+  const std::vector<std::vector<int>>& node_faces;
+  std::vector<mesh::Triangle> faces;
+  SurfaceSearch surface;
+
+  Side(const mesh::TetMesh& m, const mesh::MeshRange& r, const std::vector<std::vector<int>>& nf)
+      : mesh(m), range(r), node_faces(nf),
+        faces(m.boundary_faces.begin() + r.first_face, m.boundary_faces.begin() + r.first_face + r.face_count),
+        surface(m.nodes, faces) {}
+
+  bool holds_face(int f) const { return f >= range.first_face && f < range.first_face + range.face_count; }
+
+  /// Projects x, a point of the other body whose outward normal there is
+  /// `own`; nothing when it is `search_distance` or more from this side.
+  std::optional<Projection> project(const mesh::Point& x, const Eigen::Vector3d& own, double search_distance) const {
+    const SurfaceSearch::Closest hit = surface.closest(x);
+    // On an edge or a vertex several facets hold the closest point (to a
+    // hair: two blocks sharing a symmetry plane meet there to round-off);
+    // the one that faces the point's own surface best gives the normal and
+    // the side (a point on the rim of a block lying on another must not
+    // take the side face of the block below).
+    const double hair = std::max(1e-9 * (1.0 + hit.point.norm()), 1e-3 * search_distance);
+    int best = range.first_face + hit.face;
+    double best_facing = mesh::area_vector(mesh, mesh.boundary_faces[best]).normalized().dot(own);
+    for (int vertex : faces[hit.face])
+      for (int f : node_faces[vertex]) {
+        if (!holds_face(f)) continue;
+        const mesh::Triangle& t = mesh.boundary_faces[f];
+        const double facing = mesh::area_vector(mesh, t).normalized().dot(own);
+        const Eigen::Vector3d l = barycentric(hit.point, mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]);
+        if (facing < best_facing && (point_on(mesh, t, l) - hit.point).norm() <= hair) best = f, best_facing = facing;
+      }
+    const mesh::Triangle& facet = mesh.boundary_faces[best];
+    const Eigen::Vector3d facet_normal = mesh::area_vector(mesh, facet).normalized();
+    // Inside a facet (or off its edge by a hair: bodies pressed together
+    // widen alike, to round-off) the offset is along its normal; off an
+    // edge or a vertex the offset direction is the surface normal there.
+    // The side comes from the facet.
+    const Eigen::Vector3d shape = barycentric(x, mesh.nodes[facet[0]], mesh.nodes[facet[1]], mesh.nodes[facet[2]]);
+    const Eigen::Vector3d offset = x - point_on(mesh, facet, shape);
+    const double along_normal = offset.dot(facet_normal);
+    const double lateral = (offset - along_normal * facet_normal).norm();
+    const bool over_facet = lateral <= hair;
+    const double side = along_normal >= 0.0 ? 1.0 : -1.0;
+    Projection p{best, shape, over_facet ? facet_normal : Eigen::Vector3d(side * offset / offset.norm()),
+                 over_facet ? along_normal : side * offset.norm()};
+    // Touching to round-off is touching: a quadrature point interpolated
+    // between nodes on the other body's plane lies off it by 1e-16, and a
+    // static case has no speed to set an active-set tolerance from.
+    if (std::abs(p.gap) <= 1e-12 * (1.0 + x.norm())) p.gap = 0.0;
+    // Deeper than the reach is not a penetration of this increment: the
+    // point lies behind the other body's edge (a block's top corner over
+    // the side of the block below), where the side test is ambiguous.
+    if (std::abs(p.gap) >= search_distance) return std::nullopt;
+    return p;
+  }
+};
+
+/// A face looks at the other body when its outward normal opposes the
+/// other body's normal by more than about 70° (not the sides of a block,
+/// whose edge nodes would otherwise weigh double).
+bool looks_at(const Eigen::Vector3d& face_area_vector, const Eigen::Vector3d& other_normal) {
+  return face_area_vector.dot(other_normal) < -0.3 * face_area_vector.norm();
 }
 
 } // namespace
 
 Eigen::Vector3d relative_velocity(const ContactPoint& p, const Eigen::VectorXd& nodal) {
-  Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * p.node);
+  Eigen::Vector3d relative = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k)
+    if (p.own[k] >= 0) relative += p.own_shape[k] * nodal.segment<3>(kDofsPerNode * p.own[k]);
   for (int j = 0; j < 3; ++j)
     relative -= p.shape[j] * nodal.segment<3>(kDofsPerNode * p.facet[j]);
   return relative;
 }
 
 void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
+  nodes_.clear();
   points_.clear();
   std::vector<std::vector<int>> node_faces(mesh.nodes.size());
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
@@ -86,75 +211,88 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
 
   for (std::size_t q = 0; q < pairs_.size(); ++q) {
     const BodyPair& pair = pairs_[q];
-    const bool one_sided = pair.formulation == PairFormulation::master_slave;
-    const double share = one_sided ? 1.0 : 0.5; // f_p: eq. 19 against the ½ of eqs. 20-21
-    auto project = [&](const mesh::MeshRange& from, const mesh::MeshRange& onto, bool on_slave) {
-      const auto first = mesh.boundary_faces.begin() + onto.first_face;
-      const std::vector<mesh::Triangle> faces(first, first + onto.face_count);
-      const SurfaceSearch surface(mesh.nodes, faces);
-      for (int node = from.first_node; node < from.first_node + from.node_count; ++node) {
+    const bool one_sided = pair.method.formulation == PairFormulation::master_slave;
+    const double share = one_sided ? 1.0 : 0.5; // f_p: eqs. 10, 19 against the ½ of eqs. 12, 14, 20, 21
+    const Side master(mesh, pair.master, node_faces), slave(mesh, pair.slave, node_faces);
+    auto project_nodes = [&](const Side& from, const Side& onto, bool on_slave) {
+      for (int node = from.range.first_node; node < from.range.first_node + from.range.node_count; ++node) {
         if (node_faces[node].empty()) continue; // interior node
-        const mesh::Point& x = mesh.nodes[node];
-        const SurfaceSearch::Closest hit = surface.closest(x);
-        // On an edge or a vertex several facets hold the closest point (to a
-        // hair: two blocks sharing a symmetry plane meet there to round-off);
-        // the one that faces the node's own surface best gives the normal and
-        // the side (a node on the rim of a block lying on another must not
-        // take the side face of the block below).
-        const double hair = std::max(1e-9 * (1.0 + hit.point.norm()), 1e-3 * search_distance);
-        const Eigen::Vector3d own = own_normal(mesh, node_faces[node]);
-        int best = onto.first_face + hit.face;
-        double best_facing = mesh::area_vector(mesh, mesh.boundary_faces[best]).normalized().dot(own);
-        for (int vertex : faces[hit.face])
-          for (int f : node_faces[vertex]) {
-            if (f < onto.first_face || f >= onto.first_face + onto.face_count) continue;
-            const mesh::Triangle& t = mesh.boundary_faces[f];
-            const double facing = mesh::area_vector(mesh, t).normalized().dot(own);
-            const Eigen::Vector3d l = barycentric(hit.point, mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]);
-            if (facing < best_facing && (point_on(mesh, t, l) - hit.point).norm() <= hair)
-              best = f, best_facing = facing;
-          }
-        const mesh::Triangle& facet = mesh.boundary_faces[best];
-        const Eigen::Vector3d facet_normal = mesh::area_vector(mesh, facet).normalized();
-        // Inside a facet (or off its edge by a hair: bodies pressed together
-        // widen alike, to round-off) the offset is along its normal; off an
-        // edge or a vertex the offset direction is the surface normal there.
-        // The side comes from the facet.
-        const Eigen::Vector3d shape = barycentric(x, mesh.nodes[facet[0]], mesh.nodes[facet[1]], mesh.nodes[facet[2]]);
-        const Eigen::Vector3d offset = x - point_on(mesh, facet, shape);
-        const double along_normal = offset.dot(facet_normal);
-        const double lateral = (offset - along_normal * facet_normal).norm();
-        const bool over_facet = lateral <= hair;
-        const double side = along_normal >= 0.0 ? 1.0 : -1.0;
-        const Eigen::Vector3d normal = over_facet ? facet_normal : Eigen::Vector3d(side * offset / offset.norm());
-        const double gap = over_facet ? along_normal : side * offset.norm();
-        // Deeper than the reach is not a penetration of this increment: the
-        // node lies behind the other body's edge (a block's top corner over
-        // the side of the block below), where the side test is ambiguous.
-        if (std::abs(gap) >= search_distance) continue;
-        // Tributary area on the faces that look at the other body (not the
-        // sides of a block, whose edge nodes would otherwise weigh double).
-        double area = 0.0;
-        for (int f : node_faces[node]) {
-          const Eigen::Vector3d n = mesh::area_vector(mesh, mesh.boundary_faces[f]);
-          if (n.dot(normal) < -0.3 * n.norm()) area += n.norm() / 3.0;
-        }
+        const std::optional<Projection> hit =
+            onto.project(mesh.nodes[node], own_normal(mesh, node_faces[node]), search_distance);
+        if (!hit) continue;
+        double area = 0.0; // tributary area on the faces that look at the other body
+        for (int f : node_faces[node])
+          if (const Eigen::Vector3d n = mesh::area_vector(mesh, mesh.boundary_faces[f]); looks_at(n, hit->normal))
+            area += n.norm() / 3.0;
         if (area == 0.0) continue; // no face looks at the other body: not on its contact surface
-        ContactPoint p;
-        p.pair = static_cast<int>(q);
-        p.node = node;
-        p.facet = facet;
-        p.shape = shape;
-        p.normal = normal;
-        p.gap = gap;
-        p.area = area;
-        p.share = share;
-        p.on_slave = on_slave;
-        points_.push_back(p);
+        nodes_.push_back({.pair = static_cast<int>(q),
+                          .own = {node, -1, -1},
+                          .facet = mesh.boundary_faces[hit->facet],
+                          .shape = hit->shape,
+                          .normal = hit->normal,
+                          .gap = hit->gap,
+                          .area = area,
+                          .share = share,
+                          .gap_weight = share,
+                          .on_slave = on_slave});
       }
     };
-    project(pair.slave, pair.master, true);
-    if (!one_sided) project(pair.master, pair.slave, false);
+    const std::size_t first_node = nodes_.size();
+    project_nodes(slave, master, true);
+    if (!one_sided) project_nodes(master, slave, false);
+    if (pair.method.integration == PairIntegration::nodal) {
+      points_.insert(points_.end(), nodes_.begin() + static_cast<std::ptrdiff_t>(first_node), nodes_.end());
+      continue;
+    }
+    auto project_facets = [&](const Side& from, const Side& onto, bool on_slave) {
+      for (int f = from.range.first_face; f < from.range.first_face + from.range.face_count; ++f) {
+        const mesh::Triangle& t = mesh.boundary_faces[f];
+        const Eigen::Vector3d area_vector = mesh::area_vector(mesh, t);
+        const Eigen::Vector3d own = area_vector.normalized();
+        double longest = 0.0;
+        for (int k = 0; k < 3; ++k)
+          longest = std::max(longest, (mesh.nodes[t[k]] - mesh.nodes[t[(k + 1) % 3]]).norm());
+        // Sub-triangle `c`, a fraction `area_fraction` of the facet with its
+        // longest edge `size`, at subdivision `level` (facet_quadrature.h).
+        auto integrate = [&](auto& self, const SubTriangle& c, int level, double area_fraction, double size) -> void {
+          // A sub-triangle whose centroid is beyond the reach by more than
+          // its longest edge has no point within reach.
+          const std::optional<Projection> centre =
+              onto.project(point_on(mesh, t, (c[0] + c[1] + c[2]) / 3.0), own, search_distance + size);
+          if (!centre) return;
+          const mesh::Triangle& other = mesh.boundary_faces[centre->facet];
+          bool one_facet = true; // every corner projects into the centroid's facet
+          for (const Eigen::Vector3d& corner : c)
+            one_facet = one_facet && plane_barycentric(point_on(mesh, t, corner), mesh.nodes[other[0]],
+                                                       mesh.nodes[other[1]], mesh.nodes[other[2]])
+                                             .minCoeff() >= -1e-9;
+          if (!one_facet && level < pair.method.facet_subdivision) {
+            for (const SubTriangle& child : split(c))
+              self(self, child, level + 1, area_fraction / 4.0, size / 2.0);
+            return;
+          }
+          for (const FacetQuadraturePoint& g : degree_two_rule(c, area_fraction)) {
+            const std::optional<Projection> hit = onto.project(point_on(mesh, t, g.barycentric), own, search_distance);
+            if (!hit || !looks_at(area_vector, hit->normal)) continue;
+            const double area = g.weight * area_vector.norm();
+            points_.push_back({.pair = static_cast<int>(q),
+                               .own = t,
+                               .own_shape = g.barycentric,
+                               .facet = mesh.boundary_faces[hit->facet],
+                               .shape = hit->shape,
+                               .normal = hit->normal,
+                               .gap = hit->gap,
+                               .area = area,
+                               .share = share,
+                               .gap_weight = share * area,
+                               .on_slave = on_slave});
+          }
+        };
+        integrate(integrate, whole_facet(), 0, 1.0, longest);
+      }
+    };
+    project_facets(slave, master, true);
+    if (!one_sided) project_facets(master, slave, false);
   }
   build_multipliers(mesh.node_count());
 }
@@ -162,38 +300,56 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
 void BodyContact::build_multipliers(int node_count) {
   multipliers_.clear();
   support_.clear();
-  // Multiplier of each slave node (master/slave, quasi-symmetric). Points come
-  // pair by pair, so an entry left by an earlier pair is recognised by its pair.
-  std::vector<int> slave_multiplier(static_cast<std::size_t>(node_count), -1);
-  auto multiplier_of = [&](int pair, int node) {
-    int& index = slave_multiplier[node];
-    if (index < 0 || multipliers_[index].pair != pair) {
+  // The λ of each (pair, node), and the projection of each quasi-symmetric
+  // master node onto the slave surface (eq. 16), by (pair, node).
+  const std::size_t nodes = static_cast<std::size_t>(node_count);
+  std::vector<int> own_multiplier(nodes * pairs_.size(), -1), master_projection(nodes * pairs_.size(), -1);
+  for (std::size_t i = 0; i < nodes_.size(); ++i)
+    if (!nodes_[i].on_slave) master_projection[nodes * nodes_[i].pair + nodes_[i].node()] = static_cast<int>(i);
+  // λ of `node` in `pair`; created when `create` (never an empty one), else −1 when absent.
+  auto multiplier_of = [&](int pair, int node, bool create) {
+    int& index = own_multiplier[nodes * pair + node];
+    if (index < 0 && create) {
       multipliers_.push_back({pair});
       index = static_cast<int>(multipliers_.size()) - 1;
     }
     return index;
   };
-  for (ContactPoint& p : points_) {
-    const PairFormulation formulation = pairs_[p.pair].formulation;
-    if (formulation == PairFormulation::symmetric) {
-      multipliers_.push_back({p.pair});
-      p.multiplier = {static_cast<int>(multipliers_.size()) - 1, -1, -1};
-      p.multiplier_weight = Eigen::Vector3d(1.0, 0.0, 0.0);
-    } else if (p.on_slave) {
-      p.multiplier = {multiplier_of(p.pair, p.node), -1, -1};
-      p.multiplier_weight = Eigen::Vector3d(1.0, 0.0, 0.0);
-    } else { // quasi-symmetric master node: the slave facet's λ, interpolated (eq. 22)
+  auto add_weight = [](std::vector<MultiplierWeight>& list, int m, double w) {
+    if (m < 0 || w <= 0.0) return;
+    for (MultiplierWeight& e : list)
+      if (e.multiplier == m) return void(e.weight += w);
+    list.push_back({m, w});
+  };
+  // W_pm of a point (see the header); `create` for the points that make the
+  // constraints, not for the projected nodes that only report them.
+  auto weigh = [&](ContactPoint& p, bool create) {
+    p.multipliers.clear();
+    const BodyPair& pair = pairs_[p.pair];
+    const bool interpolated = pair.method.formulation == PairFormulation::quasi_symmetric && !p.on_slave;
+    if (!interpolated) { // its own nodes' λ (eqs. 10-13, 19-20)
       for (int k = 0; k < 3; ++k)
-        if (p.shape[k] > 0.0) p.multiplier[k] = multiplier_of(p.pair, p.facet[k]); // no empty multiplier
-      p.multiplier_weight = p.shape;
+        if (p.own[k] >= 0) add_weight(p.multipliers, multiplier_of(p.pair, p.own[k], create), p.own_shape[k]);
+      return;
     }
-  }
+    for (int l = 0; l < 3; ++l) { // λ̃ at its own nodes, from their projections on the slave (eqs. 17, 22)
+      if (p.own[l] < 0 || p.own_shape[l] <= 0.0) continue;
+      const int projection = master_projection[nodes * p.pair + p.own[l]];
+      if (projection < 0) continue; // out of the slave surface's reach
+      const ContactPoint& n = nodes_[projection];
+      for (int k = 0; k < 3; ++k)
+        add_weight(p.multipliers, multiplier_of(p.pair, n.facet[k], create), p.own_shape[l] * n.shape[k]);
+    }
+  };
+  for (ContactPoint& p : points_)
+    weigh(p, true);
+  for (ContactPoint& n : nodes_)
+    weigh(n, false);
   // Per multiplier, the points feeding it, then its support nodes with merged coefficients.
   std::vector<std::vector<std::pair<int, double>>> feeds(multipliers_.size());
   for (std::size_t i = 0; i < points_.size(); ++i)
-    for (int k = 0; k < 3; ++k)
-      if (points_[i].multiplier[k] >= 0)
-        feeds[points_[i].multiplier[k]].push_back({static_cast<int>(i), points_[i].multiplier_weight[k]});
+    for (const MultiplierWeight& w : points_[i].multipliers)
+      feeds[w.multiplier].push_back({static_cast<int>(i), w.weight});
   for (std::size_t m = 0; m < multipliers_.size(); ++m) {
     Multiplier& mult = multipliers_[m];
     mult.first = static_cast<int>(support_.size());
@@ -208,16 +364,18 @@ void BodyContact::build_multipliers(int node_count) {
     };
     for (const auto& [i, w] : feeds[m]) {
       const ContactPoint& p = points_[i];
-      const double scale = w * p.share;
-      // h_p = −n·(v_node − Σ N_j v_j) − δ₀/Δt; tangential velocity in the
-      // slave's sense (slave − master): sign +1 at a slave node, −1 at a master node.
+      const double scale = w * p.gap_weight;
+      // h_p = −n·(Σ M_i v_i − Σ N_j v_j) − δ₀/Δt; tangential velocity in the
+      // slave's sense (slave − master): sign +1 on the slave, −1 on the master.
       const double sense = p.on_slave ? 1.0 : -1.0;
+      const RelativeStencil st = stencil(p, sense);
       const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
-      add_support(p.node, -scale * p.normal, scale * sense * tangent_projector);
-      for (int j = 0; j < 3; ++j)
-        add_support(p.facet[j], scale * p.shape[j] * p.normal, -scale * sense * p.shape[j] * tangent_projector);
+      for (int a = 0; a < 6; ++a)
+        if (st.nodes[a] >= 0 && st.coefficient[a] != 0.0)
+          add_support(st.nodes[a], -scale * sense * st.coefficient[a] * p.normal,
+                      scale * st.coefficient[a] * tangent_projector);
       mult.node_weight += scale;
-      mult.area += scale * p.area;
+      mult.area += w * p.share * p.area;
       mult.gap_sum += scale * p.gap;
     }
     mult.count = static_cast<int>(support_.size()) - mult.first;
@@ -259,13 +417,16 @@ std::string BodyContact::accept(const Eigen::VectorXd& nodal) {
   return active_.accept(gaps(nodal), "pair constraints");
 }
 
-double BodyContact::pressure(int i, const Eigen::VectorXd& nodal) const {
-  const ContactPoint& p = points_[i];
+double BodyContact::pressure(const ContactPoint& p, const Eigen::VectorXd& nodal) const {
   double pressure = 0.0;
-  for (int k = 0; k < 3; ++k)
-    if (const int m = p.multiplier[k]; m >= 0 && active_[m])
-      pressure += p.multiplier_weight[k] * increment_.penalty * std::max(mean_gap_velocity(m, nodal), 0.0);
+  for (const MultiplierWeight& w : p.multipliers)
+    if (active_[w.multiplier])
+      pressure += w.weight * increment_.penalty * std::max(mean_gap_velocity(w.multiplier, nodal), 0.0);
   return pressure;
+}
+
+double BodyContact::node_pressure(int i, const Eigen::VectorXd& nodal) const {
+  return pressure(nodes_[i], nodal);
 }
 
 void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
@@ -305,10 +466,10 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     if (law.kind == FrictionKind::frictionless || law.kind == FrictionKind::sticking) continue;
     double sigma_n = 0.0;
     bool touching = false;
-    for (int k = 0; k < 3; ++k)
-      if (const int m = p.multiplier[k]; m >= 0 && active_[m]) {
+    for (const MultiplierWeight& w : p.multipliers)
+      if (active_[w.multiplier]) {
         touching = true;
-        sigma_n += p.multiplier_weight[k] * stress_[m];
+        sigma_n += w.weight * stress_[w.multiplier];
       }
     if (!touching) continue;
     const double sense = p.on_slave ? 1.0 : -1.0;
@@ -316,24 +477,26 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     const FrictionStress f = friction_stress(
         law, {sense * tangent_projector * relative_velocity(p, nodal), sigma_n, weaker_side(increment_.flow_stress, p),
               weaker_side(increment_.consistency, p), increment_.regularisation, rho});
-    // w = sense P (v_node − Σ N_j v_j): coefficient of node a in w is c_a P.
-    const std::array<int, 4> nodes{p.node, p.facet[0], p.facet[1], p.facet[2]};
-    const std::array<double, 4> coefficient{sense, -sense * p.shape[0], -sense * p.shape[1], -sense * p.shape[2]};
-    for (int a = 0; a < 4; ++a) {
-      residual.segment<3>(kDofsPerNode * nodes[a]) += coefficient[a] * p.share * p.area * f.stress;
+    // w = sense P (Σ M_i v_i − Σ N_j v_j): coefficient of node a in w is c_a P.
+    const RelativeStencil st = stencil(p, sense);
+    const double area = p.share * p.area;
+    for (int a = 0; a < 6; ++a) {
+      if (st.nodes[a] < 0) continue;
+      residual.segment<3>(kDofsPerNode * st.nodes[a]) += st.coefficient[a] * area * f.stress;
       if (!blocks) continue;
-      for (int b = 0; b < 4; ++b)
-        blocks->push_back(
-            {nodes[a], nodes[b], coefficient[a] * coefficient[b] * p.share * p.area * f.d_sliding * tangent_projector});
+      for (int b = 0; b < 6; ++b)
+        if (st.nodes[b] >= 0)
+          blocks->push_back({st.nodes[a], st.nodes[b],
+                             st.coefficient[a] * st.coefficient[b] * area * f.d_sliding * tangent_projector});
       if (f.d_normal_pressure.isZero()) continue;
       // Coulomb: τ depends on σn = Σ_m W λ_m, λ_m = ρ C_m/G_m.
-      for (int k = 0; k < 3; ++k)
-        if (const int m = p.multiplier[k]; m >= 0 && active_[m]) {
-          const Multiplier& mult = multipliers_[m];
-          const double gain = coefficient[a] * p.share * p.area * p.multiplier_weight[k] * rho / mult.node_weight;
+      for (const MultiplierWeight& w : p.multipliers)
+        if (active_[w.multiplier]) {
+          const Multiplier& mult = multipliers_[w.multiplier];
+          const double gain = st.coefficient[a] * area * w.weight * rho / mult.node_weight;
           for (int s = mult.first; s < mult.first + mult.count; ++s)
             blocks->push_back(
-                {nodes[a], support_[s].node, gain * f.d_normal_pressure * support_[s].normal.transpose()});
+                {st.nodes[a], support_[s].node, gain * f.d_normal_pressure * support_[s].normal.transpose()});
         }
     }
   }
@@ -351,15 +514,16 @@ std::vector<std::pair<int, int>> BodyContact::couplings() const {
   for (const ContactPoint& p : points_) {
     const FrictionKind kind = pairs_[p.pair].friction.kind;
     if (kind == FrictionKind::frictionless || kind == FrictionKind::sticking) continue;
-    const std::array<int, 4> nodes{p.node, p.facet[0], p.facet[1], p.facet[2]};
-    for (int a = 0; a < 4; ++a) {
-      for (int b = a + 1; b < 4; ++b)
-        couple(nodes[a], nodes[b]);
+    const RelativeStencil st = stencil(p, 1.0);
+    for (int a = 0; a < 6; ++a) {
+      if (st.nodes[a] < 0) continue;
+      for (int b = a + 1; b < 6; ++b)
+        if (st.nodes[b] >= 0) couple(st.nodes[a], st.nodes[b]);
       if (kind != FrictionKind::coulomb) continue;
-      for (int k = 0; k < 3; ++k)
-        if (const int m = p.multiplier[k]; m >= 0)
-          for (int s = multipliers_[m].first; s < multipliers_[m].first + multipliers_[m].count; ++s)
-            couple(nodes[a], support_[s].node);
+      for (const MultiplierWeight& w : p.multipliers)
+        for (int s = multipliers_[w.multiplier].first;
+             s < multipliers_[w.multiplier].first + multipliers_[w.multiplier].count; ++s)
+          couple(st.nodes[a], support_[s].node);
     }
   }
   std::sort(pairs.begin(), pairs.end());

@@ -94,10 +94,10 @@ void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation
   }
   if (disc.pair_contact) {
     // Body pairs: the same fields at the nodes projected onto the other body.
-    const auto& points = disc.pair_contact->points();
+    const auto& points = disc.pair_contact->projected_nodes();
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const int node = points[i].node;
-      const double p = disc.pair_contact->pressure(int(i), state.unknowns.nodal);
+      const int node = points[i].node();
+      const double p = disc.pair_contact->node_pressure(int(i), state.unknowns.nodal);
       contact_status.values[node] = std::max(contact_status.values[node], p > 0.0 ? 2.0 : 1.0);
       contact_pressure.values[node] = std::max(contact_pressure.values[node], p);
       gap.values[node] = std::max(points[i].gap, 0.0);
@@ -165,22 +165,22 @@ void RunWriter::write_interface(const scene::Scene& scene, const scene::Discreti
   disc.pair_contact->add(nodal, force, nullptr); // residual = minus the force on the body
   std::vector<contact::BodyPair> both_sides = disc.pair_contact->pairs();
   for (contact::BodyPair& pair : both_sides)
-    pair.formulation = contact::PairFormulation::symmetric;
+    pair.method = {contact::PairFormulation::symmetric, contact::PairIntegration::nodal};
   contact::BodyContact probe(both_sides);
   probe.search(state.mesh, 0.05 * scene.reference_length);
   std::ostringstream csv;
   csv.precision(10);
   csv << "pair,body,node,x_mm,y_mm,z_mm,area_mm2,gap_mm,gap_rate_mm_s,normal_stress_MPa,vx,vy,vz\n";
-  for (const contact::ContactPoint& p : probe.points()) {
+  for (const contact::ContactPoint& p : probe.projected_nodes()) {
     const scene::ContactPairSpec& pair = scene.input.contact_pairs[p.pair];
     const int body = p.on_slave ? pair.slave : pair.master;
     // The contact force pushes the node away from the facet it projects onto: along +n.
-    const double stress = -force.segment<3>(4 * p.node).dot(p.normal) / p.area;
-    const mesh::Point& x = state.mesh.nodes[p.node];
+    const double stress = -force.segment<3>(4 * p.node()).dot(p.normal) / p.area;
+    const mesh::Point& x = state.mesh.nodes[p.node()];
     csv << probe.pairs()[p.pair].name << "," << scene.bodies[body].name << ","
-        << p.node - state.bodies[body].first_node + 1 << "," << x.x() << "," << x.y() << "," << x.z() << "," << p.area
+        << p.node() - state.bodies[body].first_node + 1 << "," << x.x() << "," << x.y() << "," << x.z() << "," << p.area
         << "," << p.gap << "," << contact::relative_velocity(p, nodal).dot(p.normal) << "," << stress << ","
-        << nodal[4 * p.node] << "," << nodal[4 * p.node + 1] << "," << nodal[4 * p.node + 2] << "\n";
+        << nodal[4 * p.node()] << "," << nodal[4 * p.node() + 1] << "," << nodal[4 * p.node() + 2] << "\n";
   }
   write_file_atomically(directory_ + "/interface.csv", csv.str());
 }

@@ -107,7 +107,9 @@ void read_contact_pairs(const CheckedYaml& doc, Case& c) {
         doc.fail(n, shown,
                  "bodies '" + c.bodies[pair.master].name + "' and '" + c.bodies[pair.slave].name +
                      "' already form a contact pair");
-    pair.formulation = contact::pair_formulation(doc.text(n, "formulation", "contact_pairs[].formulation"));
+    pair.method.formulation = contact::pair_formulation(doc.text(n, "formulation", "contact_pairs[].formulation"));
+    pair.method.integration = contact::pair_integration(doc.text(n, "integration", "contact_pairs[].integration"));
+    pair.method.facet_subdivision = doc.integer(n, "facet_subdivision", "contact_pairs[].facet_subdivision");
     pair.friction = read_friction(doc, n, "contact_pairs", shown);
     pair.source = doc.at(n);
     c.contact_pairs.push_back(pair);

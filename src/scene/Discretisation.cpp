@@ -57,7 +57,7 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
     std::vector<contact::BodyPair> list;
     for (const ContactPairSpec& p : scene.input.contact_pairs)
       list.push_back({scene.bodies[p.master].name + "/" + scene.bodies[p.slave].name, state.bodies[p.master],
-                      state.bodies[p.slave], p.formulation, p.friction});
+                      state.bodies[p.slave], p.method, p.friction});
     pairs = std::make_unique<contact::BodyContact>(std::move(list));
   }
   std::vector<material::PointState> states(state.mesh.tets.size());

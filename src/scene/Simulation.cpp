@@ -88,8 +88,7 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
   for (std::size_t p = 0; p < c.contact_pairs.size(); ++p)
     log::info("  contact pair '%s' (master '%s', slave '%s'): %s; friction %s",
               disc.pair_contact->pairs()[p].name.c_str(), scene.bodies[c.contact_pairs[p].master].name.c_str(),
-              scene.bodies[c.contact_pairs[p].slave].name.c_str(),
-              contact::to_string(c.contact_pairs[p].formulation).c_str(),
+              scene.bodies[c.contact_pairs[p].slave].name.c_str(), contact::describe(c.contact_pairs[p].method).c_str(),
               contact::describe(c.contact_pairs[p].friction).c_str());
   if (scene.has_contact())
     log::info("  contact: penalty %g x 3 x secant viscosity of the softest body / scene size (set each increment), "

@@ -1,5 +1,7 @@
 #include "anvil/scene/schema.h"
 
+#include "anvil/contact/facet_quadrature.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -226,6 +228,16 @@ const std::vector<KeySpec>& case_schema() {
                                  "added to the slave nodes' (eqs. 21-24)"),
                              {"master_slave", "symmetric", "quasi_symmetric"}),
                      "quasi_symmetric"),
+        with_default(choices(key("contact_pairs[].integration", T::string,
+                                 "nodal: the conditions at the boundary nodes (paper §4); facet: the contact term "
+                                 "integrated over the boundary facets, λ interpolated on them (paper §3, eqs. 10-18)"),
+                             {"nodal", "facet"}),
+                     "nodal"),
+        with_default(range(key("contact_pairs[].facet_subdivision", T::integer,
+                               "facet integration: a facet is split in four, up to this many times, where it projects "
+                               "onto several facets of the other body; 3 quadrature points on each part"),
+                           0, contact::kMaxFacetSubdivision),
+                     "4"),
         key("contact", T::map, "contact enforcement"),
         with_default(range(key("contact.penalty", T::number,
                                "penalty ρ = this × flow stress at the process rate (press speed / body size) / press "

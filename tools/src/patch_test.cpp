@@ -1,46 +1,179 @@
-// The contact patch test table (Fourment 2008 §5.2): the four load
-// cases × the mesh pairs × master/slave, quasi-symmetric and symmetric, with
-// the relative error of the normal stress transmitted across the interface
-// (max and RMS over the interface nodes of both bodies), the largest error of
-// σzz inside the bodies, and the cost (wall time, Newton iterations).
-// Prints a Markdown table and writes DIR/patch_test.csv (default out/patch_test_table).
+// The contact patch tables.
+//   tools/patch_test [DIR]               the 3D patch test on two stacked unit
+//       cubes: 6 load cases × 9 mesh pairs × either body as master × 3
+//       formulations × nodal and facet integration (648 runs, about 15 min);
+//       normal-stress error over the interface nodes of both bodies, σzz
+//       error over each body's elements, the deepest master node over the
+//       penalty's own penetration, Newton iterations, then the worst figures
+//       per formulation and integration, and the largest force change when
+//       master and slave are swapped (displacement cases).
+//   tools/patch_test --quadrature [DIR]  facet integration: error against the
+//       quadrature's subdivision levels and the contact time they cost.
+//   tools/patch_test --paper [DIR]       the blocks of Fourment 2008 §5.2: 4
+//       load cases × 6 mesh pairs × 3 formulations, nodal.
+// Prints Markdown tables and writes DIR/*.csv (default DIR: out/patch_test_table).
+#include "anvil/contact/facet_quadrature.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/solver/PetscSession.h"
 #include "patch_test_cases.h"
 
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <map>
+
+namespace {
+
+using patch_test::CubesLoad;
+using patch_test::CubesMeshes;
+using patch_test::CubesMethod;
+using patch_test::Errors;
+
+const char* const kFormulations[] = {"master_slave", "quasi_symmetric", "symmetric"};
+
+std::string pair_name(const CubesMeshes& m) {
+  return std::to_string(m.lower) + "/" + std::to_string(m.upper);
+}
+
+void paper_table(const std::string& out) {
+  std::ofstream csv(out + "/patch_test.csv");
+  csv << "case,meshes,formulation,interface_max,interface_rms,interior_max,interface_nodes,newton_iterations,wall_"
+         "time_s\n";
+  std::printf("| case | meshes (master/slave cells) | formulation | interface max | interface RMS | interior max | "
+              "Newton | time |\n"
+              "|---|---|---|---|---|---|---|---|\n");
+  for (const auto& load : patch_test::load_cases())
+    for (const auto& meshes : patch_test::mesh_pairs())
+      for (const char* formulation : kFormulations) {
+        const Errors e = patch_test::run(load, meshes, formulation, ANVIL_SOURCE_DIR, out + "/run");
+        std::printf("| %s | %s | %s | %.2f %% | %.2f %% | %.2f %% | %d | %.2f s |\n", load.name, meshes.name,
+                    formulation, 100 * e.interface_max, 100 * e.interface_rms, 100 * e.interior_max,
+                    e.newton_iterations, e.wall_time);
+        std::fflush(stdout);
+        csv << '"' << load.name << "\",\"" << meshes.name << "\"," << formulation << "," << e.interface_max << ","
+            << e.interface_rms << "," << e.interior_max << "," << e.interface_nodes << "," << e.newton_iterations << ","
+            << e.wall_time << "\n";
+      }
+}
+
+/// Total force through the support: the exact stress times the loaded area
+/// is the same on every mesh; what the swap test compares is the run's.
+double support_force(const std::string& dir) {
+  return anvil::io::read_loads(dir, "support").back().force.z();
+}
+
+void cubes_table(const std::string& out) {
+  std::ofstream csv(out + "/patch_test_cubes.csv");
+  csv << "case,lower_cells,upper_cells,master,formulation,integration,pressure_max,pressure_rms,lower_szz_max,lower_"
+         "szz_rms,upper_szz_max,upper_szz_rms,master_penetration_ratio,newton_iterations,wall_time_s,support_force_N\n";
+  std::printf("| case | n_l/n_u | master | formulation | integration | pressure max | pressure RMS | σzz max lower | "
+              "σzz RMS lower | σzz max upper | σzz RMS upper | master depth / penalty | Newton | time |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  struct Worst {
+    double pressure = 0, szz = 0, depth = 0, swap = 0;
+    int extra_newton = -99;
+  };
+  std::map<std::string, Worst> worst; // by formulation + integration
+  for (const CubesLoad& load : patch_test::cubes_loads()) {
+    const bool displacement = std::strstr(load.name, "displacement") || std::strstr(load.name, "velocity");
+    std::map<std::string, int> matching_newton;
+    for (const CubesMeshes& meshes : patch_test::cubes_meshes())
+      for (const char* formulation : kFormulations)
+        for (const char* integration : {"nodal", "facet"}) {
+          const std::string method = std::string(formulation) + " " + integration;
+          std::array<double, 2> force{};
+          for (const bool lower_master : {true, false}) {
+            const Errors e = patch_test::run_cubes(load, meshes, {formulation, integration, lower_master, -1},
+                                                   ANVIL_SOURCE_DIR, out + "/run");
+            force[lower_master ? 0 : 1] = support_force(out + "/run");
+            std::printf("| %s | %s | %s | %s | %s | %.3g %% | %.3g %% | %.3g %% | %.3g %% | %.3g %% | %.3g %% | %.3g | "
+                        "%d | %.2f s |\n",
+                        load.name, pair_name(meshes).c_str(), lower_master ? "lower" : "upper", formulation,
+                        integration, 100 * e.interface_max, 100 * e.interface_rms, 100 * e.body_max[0],
+                        100 * e.body_rms[0], 100 * e.body_max[1], 100 * e.body_rms[1], e.master_penetration,
+                        e.newton_iterations, e.wall_time);
+            std::fflush(stdout);
+            csv << '"' << load.name << "\"," << meshes.lower << "," << meshes.upper << ","
+                << (lower_master ? "lower" : "upper") << "," << formulation << "," << integration << ","
+                << e.interface_max << "," << e.interface_rms << "," << e.body_max[0] << "," << e.body_rms[0] << ","
+                << e.body_max[1] << "," << e.body_rms[1] << "," << e.master_penetration << "," << e.newton_iterations
+                << "," << e.wall_time << "," << force[lower_master ? 0 : 1] << "\n";
+            Worst& w = worst[method];
+            w.pressure = std::max(w.pressure, e.interface_max);
+            w.szz = std::max(w.szz, e.interior_max);
+            w.depth = std::max(w.depth, e.master_penetration);
+            if (meshes.lower == meshes.upper)
+              matching_newton[method] = e.newton_iterations;
+            else if (matching_newton.count(method))
+              w.extra_newton = std::max(w.extra_newton, e.newton_iterations - matching_newton[method]);
+          }
+          if (displacement)
+            worst[method].swap =
+                std::max(worst[method].swap, std::abs(force[1] - force[0]) / std::max(std::abs(force[0]), 1e-300));
+        }
+  }
+  std::printf("\nWorst over the 6 cases, 9 mesh pairs and both master choices:\n\n"
+              "| formulation | integration | pressure max | σzz max | master depth / penalty | Newton above "
+              "matching | swap force change (displacement cases) |\n|---|---|---|---|---|---|---|\n");
+  for (const auto& [method, w] : worst) {
+    const std::size_t space = method.find(' ');
+    std::printf("| %s | %s | %.3g %% | %.3g %% | %.3g | %d | %.3g %% |\n", method.substr(0, space).c_str(),
+                method.substr(space + 1).c_str(), 100 * w.pressure, 100 * w.szz, w.depth, w.extra_newton, 100 * w.swap);
+  }
+}
+
+void quadrature_table(const std::string& out) {
+  std::ofstream csv(out + "/facet_quadrature.csv");
+  csv << "meshes,master,formulation,subdivision,pressure_max,szz_max,contact_time_s,wall_time_s\n";
+  std::printf("| n_l/n_u | master | formulation | levels | pressure max | σzz max | contact time | run |\n"
+              "|---|---|---|---|---|---|---|---|\n");
+  const CubesLoad& load = patch_test::cubes_loads().front();
+  for (const CubesMeshes& meshes : {CubesMeshes{3, 7}, CubesMeshes{2, 16}})
+    for (const bool lower_master : {true, false})
+      for (const char* formulation : {"master_slave", "quasi_symmetric"})
+        for (int levels = 0; levels <= anvil::contact::kMaxFacetSubdivision; ++levels) {
+          const Errors e = patch_test::run_cubes(load, meshes, {formulation, "facet", lower_master, levels},
+                                                 ANVIL_SOURCE_DIR, out + "/run");
+          std::printf("| %s | %s | %s | %d | %.3g %% | %.3g %% | %.3f s | %.2f s |\n", pair_name(meshes).c_str(),
+                      lower_master ? "lower" : "upper", formulation, levels, 100 * e.interface_max,
+                      100 * e.interior_max, e.contact_time, e.wall_time);
+          std::fflush(stdout);
+          csv << pair_name(meshes) << "," << (lower_master ? "lower" : "upper") << "," << formulation << "," << levels
+              << "," << e.interface_max << "," << e.interior_max << "," << e.contact_time << "," << e.wall_time << "\n";
+        }
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
-  const std::string out = argc > 1 ? argv[1] : "out/patch_test_table";
-  if (out == "--help" || out == "-h") {
-    std::puts("usage: tools/patch_test [DIR]   (runs 72 small cases, about a minute; writes DIR/patch_test.csv)");
-    return 0;
+  std::string mode = "cubes", out = "out/patch_test_table";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      std::puts("usage: tools/patch_test [--paper | --quadrature] [DIR]\n"
+                "  (default) the unit-cube table: 648 runs, about 15 minutes; DIR/patch_test_cubes.csv\n"
+                "  --quadrature  facet quadrature levels against error and contact time; DIR/facet_quadrature.csv\n"
+                "  --paper       the blocks of Fourment 2008, nodal contact: 72 runs; DIR/patch_test.csv\n"
+                "  DIR defaults to out/patch_test_table");
+      return 0;
+    }
+    if (arg == "--paper" || arg == "--quadrature")
+      mode = arg.substr(2);
+    else
+      out = arg;
   }
   int petsc_argc = 1; // the tool's own arguments are not PETSc's
   anvil::solver::PetscSession petsc(petsc_argc, argv);
   try {
     std::filesystem::create_directories(out);
     anvil::log::set_quiet(true);
-    std::ofstream csv(out + "/patch_test.csv");
-    csv << "case,meshes,formulation,interface_max,interface_rms,interior_max,interface_nodes,newton_iterations,wall_"
-           "time_s\n";
-    std::printf("| case | meshes (master/slave cells) | formulation | interface max | interface RMS | interior max | "
-                "Newton | time |\n"
-                "|---|---|---|---|---|---|---|---|\n");
-    for (const auto& load : patch_test::load_cases())
-      for (const auto& meshes : patch_test::mesh_pairs())
-        for (const char* formulation : {"master_slave", "quasi_symmetric", "symmetric"}) {
-          const patch_test::Errors e = patch_test::run(load, meshes, formulation, ANVIL_SOURCE_DIR, out + "/run");
-          std::printf("| %s | %s | %s | %.2f %% | %.2f %% | %.2f %% | %d | %.2f s |\n", load.name, meshes.name,
-                      formulation, 100 * e.interface_max, 100 * e.interface_rms, 100 * e.interior_max,
-                      e.newton_iterations, e.wall_time);
-          std::fflush(stdout);
-          csv << '"' << load.name << "\",\"" << meshes.name << "\"," << formulation << "," << e.interface_max << ","
-              << e.interface_rms << "," << e.interior_max << "," << e.interface_nodes << "," << e.newton_iterations
-              << "," << e.wall_time << "\n";
-        }
+    if (mode == "paper")
+      paper_table(out);
+    else if (mode == "quadrature")
+      quadrature_table(out);
+    else
+      cubes_table(out);
     std::printf("results in %s/\n", out.c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "patch_test: %s\n", e.what());

@@ -1,13 +1,16 @@
-// Node-to-facet contact between deformable bodies (Fourment 2008, DESIGN §3).
-// One search and projection for every formulation: the boundary nodes of one
-// body of a pair are projected onto the other body's boundary facets. A
-// projected node p gives the gap velocity of the increment, linear in v:
-//   h_p = −(v_node − Σ_j N_j(ξ) v_j)·n − δ₀/Δt     (paper eq. 4, in velocity)
-// with n the facet body's outward normal, δ₀ the signed distance.
-// The formulations differ only in how points are weighted into constraints,
-// one multiplier λ_m each. In the nodal formulation (paper §4) a constraint
-// adds the nodes' gap velocities, not their areas:
-//   C_m = Σ_p W_pm f_p h_p,   G_m = Σ_p W_pm f_p,   Ã_m = Σ_p W_pm f_p A_p
+// Contact between deformable bodies (Fourment 2008, DESIGN §3). One search
+// and projection for every formulation: points of one body of a pair are
+// projected onto the other body's boundary facets. A projected point p gives
+// the gap velocity of the increment, linear in v:
+//   h_p = −(Σ_i M_i v_i − Σ_j N_j(ξ) v_j)·n − δ₀/Δt   (paper eq. 4, in velocity)
+// with M_i the point's own shape functions (1 at a node), N_j(ξ) those of the
+// facet it projects onto, n that facet body's outward normal, δ₀ the signed
+// distance. The formulations differ only in how points are weighted into
+// constraints, one multiplier λ_m each:
+//   C_m = Σ_p W_pm c_p h_p,   G_m = Σ_p W_pm c_p,   Ã_m = Σ_p W_pm f_p A_p
+// Nodal integration (paper §4): the points are boundary nodes, c_p = f_p (a
+// constraint adds the nodes' gap velocities, not their areas), A_p the
+// node's tributary area:
 //   master/slave    (eq. 19): slave nodes only, f = 1, W = 1 on their own λ;
 //   symmetric       (eq. 20): nodes of both bodies, f = ½, each its own λ;
 //   quasi-symmetric (eqs. 21-24): nodes of both bodies, f = ½; a master node l
@@ -15,12 +18,21 @@
 //     at its projection, on the slave nodes' λ (eq. 22), so C_k is eq. 24.
 //     A fine master thus outweighs a coarse slave node (the paper's "dominant"
 //     master contribution); weighting by area instead would leave the fine
-//     master free to sink between the coarse slave's nodes. Measured on the
-//     patch test (case 1, M/S error 3.70 %): area weights gave 18.8 % on the
-//     4/15 pair (2.41 % as here), and 4.0 % against 2.7 % on 4/7.
+//     master free to sink between the coarse slave's nodes.
+// Facet integration (paper §3): the points are quadrature points of the
+// boundary facets (contact/facet_quadrature.h), c_p = f_p A_p with A_p the
+// point's quadrature weight, so C_m is the integral of the weighted gap:
+//   master/slave    (eqs. 10-11): slave facets, λ interpolated on them,
+//     W = M_k(ξ_p) on slave node k's λ;
+//   symmetric       (eqs. 12-13): facets of both bodies, f = ½, each side's
+//     points on its own nodes' λ;
+//   quasi-symmetric (eqs. 14-18): both, f = ½; a master point weighs
+//     λ̃ = Σ_l M_l(ξ_p) Σ_k N_a^k(ξ_a^l) λ_k (eq. 17), with ξ_a^l the
+//     projection of master node l onto the slave surface, so C_k is eq. 18.
+//     A master node out of reach of the slave surface carries no λ̃.
 // Penalty: λ_m = ρ C_m⁺/G_m (MPa, ρ times the mean gap velocity) acting on
 // the area Ã_m, from the potential Π = Σ_m ρ Ã_m (C_m⁺)²/(2 G_m²): multiplier
-// m transmits λ_m Ã_m. On matching meshes the three give the same Π.
+// m transmits λ_m Ã_m. On matching meshes the nodal forms give the same Π.
 // The active set is per multiplier (contact/ActiveSet.h).
 // Friction: sticking is a penalty on the tangential relative velocity
 // combined the same way; Tresca, Coulomb and Norton act at each point with
@@ -42,30 +54,52 @@ enum class PairFormulation { master_slave, symmetric, quasi_symmetric };
 PairFormulation pair_formulation(const std::string& name); ///< throws InputError on an unknown name
 std::string to_string(PairFormulation formulation);
 
+enum class PairIntegration { nodal, facet };
+PairIntegration pair_integration(const std::string& name); ///< throws InputError on an unknown name
+std::string to_string(PairIntegration integration);
+
+/// How a pair's contact term is discretised.
+struct PairMethod {
+  PairFormulation formulation = PairFormulation::quasi_symmetric;
+  PairIntegration integration = PairIntegration::nodal;
+  int facet_subdivision = 4; ///< facet integration: most levels of subdivision (contact/facet_quadrature.h)
+};
+std::string describe(const PairMethod& method);
+
 /// A contact pair as contact sees it.
 struct BodyPair {
   std::string name;
   mesh::MeshRange master, slave;
-  PairFormulation formulation = PairFormulation::quasi_symmetric;
+  PairMethod method;
   FrictionLaw friction;
 };
 
-/// A boundary node projected onto the other body's surface.
-struct ContactPoint {
-  int pair;
-  int node;
-  std::array<int, 3> facet; ///< nodes of the facet it projects onto
-  Eigen::Vector3d shape;    ///< N_j(ξ) of the facet at the projection
-  Eigen::Vector3d normal;   ///< outward normal of the facet's body there (towards the node)
-  double gap;               ///< δ₀ (mm), < 0 penetrated
-  double area;              ///< tributary area A_p of the node on the faces looking at the other body (mm²)
-  double share;             ///< f_p: 1 (eq. 19) or ½ (eqs. 20-21)
-  bool on_slave;            ///< a slave node (on a master facet); else a master node
-  std::array<int, 3> multiplier{-1, -1, -1};                   ///< multipliers it feeds
-  Eigen::Vector3d multiplier_weight = Eigen::Vector3d::Zero(); ///< W_pm
+/// λ_m weighted into a point's constraint.
+struct MultiplierWeight {
+  int multiplier;
+  double weight; ///< W_pm
 };
 
-/// Velocity of the point's node relative to its projection, v_node − Σ_j N_j(ξ) v_j (mm/s).
+/// A point of one body's surface projected onto the other body's surface:
+/// a boundary node, or a quadrature point of a boundary facet.
+struct ContactPoint {
+  int pair;
+  std::array<int, 3> own{-1, -1, -1};       ///< the point's own nodes: the node itself (own[0]), or its facet's
+  Eigen::Vector3d own_shape{1.0, 0.0, 0.0}; ///< M_i, their shape functions at the point
+  std::array<int, 3> facet;                 ///< nodes of the facet it projects onto
+  Eigen::Vector3d shape;                    ///< N_j(ξ) of the facet at the projection
+  Eigen::Vector3d normal;                   ///< outward normal of the facet's body there (towards the point)
+  double gap;                               ///< δ₀ (mm), < 0 penetrated
+  double area;  ///< A_p (mm²): a node's tributary area on the faces looking at the other body, or a quadrature weight
+  double share; ///< f_p: 1 (eqs. 10, 19) or ½ (eqs. 12, 14, 20, 21)
+  double gap_weight; ///< c_p, the weight of h_p in its constraints: f_p (nodal) or f_p A_p (facet)
+  bool on_slave;     ///< on the slave (projected onto a master facet); else on the master
+  std::vector<MultiplierWeight> multipliers{}; ///< the λ_m it feeds
+
+  int node() const { return own[0]; } ///< the node, for a projected node
+};
+
+/// Velocity of the point relative to its projection, Σ M_i v_i − Σ_j N_j(ξ) v_j (mm/s).
 Eigen::Vector3d relative_velocity(const ContactPoint& p, const Eigen::VectorXd& nodal);
 
 class BodyContact final : public solver::NodalTerm {
@@ -73,7 +107,8 @@ public:
   explicit BodyContact(std::vector<BodyPair> pairs) : pairs_(std::move(pairs)) {}
 
   /// Projects the boundary nodes of each pair (slave nodes, and master nodes
-  /// unless master/slave) that are within `search_distance` (mm) of the other body.
+  /// unless master/slave) that are within `search_distance` (mm) of the other
+  /// body, and, for facet integration, the quadrature points of their facets.
   void search(const mesh::TetMesh& mesh, double search_distance);
   void set_increment(const ContactIncrement& increment);
 
@@ -87,9 +122,14 @@ public:
   std::vector<std::pair<int, int>> couplings() const override;
 
   const std::vector<BodyPair>& pairs() const { return pairs_; }
+  /// The points whose gaps make the constraints: the projected nodes of
+  /// nodal pairs, the quadrature points of facet pairs.
   const std::vector<ContactPoint>& points() const { return points_; }
-  /// Contact pressure (MPa) at point i: Σ_m W λ_m over active multipliers.
-  double pressure(int i, const Eigen::VectorXd& nodal) const;
+  /// The projected boundary nodes of every pair, whatever its integration.
+  const std::vector<ContactPoint>& projected_nodes() const { return nodes_; }
+  /// Contact pressure (MPa) at projected node i: Σ_m W λ_m over its active
+  /// multipliers (its own λ, or for a quasi-symmetric master node λ̃, eq. 22).
+  double node_pressure(int i, const Eigen::VectorXd& nodal) const;
   int active_count() const { return active_.count(); }
 
 private:
@@ -111,8 +151,10 @@ private:
   double mean_gap_velocity(std::size_t index, const Eigen::VectorXd& nodal) const;
   const std::vector<double>& gaps(const Eigen::VectorXd& nodal);
   void build_multipliers(int node_count);
+  double pressure(const ContactPoint& p, const Eigen::VectorXd& nodal) const;
 
   std::vector<BodyPair> pairs_;
+  std::vector<ContactPoint> nodes_;
   std::vector<ContactPoint> points_;
   std::vector<Multiplier> multipliers_;
   std::vector<Support> support_;

@@ -51,7 +51,7 @@ struct DieSpec {
 /// Contact between two deformable bodies (DESIGN §3, Fourment 2008).
 struct ContactPairSpec {
   int master = 0, slave = 1; ///< body indices
-  contact::PairFormulation formulation = contact::PairFormulation::quasi_symmetric;
+  contact::PairMethod method;
   contact::FrictionLaw friction;
   std::string source;
 };

@@ -100,7 +100,8 @@ TEST_CASE("Die contact: the tangent blocks are the derivative of the residual fo
   }
 }
 
-TEST_CASE("Body-pair contact: the tangent blocks are the derivative of the residual for every formulation and law",
+TEST_CASE("Body-pair contact: the tangent blocks are the derivative of the residual for every formulation, integration "
+          "and law",
           "[unit][contact]") {
   // A finer block on a coarser one, 0.01 mm into it, sliding and pressing.
   mesh::TetMesh mesh;
@@ -113,14 +114,17 @@ TEST_CASE("Body-pair contact: the tangent blocks are the derivative of the resid
   using contact::PairFormulation;
   for (const PairFormulation formulation :
        {PairFormulation::master_slave, PairFormulation::symmetric, PairFormulation::quasi_symmetric})
-    for (const contact::FrictionLaw& law : every_law()) {
-      INFO(contact::to_string(formulation) << ", friction " << contact::describe(law));
-      contact::BodyContact contact({{"lower/upper", lower, upper, formulation, law}});
-      contact.search(mesh, 0.5);
-      REQUIRE(!contact.points().empty());
-      contact.set_increment(increment(mesh.node_count()));
-      contact.start(nodal);
-      REQUIRE(contact.active_count() > 0);
-      CHECK(tangent_error(contact, nodal, mesh.node_count()) < 1e-6); // bound as for die contact
-    }
+    for (const contact::PairIntegration integration :
+         {contact::PairIntegration::nodal, contact::PairIntegration::facet})
+      for (const contact::FrictionLaw& law : every_law()) {
+        const contact::PairMethod method{formulation, integration, 1};
+        INFO(contact::describe(method) << ", friction " << contact::describe(law));
+        contact::BodyContact contact({{"lower/upper", lower, upper, method, law}});
+        contact.search(mesh, 0.5);
+        REQUIRE(!contact.points().empty());
+        contact.set_increment(increment(mesh.node_count()));
+        contact.start(nodal);
+        REQUIRE(contact.active_count() > 0);
+        CHECK(tangent_error(contact, nodal, mesh.node_count()) < 1e-6); // bound as for die contact
+      }
 }
