@@ -213,9 +213,27 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
     const BodyPair& pair = pairs_[q];
     const bool one_sided = pair.method.formulation == PairFormulation::master_slave;
     const double share = one_sided ? 1.0 : 0.5; // f_p: eqs. 10, 19 against the ½ of eqs. 12, 14, 20, 21
-    const Side master(mesh, pair.master, node_faces), slave(mesh, pair.slave, node_faces);
-    auto project_nodes = [&](const Side& from, const Side& onto, bool on_slave) {
-      for (int node = from.range.first_node; node < from.range.first_node + from.range.node_count; ++node) {
+    // The surfaces projected onto: the master's, and the slave's unless master/slave.
+    const Side master(mesh, pair.master, node_faces);
+    const std::optional<Side> slave =
+        one_sided ? std::nullopt : std::optional<Side>(std::in_place, mesh, pair.slave, node_faces);
+    // A point of `from` (own nodes and shape functions, area A_p) projected as `hit`.
+    auto point = [&](const std::array<int, 3>& own, const Eigen::Vector3d& own_shape, const Projection& hit,
+                     double area, double gap_weight, bool on_slave) {
+      return ContactPoint{.pair = static_cast<int>(q),
+                          .own = own,
+                          .own_shape = own_shape,
+                          .facet = mesh.boundary_faces[hit.facet],
+                          .shape = hit.shape,
+                          .normal = hit.normal,
+                          .gap = hit.gap,
+                          .area = area,
+                          .share = share,
+                          .gap_weight = gap_weight,
+                          .on_slave = on_slave};
+    };
+    auto project_nodes = [&](const mesh::MeshRange& from, const Side& onto, bool on_slave) {
+      for (int node = from.first_node; node < from.first_node + from.node_count; ++node) {
         if (node_faces[node].empty()) continue; // interior node
         const std::optional<Projection> hit =
             onto.project(mesh.nodes[node], own_normal(mesh, node_faces[node]), search_distance);
@@ -225,27 +243,18 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
           if (const Eigen::Vector3d n = mesh::area_vector(mesh, mesh.boundary_faces[f]); looks_at(n, hit->normal))
             area += n.norm() / 3.0;
         if (area == 0.0) continue; // no face looks at the other body: not on its contact surface
-        nodes_.push_back({.pair = static_cast<int>(q),
-                          .own = {node, -1, -1},
-                          .facet = mesh.boundary_faces[hit->facet],
-                          .shape = hit->shape,
-                          .normal = hit->normal,
-                          .gap = hit->gap,
-                          .area = area,
-                          .share = share,
-                          .gap_weight = share,
-                          .on_slave = on_slave});
+        nodes_.push_back(point({node, -1, -1}, Eigen::Vector3d::UnitX(), *hit, area, share, on_slave));
       }
     };
     const std::size_t first_node = nodes_.size();
-    project_nodes(slave, master, true);
-    if (!one_sided) project_nodes(master, slave, false);
+    project_nodes(pair.slave, master, true);
+    if (slave) project_nodes(pair.master, *slave, false);
     if (pair.method.integration == PairIntegration::nodal) {
       points_.insert(points_.end(), nodes_.begin() + static_cast<std::ptrdiff_t>(first_node), nodes_.end());
       continue;
     }
-    auto project_facets = [&](const Side& from, const Side& onto, bool on_slave) {
-      for (int f = from.range.first_face; f < from.range.first_face + from.range.face_count; ++f) {
+    auto project_facets = [&](const mesh::MeshRange& from, const Side& onto, bool on_slave) {
+      for (int f = from.first_face; f < from.first_face + from.face_count; ++f) {
         const mesh::Triangle& t = mesh.boundary_faces[f];
         const Eigen::Vector3d area_vector = mesh::area_vector(mesh, t);
         const Eigen::Vector3d own = area_vector.normalized();
@@ -275,24 +284,14 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
             const std::optional<Projection> hit = onto.project(point_on(mesh, t, g.barycentric), own, search_distance);
             if (!hit || !looks_at(area_vector, hit->normal)) continue;
             const double area = g.weight * area_vector.norm();
-            points_.push_back({.pair = static_cast<int>(q),
-                               .own = t,
-                               .own_shape = g.barycentric,
-                               .facet = mesh.boundary_faces[hit->facet],
-                               .shape = hit->shape,
-                               .normal = hit->normal,
-                               .gap = hit->gap,
-                               .area = area,
-                               .share = share,
-                               .gap_weight = share * area,
-                               .on_slave = on_slave});
+            points_.push_back(point(t, g.barycentric, *hit, area, share * area, on_slave));
           }
         };
         integrate(integrate, whole_facet(), 0, 1.0, longest);
       }
     };
-    project_facets(slave, master, true);
-    if (!one_sided) project_facets(master, slave, false);
+    project_facets(pair.slave, master, true);
+    if (slave) project_facets(pair.master, *slave, false);
   }
   build_multipliers(mesh.node_count());
 }

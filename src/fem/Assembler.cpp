@@ -13,7 +13,6 @@
 namespace anvil::fem {
 namespace {
 
-/// Consecutive elements [first, end) assembled in order by one task.
 /// Chunks of `size` consecutive elements, coloured greedily (each takes the
 /// lowest colour not used at its nodes) so that no two chunks of a colour
 /// share a node. Empty when more than 512 colours would be needed.

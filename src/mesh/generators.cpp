@@ -10,8 +10,40 @@
 namespace anvil::mesh {
 namespace {
 
-int cells_for(double length, double element_size) {
-  return std::max(1, static_cast<int>(std::lround(length / element_size)));
+/// Cells of about `element_size` along `length`, at least one; a double, so
+/// that counting the nodes of a mistyped size cannot overflow.
+double cell_count(double length, double element_size) {
+  return std::max(1.0, std::round(length / element_size));
+}
+
+std::array<int, 3> as_ints(const std::array<double, 3>& cells) {
+  return {static_cast<int>(cells[0]), static_cast<int>(cells[1]), static_cast<int>(cells[2])};
+}
+
+double grid_nodes(const std::array<double, 3>& cells) {
+  return (cells[0] + 1.0) * (cells[1] + 1.0) * (cells[2] + 1.0);
+}
+
+std::array<double, 3> box_cells(const Point& size, double element_size) {
+  return {cell_count(size.x(), element_size), cell_count(size.y(), element_size), cell_count(size.z(), element_size)};
+}
+
+/// Rings of the disc, layers along z.
+std::array<double, 2> cylinder_cells(double radius, double height, double element_size) {
+  return {cell_count(radius, element_size), cell_count(height, element_size)};
+}
+
+/// The unit box mapped onto the quarter disc: radial cells twice, layers.
+std::array<double, 3> quarter_cylinder_cells(double radius, double height, double element_size) {
+  const double n = cell_count(radius, element_size);
+  return {n, n, cell_count(height, element_size)};
+}
+
+/// Radial cells, cells along the mid arc, layers.
+std::array<double, 3> quarter_ring_cells(double outer_radius, double inner_radius, double height, double element_size) {
+  const double mid = 0.5 * (outer_radius + inner_radius);
+  return {cell_count(outer_radius - inner_radius, element_size), cell_count(0.5 * std::numbers::pi * mid, element_size),
+          cell_count(height, element_size)};
 }
 
 void orient_positive(TetMesh& mesh) {
@@ -31,9 +63,7 @@ template <class TagOfNormal> void tag_by_normal(TetMesh& mesh, TagOfNormal tag_o
 
 TetMesh make_box(const Point& origin, const Point& size, double element_size) {
   if (!(element_size > 0.0)) throw InputError("box mesh: element_size must be > 0");
-  return make_box(
-      origin, size,
-      {cells_for(size.x(), element_size), cells_for(size.y(), element_size), cells_for(size.z(), element_size)});
+  return make_box(origin, size, as_ints(box_cells(size, element_size)));
 }
 
 TetMesh make_box(const Point& origin, const Point& size, const std::array<int, 3>& cells) {
@@ -73,8 +103,8 @@ TetMesh make_box(const Point& origin, const Point& size, const std::array<int, 3
 TetMesh make_cylinder(double radius, double height, double element_size) {
   if (!(radius > 0.0 && height > 0.0 && element_size > 0.0))
     throw InputError("cylinder mesh: radius, height and element_size must be > 0");
-  const int rings = cells_for(radius, element_size);
-  const int layers = cells_for(height, element_size);
+  const std::array<double, 2> cells = cylinder_cells(radius, height, element_size);
+  const int rings = static_cast<int>(cells[0]), layers = static_cast<int>(cells[1]);
 
   // Disc: node 0 at the centre, ring k (1..rings) has 6k nodes at radius R k / rings.
   std::vector<Eigen::Vector2d> disc{Eigen::Vector2d::Zero()};
@@ -134,8 +164,8 @@ TetMesh make_cylinder(double radius, double height, double element_size) {
 TetMesh make_quarter_cylinder(double radius, double height, double element_size) {
   if (!(radius > 0.0 && height > 0.0 && element_size > 0.0))
     throw InputError("quarter cylinder mesh: radius, height and element_size must be > 0");
-  const int n = cells_for(radius, element_size);
-  TetMesh mesh = make_box(Point::Zero(), Point(1.0, 1.0, height), {n, n, cells_for(height, element_size)});
+  TetMesh mesh =
+      make_box(Point::Zero(), Point(1.0, 1.0, height), as_ints(quarter_cylinder_cells(radius, height, element_size)));
   // (u, v) ∈ [0,1]² → (R u sqrt(1 − v²/2), R v sqrt(1 − u²/2)): u = 1 and v = 1
   // land on the arc x² + y² = R², u = 0 on x = 0, v = 0 on y = 0.
   for (Point& p : mesh.nodes) {
@@ -152,10 +182,8 @@ TetMesh make_quarter_cylinder(double radius, double height, double element_size)
 TetMesh make_quarter_ring(double outer_radius, double inner_radius, double height, double element_size) {
   if (!(outer_radius > inner_radius && inner_radius > 0.0 && height > 0.0 && element_size > 0.0))
     throw InputError("quarter ring mesh: need outer radius > inner radius > 0, height and element_size > 0");
-  const double mid = 0.5 * (outer_radius + inner_radius);
   TetMesh mesh = make_box(Point::Zero(), Point(1.0, 1.0, height),
-                          {cells_for(outer_radius - inner_radius, element_size),
-                           cells_for(0.5 * std::numbers::pi * mid, element_size), cells_for(height, element_size)});
+                          as_ints(quarter_ring_cells(outer_radius, inner_radius, height, element_size)));
   for (Point& p : mesh.nodes) {
     const double r = inner_radius + (outer_radius - inner_radius) * p.x(), angle = 0.5 * std::numbers::pi * p.y();
     p.x() = r * std::cos(angle);
@@ -163,6 +191,23 @@ TetMesh make_quarter_ring(double outer_radius, double inner_radius, double heigh
   }
   orient_positive(mesh);
   return mesh;
+}
+
+double box_node_count(const Point& size, double element_size) {
+  return grid_nodes(box_cells(size, element_size));
+}
+
+double cylinder_node_count(double radius, double height, double element_size) {
+  const auto [rings, layers] = cylinder_cells(radius, height, element_size);
+  return (1.0 + 3.0 * rings * (rings + 1.0)) * (layers + 1.0); // the centre and 6k nodes on ring k, per layer
+}
+
+double quarter_cylinder_node_count(double radius, double height, double element_size) {
+  return grid_nodes(quarter_cylinder_cells(radius, height, element_size));
+}
+
+double quarter_ring_node_count(double outer_radius, double inner_radius, double height, double element_size) {
+  return grid_nodes(quarter_ring_cells(outer_radius, inner_radius, height, element_size));
 }
 
 } // namespace anvil::mesh

@@ -89,6 +89,16 @@ void read_array(hid_t file, const std::string& path, const char* name, hid_t typ
                      "' cannot be read (its checksum does not match: the file is damaged)");
 }
 
+/// read_array of numbers that must all be finite.
+void read_finite_array(hid_t file, const std::string& path, const char* name, std::vector<double>& out,
+                       hsize_t per_row) {
+  read_array(file, path, name, H5T_NATIVE_DOUBLE, out, per_row);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (!std::isfinite(out[i]))
+      throw InputError(path + ": checkpoint dataset '" + name + "', value " + std::to_string(i + 1) +
+                       ": not a finite number (damaged file)");
+}
+
 void write_attribute(hid_t file, const char* name, hid_t type, const void* value) {
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   Handle attribute(H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
@@ -247,17 +257,10 @@ RunState read_checkpoint(const std::string& path) {
     throw InputError(path + ": checkpoint attributes increment " + std::to_string(s.increment) + ", time " +
                      std::to_string(s.time) + " s, Newton iterations " + std::to_string(s.newton_iterations) +
                      ": expected numbers >= 0 (damaged file)");
-  const auto finite = [&](const char* name, const std::vector<double>& values) {
-    for (std::size_t i = 0; i < values.size(); ++i)
-      if (!std::isfinite(values[i]))
-        throw InputError(path + ": checkpoint dataset '" + name + "', value " + std::to_string(i + 1) +
-                         ": not a finite number (damaged file)");
-  };
   std::vector<double> volume, nodes, nodal, bubble, dies, loads, outputs;
   std::vector<long long> tets, faces;
   std::vector<char> files;
-  read_array(file, path, "volume", H5T_NATIVE_DOUBLE, volume, 6);
-  finite("volume", volume);
+  read_finite_array(file, path, "volume", volume, 6);
   s.volume.initial = volume[0], s.volume.solver = volume[1], s.volume.projection = volume[2];
   s.volume.largest_increment = volume[3], s.volume.compensation = volume[4], s.volume.remeshing = volume[5];
   std::vector<int> ranges;
@@ -278,8 +281,7 @@ RunState read_checkpoint(const std::string& path) {
     if (per_remesh >= 12) s.remeshes.back().load_old_mesh = r[10], s.remeshes.back().load_new_mesh = r[11];
     if (per_remesh >= 13) s.remeshes.back().material_change = r[12];
   }
-  read_array(file, path, "nodes", H5T_NATIVE_DOUBLE, nodes, 3);
-  finite("nodes", nodes);
+  read_finite_array(file, path, "nodes", nodes, 3);
   for (std::size_t i = 0; i < nodes.size(); i += 3)
     s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);
   const long long node_count = s.mesh.node_count();
@@ -300,22 +302,16 @@ RunState read_checkpoint(const std::string& path) {
     s.mesh.boundary_faces.push_back({int(faces[i]), int(faces[i + 1]), int(faces[i + 2])});
   mesh::validate(s.mesh, path + ": checkpoint dataset 'tets'");
   read_array(file, path, "boundary_tags", H5T_NATIVE_INT, s.mesh.boundary_tags, 1);
-  read_array(file, path, "nodal", H5T_NATIVE_DOUBLE, nodal, 4);
-  finite("nodal", nodal);
-  read_array(file, path, "bubble", H5T_NATIVE_DOUBLE, bubble, 3);
-  finite("bubble", bubble);
+  read_finite_array(file, path, "nodal", nodal, 4);
+  read_finite_array(file, path, "bubble", bubble, 3);
   s.unknowns.nodal = Eigen::Map<Eigen::VectorXd>(nodal.data(), static_cast<long>(nodal.size()));
   s.unknowns.bubble = Eigen::Map<Eigen::VectorXd>(bubble.data(), static_cast<long>(bubble.size()));
-  read_array(file, path, "equivalent_strain", H5T_NATIVE_DOUBLE, s.equivalent_strain, 1);
-  finite("equivalent_strain", s.equivalent_strain);
-  read_array(file, path, "elastic_stress", H5T_NATIVE_DOUBLE, s.elastic_stress, 6);
-  finite("elastic_stress", s.elastic_stress);
-  read_array(file, path, "dies", H5T_NATIVE_DOUBLE, dies, 6);
-  finite("dies", dies);
+  read_finite_array(file, path, "equivalent_strain", s.equivalent_strain, 1);
+  read_finite_array(file, path, "elastic_stress", s.elastic_stress, 6);
+  read_finite_array(file, path, "dies", dies, 6);
   for (std::size_t i = 0; i < dies.size(); i += 6)
     s.dies.push_back({dies[i], dies[i + 1], dies[i + 2], {dies[i + 3], dies[i + 4], dies[i + 5]}});
-  read_array(file, path, "loads", H5T_NATIVE_DOUBLE, loads, 7);
-  finite("loads", loads);
+  read_finite_array(file, path, "loads", loads, 7);
   for (std::size_t i = 0; i < loads.size(); i += 7) {
     if (!(loads[i] >= 0.0 && loads[i] <= s.increment && loads[i + 2] >= 0.0 && loads[i + 2] < 1e6))
       throw InputError(path + ": checkpoint dataset 'loads', record " + std::to_string(i / 7 + 1) + ": increment " +
@@ -334,8 +330,7 @@ RunState read_checkpoint(const std::string& path) {
       s.iterations.push_back({iterations[i], iterations[i + 1]});
     }
   }
-  read_array(file, path, "outputs", H5T_NATIVE_DOUBLE, outputs, 2);
-  finite("outputs", outputs);
+  read_finite_array(file, path, "outputs", outputs, 2);
   read_array(file, path, "output_files", H5T_NATIVE_CHAR, files, 1);
   std::string name;
   std::size_t k = 0;

@@ -12,25 +12,17 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numbers>
 
 namespace anvil::scene {
 namespace {
 
 /// Nodes the generated shape of `spec` will have, counted before it is built.
 double generated_nodes(const MeshSpec& spec) {
-  const auto cells = [&](double length) { return std::max(1.0, std::round(length / spec.element_size)); };
-  if (spec.generate == "box")
-    return (cells(spec.size.x()) + 1) * (cells(spec.size.y()) + 1) * (cells(spec.size.z()) + 1);
-  if (spec.generate == "cylinder") {
-    const double rings = cells(spec.radius);
-    return (1.0 + 3.0 * rings * (rings + 1.0)) * (cells(spec.height) + 1);
-  }
+  if (spec.generate == "box") return mesh::box_node_count(spec.size, spec.element_size);
+  if (spec.generate == "cylinder") return mesh::cylinder_node_count(spec.radius, spec.height, spec.element_size);
   if (spec.generate == "quarter_cylinder")
-    return (cells(spec.radius) + 1) * (cells(spec.radius) + 1) * (cells(spec.height) + 1);
-  const double mid = 0.5 * (spec.radius + spec.inner_radius);
-  return (cells(spec.radius - spec.inner_radius) + 1) * (cells(0.5 * std::numbers::pi * mid) + 1) *
-         (cells(spec.height) + 1);
+    return mesh::quarter_cylinder_node_count(spec.radius, spec.height, spec.element_size);
+  return mesh::quarter_ring_node_count(spec.radius, spec.inner_radius, spec.height, spec.element_size);
 }
 
 mesh::TetMesh build_mesh(const MeshSpec& spec, const std::string& key) {

@@ -72,8 +72,10 @@ std::vector<std::string> fingerprint_changes(const std::vector<std::string>& bef
                                              const std::vector<std::string>& now) {
   std::map<std::string, std::pair<std::string, std::string>> values; // key -> (before, now)
   const std::string absent = "(absent)";
-  for (const std::string& line : before)
-    values[key_value(line).first] = {key_value(line).second, absent};
+  for (const std::string& line : before) {
+    const auto [key, value] = key_value(line);
+    values[key] = {value, absent};
+  }
   for (const std::string& line : now) {
     const auto [key, value] = key_value(line);
     auto [it, inserted] = values.try_emplace(key, absent, value);

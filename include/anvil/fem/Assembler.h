@@ -7,8 +7,9 @@
 // are assembled in chunks of consecutive elements (their rows stay in cache);
 // a colouring of the chunks (no two chunks of a colour share a node) lets
 // assembly write the values in place, colour by colour with TBB, each chunk
-// in element order, so the result does not depend on the thread count. Prescribed dofs are decoupled rows and columns
-// with a scaled identity on the diagonal (DofMap).
+// in element order, so the result does not depend on the thread count.
+// Prescribed dofs are decoupled rows and columns with a scaled identity on
+// the diagonal (DofMap).
 #pragma once
 #include "anvil/fem/DofMap.h"
 #include "anvil/fem/mini_element.h"

@@ -30,4 +30,12 @@ TetMesh make_quarter_cylinder(double radius, double height, double element_size)
 /// 5 bottom, 6 top.
 TetMesh make_quarter_ring(double outer_radius, double inner_radius, double height, double element_size);
 
+/// Nodes the generators above make with these arguments, counted without
+/// building the mesh (a double: a mistyped element size must not overflow
+/// the count before it is refused).
+double box_node_count(const Point& size, double element_size);
+double cylinder_node_count(double radius, double height, double element_size);
+double quarter_cylinder_node_count(double radius, double height, double element_size);
+double quarter_ring_node_count(double outer_radius, double inner_radius, double height, double element_size);
+
 } // namespace anvil::mesh
