@@ -161,8 +161,18 @@ inline const std::vector<CubesMeshes>& cubes_meshes() {
 struct CubesMethod {
   std::string formulation = "quasi_symmetric", integration = "facet";
   bool lower_master = true;
-  int facet_subdivision = -1; ///< −1: the case's default
+  int facet_subdivision = -1; ///< subdivision quadrature: levels; −1: the case's default
+  std::string quadrature;     ///< facet integration: intersection or subdivision; empty: the case's default
 };
+
+/// A formulation and integration with the case's own quadrature.
+inline CubesMethod cubes_method(const std::string& formulation, const std::string& integration, bool lower_master) {
+  CubesMethod method;
+  method.formulation = formulation;
+  method.integration = integration;
+  method.lower_master = lower_master;
+  return method;
+}
 
 inline Errors run_cubes(const CubesLoad& load, const CubesMeshes& meshes, const CubesMethod& method,
                         const std::string& source_dir, const std::string& out) {
@@ -179,6 +189,7 @@ inline Errors run_cubes(const CubesLoad& load, const CubesMeshes& meshes, const 
                                         "contact_pairs[0].formulation=" + method.formulation,
                                         "contact_pairs[0].integration=" + method.integration,
                                         "contact.penalty=" + std::to_string(factor)};
+  if (!method.quadrature.empty()) overrides.push_back("contact_pairs[0].facet_quadrature=" + method.quadrature);
   if (method.facet_subdivision >= 0)
     overrides.push_back("contact_pairs[0].facet_subdivision=" + std::to_string(method.facet_subdivision));
   Errors e = run_case(load.file, overrides, load.exact_stress, master, source_dir, out);

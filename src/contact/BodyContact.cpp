@@ -31,10 +31,22 @@ std::string to_string(PairIntegration integration) {
   return integration == PairIntegration::nodal ? "nodal" : "facet";
 }
 
+FacetQuadrature facet_quadrature(const std::string& name) {
+  if (name == "intersection") return FacetQuadrature::intersection;
+  if (name == "subdivision") return FacetQuadrature::subdivision;
+  throw InputError("unknown facet quadrature '" + name + "' (expected intersection or subdivision)");
+}
+
+std::string to_string(FacetQuadrature quadrature) {
+  return quadrature == FacetQuadrature::intersection ? "intersection" : "subdivision";
+}
+
 std::string describe(const PairMethod& method) {
   std::string text = to_string(method.formulation) + ", " + to_string(method.integration);
   if (method.integration == PairIntegration::facet)
-    text += " (facets split up to " + std::to_string(method.facet_subdivision) + " levels)";
+    text += method.quadrature == FacetQuadrature::intersection
+                ? " (over the facets' intersections)"
+                : " (facets split up to " + std::to_string(method.facet_subdivision) + " levels)";
   return text;
 }
 
@@ -76,12 +88,20 @@ mesh::Point point_on(const mesh::TetMesh& mesh, const mesh::Triangle& f, const E
   return shape[0] * mesh.nodes[f[0]] + shape[1] * mesh.nodes[f[1]] + shape[2] * mesh.nodes[f[2]];
 }
 
-/// Outward unit normal of a body at a boundary node: the area-weighted mean of its boundary faces.
-Eigen::Vector3d own_normal(const mesh::TetMesh& mesh, const std::vector<int>& faces) {
+/// Whether boundary face f lies on a symmetry plane of its body (BodyContact's constructor).
+bool on_symmetry_plane(const std::vector<char>& symmetry_faces, int f) {
+  return !symmetry_faces.empty() && symmetry_faces[f];
+}
+
+/// Outward unit normal of a body's contact surface at a boundary node: the
+/// area-weighted mean of its boundary faces off the symmetry planes; zero
+/// when it has none.
+Eigen::Vector3d own_normal(const mesh::TetMesh& mesh, const std::vector<int>& faces,
+                           const std::vector<char>& symmetry_faces) {
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
   for (int f : faces)
-    n += mesh::area_vector(mesh, mesh.boundary_faces[f]);
-  return n.normalized();
+    if (!on_symmetry_plane(symmetry_faces, f)) n += mesh::area_vector(mesh, mesh.boundary_faces[f]);
+  return n.isZero() ? n : n.normalized();
 }
 
 /// Σ_j w_j value[node_j] over the nodes of positive weight.
@@ -121,21 +141,54 @@ struct Projection {
   double gap;             ///< δ₀ (mm)
 };
 
-/// One side of a pair seen from the other: its boundary facets, their search
-/// tree, and the facets around each node.
+/// `p` for the point x, its gap snapped to zero within round-off; nothing
+/// when it lies `search_distance` or more from the surface.
+std::optional<Projection> within_reach(Projection p, const mesh::Point& x, double search_distance) {
+  // Touching to round-off is touching: a quadrature point interpolated
+  // between nodes on the other body's plane lies off it by 1e-16, and a
+  // static case has no speed to set an active-set tolerance from.
+  if (std::abs(p.gap) <= 1e-12 * (1.0 + x.norm())) p.gap = 0.0;
+  // Deeper than the reach is not a penetration of this increment: the
+  // point lies behind the other body's edge (a block's top corner over
+  // the side of the block below), where the side test is ambiguous.
+  if (std::abs(p.gap) >= search_distance) return std::nullopt;
+  return p;
+}
+
+/// The boundary facets of `r` off its symmetry planes (indices into mesh.boundary_faces).
+std::vector<int> surface_facets(const mesh::MeshRange& r, const std::vector<char>& symmetry_faces) {
+  std::vector<int> list;
+  for (int f = r.first_face; f < r.first_face + r.face_count; ++f)
+    if (!on_symmetry_plane(symmetry_faces, f)) list.push_back(f);
+  return list;
+}
+
+std::vector<mesh::Triangle> triangles(const mesh::TetMesh& mesh, const std::vector<int>& faces) {
+  std::vector<mesh::Triangle> list;
+  for (int f : faces)
+    list.push_back(mesh.boundary_faces[f]);
+  return list;
+}
+
+/// One side of a pair seen from the other: its contact surface (the body's
+/// boundary facets but those on its symmetry planes), their search tree,
+/// and the facets around each node.
 struct Side {
   const mesh::TetMesh& mesh;
   const mesh::MeshRange& range;
   const std::vector<std::vector<int>>& node_faces;
-  std::vector<mesh::Triangle> faces;
+  const std::vector<char>& symmetry_faces;
+  std::vector<int> ids; ///< the surface's facets, indices into mesh.boundary_faces
   SurfaceSearch surface;
 
-  Side(const mesh::TetMesh& m, const mesh::MeshRange& r, const std::vector<std::vector<int>>& nf)
-      : mesh(m), range(r), node_faces(nf),
-        faces(m.boundary_faces.begin() + r.first_face, m.boundary_faces.begin() + r.first_face + r.face_count),
-        surface(m.nodes, faces) {}
+  Side(const mesh::TetMesh& m, const mesh::MeshRange& r, const std::vector<std::vector<int>>& nf,
+       const std::vector<char>& symmetry)
+      : mesh(m), range(r), node_faces(nf), symmetry_faces(symmetry), ids(surface_facets(r, symmetry)),
+        surface(m.nodes, triangles(m, ids)) {}
 
-  bool holds_face(int f) const { return f >= range.first_face && f < range.first_face + range.face_count; }
+  bool holds_face(int f) const {
+    return f >= range.first_face && f < range.first_face + range.face_count && !on_symmetry_plane(symmetry_faces, f);
+  }
 
   /// Projects x, a point of the other body whose outward normal there is
   /// `own`; nothing when it is `search_distance` or more from this side.
@@ -147,9 +200,9 @@ struct Side {
     // the side (a point on the rim of a block lying on another must not
     // take the side face of the block below).
     const double hair = std::max(1e-9 * (1.0 + hit.point.norm()), 1e-3 * search_distance);
-    int best = range.first_face + hit.face;
+    int best = ids[hit.face];
     double best_facing = mesh::area_vector(mesh, mesh.boundary_faces[best]).normalized().dot(own);
-    for (int vertex : faces[hit.face])
+    for (int vertex : mesh.boundary_faces[best])
       for (int f : node_faces[vertex]) {
         if (!holds_face(f)) continue;
         const mesh::Triangle& t = mesh.boundary_faces[f];
@@ -169,17 +222,17 @@ struct Side {
     const double lateral = (offset - along_normal * facet_normal).norm();
     const bool over_facet = lateral <= hair;
     const double side = along_normal >= 0.0 ? 1.0 : -1.0;
-    Projection p{best, shape, over_facet ? facet_normal : Eigen::Vector3d(side * offset / offset.norm()),
-                 over_facet ? along_normal : side * offset.norm()};
-    // Touching to round-off is touching: a quadrature point interpolated
-    // between nodes on the other body's plane lies off it by 1e-16, and a
-    // static case has no speed to set an active-set tolerance from.
-    if (std::abs(p.gap) <= 1e-12 * (1.0 + x.norm())) p.gap = 0.0;
-    // Deeper than the reach is not a penetration of this increment: the
-    // point lies behind the other body's edge (a block's top corner over
-    // the side of the block below), where the side test is ambiguous.
-    if (std::abs(p.gap) >= search_distance) return std::nullopt;
-    return p;
+    return within_reach({best, shape, over_facet ? facet_normal : Eigen::Vector3d(side * offset / offset.norm()),
+                         over_facet ? along_normal : side * offset.norm()},
+                        x, search_distance);
+  }
+
+  /// Projects x along the normal of this side's facet f, which x lies over.
+  std::optional<Projection> project_onto(const mesh::Point& x, int f, double search_distance) const {
+    const mesh::Triangle& facet = mesh.boundary_faces[f];
+    const Eigen::Vector3d normal = mesh::area_vector(mesh, facet).normalized();
+    const Eigen::Vector3d shape = barycentric(x, mesh.nodes[facet[0]], mesh.nodes[facet[1]], mesh.nodes[facet[2]]);
+    return within_reach({f, shape, normal, (x - point_on(mesh, facet, shape)).dot(normal)}, x, search_distance);
   }
 };
 
@@ -214,9 +267,9 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
     const bool one_sided = pair.method.formulation == PairFormulation::master_slave;
     const double share = one_sided ? 1.0 : 0.5; // f_p: eqs. 10, 19 against the ½ of eqs. 12, 14, 20, 21
     // The surfaces projected onto: the master's, and the slave's unless master/slave.
-    const Side master(mesh, pair.master, node_faces);
+    const Side master(mesh, pair.master, node_faces, symmetry_faces_);
     const std::optional<Side> slave =
-        one_sided ? std::nullopt : std::optional<Side>(std::in_place, mesh, pair.slave, node_faces);
+        one_sided ? std::nullopt : std::optional<Side>(std::in_place, mesh, pair.slave, node_faces, symmetry_faces_);
     // A point of `from` (own nodes and shape functions, area A_p) projected as `hit`.
     auto point = [&](const std::array<int, 3>& own, const Eigen::Vector3d& own_shape, const Projection& hit,
                      double area, double gap_weight, bool on_slave) {
@@ -234,13 +287,14 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
     };
     auto project_nodes = [&](const mesh::MeshRange& from, const Side& onto, bool on_slave) {
       for (int node = from.first_node; node < from.first_node + from.node_count; ++node) {
-        if (node_faces[node].empty()) continue; // interior node
-        const std::optional<Projection> hit =
-            onto.project(mesh.nodes[node], own_normal(mesh, node_faces[node]), search_distance);
+        const Eigen::Vector3d own = own_normal(mesh, node_faces[node], symmetry_faces_);
+        if (own.isZero()) continue; // an interior node, or one on symmetry planes only
+        const std::optional<Projection> hit = onto.project(mesh.nodes[node], own, search_distance);
         if (!hit) continue;
         double area = 0.0; // tributary area on the faces that look at the other body
         for (int f : node_faces[node])
-          if (const Eigen::Vector3d n = mesh::area_vector(mesh, mesh.boundary_faces[f]); looks_at(n, hit->normal))
+          if (const Eigen::Vector3d n = mesh::area_vector(mesh, mesh.boundary_faces[f]);
+              !on_symmetry_plane(symmetry_faces_, f) && looks_at(n, hit->normal))
             area += n.norm() / 3.0;
         if (area == 0.0) continue; // no face looks at the other body: not on its contact surface
         nodes_.push_back(point({node, -1, -1}, Eigen::Vector3d::UnitX(), *hit, area, share, on_slave));
@@ -253,10 +307,37 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
       points_.insert(points_.end(), nodes_.begin() + static_cast<std::ptrdiff_t>(first_node), nodes_.end());
       continue;
     }
+    std::vector<int> near; // facets of the other side near a facet
+    // The parts of facet t over the other side's facets it overlaps.
+    auto integrate_overlaps = [&](const mesh::Triangle& t, const Eigen::Vector3d& area_vector, const Side& onto,
+                                  bool on_slave) {
+      const std::array<Eigen::Vector3d, 3> own{mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]};
+      const Eigen::Vector3d reach = Eigen::Vector3d::Constant(search_distance);
+      onto.surface.overlapping(
+          {own[0].cwiseMin(own[1]).cwiseMin(own[2]) - reach, own[0].cwiseMax(own[1]).cwiseMax(own[2]) + reach}, near);
+      for (int index : near) {
+        const mesh::Triangle& other = mesh.boundary_faces[onto.ids[index]];
+        if (!looks_at(area_vector, mesh::area_vector(mesh, other).normalized())) continue;
+        const FacetOverlap o = overlap(own, {mesh.nodes[other[0]], mesh.nodes[other[1]], mesh.nodes[other[2]]});
+        for (int i = 0; i < o.count; ++i)
+          for (const FacetQuadraturePoint& g : degree_two_rule(o.parts[i], o.area_fraction[i])) {
+            const std::optional<Projection> hit =
+                onto.project_onto(point_on(mesh, t, g.barycentric), onto.ids[index], search_distance);
+            if (!hit) continue;
+            const double area = g.weight * area_vector.norm();
+            points_.push_back(point(t, g.barycentric, *hit, area, share * area, on_slave));
+          }
+      }
+    };
     auto project_facets = [&](const mesh::MeshRange& from, const Side& onto, bool on_slave) {
       for (int f = from.first_face; f < from.first_face + from.face_count; ++f) {
+        if (on_symmetry_plane(symmetry_faces_, f)) continue;
         const mesh::Triangle& t = mesh.boundary_faces[f];
         const Eigen::Vector3d area_vector = mesh::area_vector(mesh, t);
+        if (pair.method.quadrature == FacetQuadrature::intersection) {
+          integrate_overlaps(t, area_vector, onto, on_slave);
+          continue;
+        }
         const Eigen::Vector3d own = area_vector.normalized();
         double longest = 0.0;
         for (int k = 0; k < 3; ++k)
@@ -287,7 +368,12 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
             points_.push_back(point(t, g.barycentric, *hit, area, share * area, on_slave));
           }
         };
+        const std::size_t first = points_.size();
         integrate(integrate, whole_facet(), 0, 1.0, longest);
+        // By the facet each point falls on, so that add() sums the friction
+        // blocks of a facet over one facet of the other body once.
+        std::stable_sort(points_.begin() + static_cast<std::ptrdiff_t>(first), points_.end(),
+                         [](const ContactPoint& a, const ContactPoint& b) { return a.facet < b.facet; });
       }
     };
     project_facets(pair.slave, master, true);
@@ -459,7 +545,21 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     }
   }
   // Friction laws with a stress of their own, at each point, under the
-  // pressure Σ W λ of its multipliers (λ as just computed).
+  // pressure Σ W λ of its multipliers (λ as just computed). The sliding
+  // blocks of consecutive points on the same six nodes (a facet's points
+  // over one facet of the other body: search() orders them so) are summed
+  // before they are handed over, not sent 36 per quadrature point.
+  std::array<Eigen::Matrix3d, 36> sliding_sum;
+  std::array<int, 6> summed_nodes{-1, -1, -1, -1, -1, -1};
+  bool summing = false;
+  auto hand_over_sliding = [&] {
+    if (!summing) return;
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b)
+        if (summed_nodes[a] >= 0 && summed_nodes[b] >= 0)
+          blocks->push_back({summed_nodes[a], summed_nodes[b], sliding_sum[6 * a + b]});
+    summing = false;
+  };
   for (const ContactPoint& p : points_) {
     const FrictionLaw& law = pairs_[p.pair].friction;
     if (law.kind == FrictionKind::frictionless || law.kind == FrictionKind::sticking) continue;
@@ -479,14 +579,22 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     // w = sense P (Σ M_i v_i − Σ N_j v_j): coefficient of node a in w is c_a P.
     const RelativeStencil st = stencil(p, sense);
     const double area = p.share * p.area;
+    if (blocks && st.nodes != summed_nodes) {
+      hand_over_sliding();
+      summed_nodes = st.nodes;
+    }
+    if (blocks && !summing) {
+      for (Eigen::Matrix3d& k : sliding_sum)
+        k.setZero();
+      summing = true;
+    }
+    const Eigen::Matrix3d sliding = area * f.d_sliding * tangent_projector;
     for (int a = 0; a < 6; ++a) {
       if (st.nodes[a] < 0) continue;
       residual.segment<3>(kDofsPerNode * st.nodes[a]) += st.coefficient[a] * area * f.stress;
       if (!blocks) continue;
       for (int b = 0; b < 6; ++b)
-        if (st.nodes[b] >= 0)
-          blocks->push_back({st.nodes[a], st.nodes[b],
-                             st.coefficient[a] * st.coefficient[b] * area * f.d_sliding * tangent_projector});
+        sliding_sum[6 * a + b] += (st.coefficient[a] * st.coefficient[b]) * sliding;
       if (f.d_normal_pressure.isZero()) continue;
       // Coulomb: τ depends on σn = Σ_m W λ_m, λ_m = ρ C_m/G_m.
       for (const MultiplierWeight& w : p.multipliers)
@@ -499,6 +607,7 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
         }
     }
   }
+  if (blocks) hand_over_sliding();
 }
 
 std::vector<std::pair<int, int>> BodyContact::couplings() const {

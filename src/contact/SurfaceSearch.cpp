@@ -6,6 +6,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <boost/iterator/function_output_iterator.hpp>
 
 namespace anvil::contact {
 namespace {
@@ -42,6 +43,15 @@ SurfaceSearch& SurfaceSearch::operator=(SurfaceSearch&&) noexcept = default;
 SurfaceSearch::Closest SurfaceSearch::closest(const mesh::Point& x) const {
   const auto [point, triangle] = tree_->tree.closest_point_and_primitive(to_cgal(x));
   return {static_cast<int>(triangle - tree_->triangles.cbegin()), mesh::Point(point.x(), point.y(), point.z())};
+}
+
+void SurfaceSearch::overlapping(const Eigen::AlignedBox3d& box, std::vector<int>& found) const {
+  found.clear();
+  const CGAL::Bbox_3 query(box.min().x(), box.min().y(), box.min().z(), box.max().x(), box.max().y(), box.max().z());
+  const Iterator first = tree_->triangles.cbegin();
+  tree_->tree.all_intersected_primitives(query, boost::make_function_output_iterator([&](const Iterator& triangle) {
+                                           found.push_back(static_cast<int>(triangle - first));
+                                         }));
 }
 
 } // namespace anvil::contact

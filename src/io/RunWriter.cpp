@@ -166,7 +166,7 @@ void RunWriter::write_interface(const scene::Scene& scene, const scene::Discreti
   std::vector<contact::BodyPair> both_sides = disc.pair_contact->pairs();
   for (contact::BodyPair& pair : both_sides)
     pair.method = {contact::PairFormulation::symmetric, contact::PairIntegration::nodal};
-  contact::BodyContact probe(both_sides);
+  contact::BodyContact probe(both_sides, disc.pair_contact->symmetry_faces());
   probe.search(state.mesh, 0.05 * scene.reference_length);
   std::ostringstream csv;
   csv.precision(10);

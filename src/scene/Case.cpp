@@ -109,6 +109,8 @@ void read_contact_pairs(const CheckedYaml& doc, Case& c) {
                      "' already form a contact pair");
     pair.method.formulation = contact::pair_formulation(doc.text(n, "formulation", "contact_pairs[].formulation"));
     pair.method.integration = contact::pair_integration(doc.text(n, "integration", "contact_pairs[].integration"));
+    pair.method.quadrature =
+        contact::facet_quadrature(doc.text(n, "facet_quadrature", "contact_pairs[].facet_quadrature"));
     pair.method.facet_subdivision = doc.integer(n, "facet_subdivision", "contact_pairs[].facet_subdivision");
     pair.friction = read_friction(doc, n, "contact_pairs", shown);
     pair.source = doc.at(n);

@@ -39,6 +39,24 @@ std::vector<int> Discretisation::touching_die(const Eigen::VectorXd& nodal) cons
   return die;
 }
 
+namespace {
+
+/// Per boundary face of the run's mesh, 1 where a symmetry condition of its body selects it.
+std::vector<char> symmetry_faces(const Scene& scene, const RunState& state) {
+  std::vector<char> on_plane(state.mesh.boundary_faces.size(), 0);
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const mesh::MeshRange& range = state.bodies[b];
+    const mesh::TetMesh body = mesh::extract(state.mesh, range);
+    for (const BoundaryCondition& bc : scene.bodies[b].conditions)
+      if (bc.kind == BoundaryKind::symmetry)
+        for (int f : select_faces(body, bc.faces))
+          on_plane[range.first_face + f] = 1;
+  }
+  return on_plane;
+}
+
+} // namespace
+
 Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
   fem::ElementLaws laws;
   ImposedConditions imposed;
@@ -58,7 +76,7 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
     for (const ContactPairSpec& p : scene.input.contact_pairs)
       list.push_back({scene.bodies[p.master].name + "/" + scene.bodies[p.slave].name, state.bodies[p.master],
                       state.bodies[p.slave], p.method, p.friction});
-    pairs = std::make_unique<contact::BodyContact>(std::move(list));
+    pairs = std::make_unique<contact::BodyContact>(std::move(list), symmetry_faces(scene, state));
   }
   std::vector<material::PointState> states(state.mesh.tets.size());
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)

@@ -233,9 +233,14 @@ const std::vector<KeySpec>& case_schema() {
                                  "integrated over the boundary facets, λ interpolated on them (paper §3, eqs. 10-18)"),
                              {"nodal", "facet"}),
                      "nodal"),
+        with_default(choices(key("contact_pairs[].facet_quadrature", T::string,
+                                 "facet integration: intersection: 3 quadrature points on each part of a facet over "
+                                 "one facet of the other body (their intersection); subdivision: the facet split in "
+                                 "four where it projects onto several facets of the other body, 3 points on each part"),
+                             {"intersection", "subdivision"}),
+                     "intersection"),
         with_default(range(key("contact_pairs[].facet_subdivision", T::integer,
-                               "facet integration: a facet is split in four, up to this many times, where it projects "
-                               "onto several facets of the other body; 3 quadrature points on each part"),
+                               "subdivision quadrature: the most times a facet is split in four"),
                            0, contact::kMaxFacetSubdivision),
                      "4"),
         key("contact", T::map, "contact enforcement"),

@@ -30,7 +30,7 @@ patch_test::Errors run(const patch_test::CubesLoad& load, const patch_test::Cube
 }
 
 double support_force(const patch_test::CubesLoad& load, const patch_test::CubesMeshes& meshes, bool lower_master) {
-  const patch_test::CubesMethod method{"quasi_symmetric", "facet", lower_master, -1};
+  const patch_test::CubesMethod method = patch_test::cubes_method("quasi_symmetric", "facet", lower_master);
   run(load, meshes, method);
   return anvil::io::read_loads(folder(load, meshes, method), "support").back().force.z();
 }
@@ -44,11 +44,12 @@ const std::vector<patch_test::CubesMeshes> kPairs = {{3, 7}, {7, 3}, {2, 8}, {8,
 TEST_CASE("facet quasi-symmetric contact passes the unit-cube patch test whichever cube is finer or master",
           "[regression]") {
   const patch_test::CubesLoad& pressure = patch_test::cubes_loads().front();
-  const patch_test::Errors matching = run(pressure, {4, 4}, {"quasi_symmetric", "facet", true, -1});
+  const patch_test::Errors matching = run(pressure, {4, 4}, patch_test::cubes_method("quasi_symmetric", "facet", true));
   for (const patch_test::CubesMeshes& meshes : kPairs)
     for (const bool lower_master : {true, false}) {
       INFO(meshes.lower << "/" << meshes.upper << ", master " << (lower_master ? "lower" : "upper"));
-      const patch_test::Errors e = run(pressure, meshes, {"quasi_symmetric", "facet", lower_master, -1});
+      const patch_test::Errors e =
+          run(pressure, meshes, patch_test::cubes_method("quasi_symmetric", "facet", lower_master));
       // The issue's targets: 1 % on the interface pressure and on σzz inside
       // either cube (measured at most 0.16 %, the default 4 levels).
       CHECK(e.interface_max < 0.01);
@@ -65,7 +66,7 @@ TEST_CASE("nodal contact loses the patch-test stress where the coarse cube is sl
   // nodes cannot hold the fine master's nodes (measured: 258 % nodal
   // quasi-symmetric, 1800 % master/slave at the interface).
   const patch_test::CubesLoad& pressure = patch_test::cubes_loads().front();
-  const patch_test::Errors nodal = run(pressure, {2, 8}, {"quasi_symmetric", "nodal", false, -1});
+  const patch_test::Errors nodal = run(pressure, {2, 8}, patch_test::cubes_method("quasi_symmetric", "nodal", false));
   CHECK(nodal.interface_max > 0.5);
   CHECK(nodal.master_penetration > 10.0);
 }

@@ -11,6 +11,11 @@
 //       quadrature's subdivision levels and the contact time they cost.
 //   tools/patch_test --paper [DIR]       the blocks of Fourment 2008 §5.2: 4
 //       load cases × 6 mesh pairs × 3 formulations, nodal.
+//   tools/patch_test --curved [DIR]      a curved interface: the cylinder on a
+//       block of cases/hertz_cylinder.yaml, 2 block meshes × either body as
+//       master × master/slave and quasi-symmetric × nodal and facet, against
+//       Hertz at the load each run transmits: the pressure at the line of
+//       first contact, the profile, the contact width, the deepest master node.
 // Prints Markdown tables and writes DIR/*.csv (default DIR: out/patch_test_table).
 #include "anvil/contact/facet_quadrature.h"
 #include "anvil/core/error.h"
@@ -18,6 +23,7 @@
 #include "anvil/solver/PetscSession.h"
 #include "patch_test_cases.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -74,18 +80,23 @@ void cubes_table(const std::string& out) {
     double pressure = 0, szz = 0, depth = 0, swap = 0;
     int extra_newton = -99;
   };
-  std::map<std::string, Worst> worst; // by formulation + integration
+  // The matching pair first: the others' Newton counts are compared with it.
+  std::vector<CubesMeshes> pairs = patch_test::cubes_meshes();
+  std::stable_partition(pairs.begin(), pairs.end(), [](const CubesMeshes& m) { return m.lower == m.upper; });
+  std::map<std::string, std::map<std::string, Worst>> worst_of_load; // by load, then formulation + integration
   for (const CubesLoad& load : patch_test::cubes_loads()) {
     const bool displacement = std::strstr(load.name, "displacement") || std::strstr(load.name, "velocity");
+    std::map<std::string, Worst>& worst = worst_of_load[load.name];
     std::map<std::string, int> matching_newton;
-    for (const CubesMeshes& meshes : patch_test::cubes_meshes())
+    for (const CubesMeshes& meshes : pairs)
       for (const char* formulation : kFormulations)
         for (const char* integration : {"nodal", "facet"}) {
           const std::string method = std::string(formulation) + " " + integration;
           std::array<double, 2> force{};
           for (const bool lower_master : {true, false}) {
-            const Errors e = patch_test::run_cubes(load, meshes, {formulation, integration, lower_master, -1},
-                                                   ANVIL_SOURCE_DIR, out + "/run");
+            const Errors e =
+                patch_test::run_cubes(load, meshes, patch_test::cubes_method(formulation, integration, lower_master),
+                                      ANVIL_SOURCE_DIR, out + "/run");
             force[lower_master ? 0 : 1] = support_force(out + "/run");
             std::printf("| %s | %s | %s | %s | %s | %.3g %% | %.3g %% | %.3g %% | %.3g %% | %.3g %% | %.3g %% | %.3g | "
                         "%d | %.2f s |\n",
@@ -113,34 +124,136 @@ void cubes_table(const std::string& out) {
                 std::max(worst[method].swap, std::abs(force[1] - force[0]) / std::max(std::abs(force[0]), 1e-300));
         }
   }
-  std::printf("\nWorst over the 6 cases, 9 mesh pairs and both master choices:\n\n"
-              "| formulation | integration | pressure max | σzz max | master depth / penalty | Newton above "
-              "matching | swap force change (displacement cases) |\n|---|---|---|---|---|---|---|\n");
-  for (const auto& [method, w] : worst) {
+  auto print = [](const std::string& load, const std::string& method, const Worst& w) {
     const std::size_t space = method.find(' ');
-    std::printf("| %s | %s | %.3g %% | %.3g %% | %.3g | %d | %.3g %% |\n", method.substr(0, space).c_str(),
-                method.substr(space + 1).c_str(), 100 * w.pressure, 100 * w.szz, w.depth, w.extra_newton, 100 * w.swap);
-  }
+    std::printf("| %s | %s | %s | %.3g %% | %.3g %% | %.3g | %d | %.3g %% |\n", load.c_str(),
+                method.substr(0, space).c_str(), method.substr(space + 1).c_str(), 100 * w.pressure, 100 * w.szz,
+                w.depth, w.extra_newton, 100 * w.swap);
+  };
+  std::printf("\nWorst over the 9 mesh pairs and both master choices, per case, then over the 6 cases:\n\n"
+              "| case | formulation | integration | pressure max | σzz max | master depth / penalty | Newton above "
+              "matching | swap force change (displacement cases) |\n|---|---|---|---|---|---|---|---|\n");
+  std::map<std::string, Worst> overall;
+  for (const auto& [load, worst] : worst_of_load)
+    for (const auto& [method, w] : worst) {
+      print(load, method, w);
+      Worst& o = overall[method];
+      o.pressure = std::max(o.pressure, w.pressure);
+      o.szz = std::max(o.szz, w.szz);
+      o.depth = std::max(o.depth, w.depth);
+      o.extra_newton = std::max(o.extra_newton, w.extra_newton);
+      o.swap = std::max(o.swap, w.swap);
+    }
+  for (const auto& [method, w] : overall)
+    print("all", method, w);
 }
 
 void quadrature_table(const std::string& out) {
   std::ofstream csv(out + "/facet_quadrature.csv");
-  csv << "meshes,master,formulation,subdivision,pressure_max,szz_max,contact_time_s,wall_time_s\n";
-  std::printf("| n_l/n_u | master | formulation | levels | pressure max | σzz max | contact time | run |\n"
+  csv << "meshes,master,formulation,quadrature,levels,pressure_max,szz_max,contact_time_s,wall_time_"
+         "s\n";
+  std::printf("| n_l/n_u | master | formulation | quadrature | pressure max | σzz max | contact time | run |\n"
               "|---|---|---|---|---|---|---|---|\n");
   const CubesLoad& load = patch_test::cubes_loads().front();
   for (const CubesMeshes& meshes : {CubesMeshes{3, 7}, CubesMeshes{2, 16}})
     for (const bool lower_master : {true, false})
       for (const char* formulation : {"master_slave", "quasi_symmetric"})
-        for (int levels = 0; levels <= anvil::contact::kMaxFacetSubdivision; ++levels) {
-          const Errors e = patch_test::run_cubes(load, meshes, {formulation, "facet", lower_master, levels},
+        for (int levels = -1; levels <= anvil::contact::kMaxFacetSubdivision; ++levels) {
+          const bool intersection = levels < 0;
+          const Errors e = patch_test::run_cubes(load, meshes,
+                                                 {.formulation = formulation,
+                                                  .integration = "facet",
+                                                  .lower_master = lower_master,
+                                                  .facet_subdivision = std::max(levels, 0),
+                                                  .quadrature = intersection ? "intersection" : "subdivision"},
                                                  ANVIL_SOURCE_DIR, out + "/run");
-          std::printf("| %s | %s | %s | %d | %.3g %% | %.3g %% | %.3f s | %.2f s |\n", pair_name(meshes).c_str(),
-                      lower_master ? "lower" : "upper", formulation, levels, 100 * e.interface_max,
+          const std::string quadrature = intersection ? "intersection" : std::to_string(levels) + " levels";
+          std::printf("| %s | %s | %s | %s | %.3g %% | %.3g %% | %.3f s | %.2f s |\n", pair_name(meshes).c_str(),
+                      lower_master ? "lower" : "upper", formulation, quadrature.c_str(), 100 * e.interface_max,
                       100 * e.interior_max, e.contact_time, e.wall_time);
           std::fflush(stdout);
-          csv << pair_name(meshes) << "," << (lower_master ? "lower" : "upper") << "," << formulation << "," << levels
-              << "," << e.interface_max << "," << e.interior_max << "," << e.contact_time << "," << e.wall_time << "\n";
+          csv << pair_name(meshes) << "," << (lower_master ? "lower" : "upper") << "," << formulation << ","
+              << (intersection ? "intersection" : "subdivision") << "," << std::max(levels, 0) << "," << e.interface_max
+              << "," << e.interior_max << "," << e.contact_time << "," << e.wall_time << "\n";
+        }
+}
+
+/// Hertz's line contact (Johnson 1985, §4.3) for the load per unit length
+/// P of the whole cylinder, radius R, plane strain modulus E*.
+struct Hertz {
+  double half_width, peak;
+  double pressure(double y) const {
+    return y >= half_width ? 0.0 : peak * std::sqrt(1.0 - (y * y) / (half_width * half_width));
+  }
+};
+Hertz hertz(double load_per_length, double radius, double plane_modulus) {
+  const double b = std::sqrt(4.0 * load_per_length * radius / (M_PI * plane_modulus));
+  return {b, 2.0 * load_per_length / (M_PI * b)};
+}
+
+void curved_table(const std::string& out) {
+  // cases/hertz_cylinder.yaml: R = 10 mm, a slice 0.4 mm thick, half the
+  // cylinder modelled (y >= 0); E = 1000 MPa, nu = 0.3 for both bodies.
+  const double radius = 10.0, thickness = 0.4, plane_modulus = 1000.0 / (2.0 * (1.0 - 0.3 * 0.3));
+  std::ofstream csv(out + "/hertz_cylinder.csv");
+  csv << "cylinder_size,block_size,master,formulation,integration,support_force_N,hertz_half_width_mm,hertz_peak_MPa,"
+         "peak_cylinder,peak_block,profile_max,profile_rms,contact_half_width_mm,master_depth_um,newton_iterations,"
+         "contact_time_s\n";
+  std::ofstream profile(out + "/hertz_cylinder_profile.csv");
+  profile << "cylinder_size,block_size,master,formulation,integration,body,y_mm,z_mm,normal_stress_MPa,hertz_MPa\n";
+  std::printf(
+      "| h cylinder/block | master | formulation | integration | load | Hertz b, p0 | peak / p0 cylinder, block | "
+      "profile error max, RMS (of p0) | contact half-width / b | deepest master node | Newton | contact time |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const double block_size : {0.15, 0.35})
+    for (const char* master : {"block", "cylinder"})
+      for (const char* formulation : {"master_slave", "quasi_symmetric"})
+        for (const char* integration : {"nodal", "facet"}) {
+          const std::string slave = std::string(master) == "block" ? "cylinder" : "block";
+          const std::string dir = out + "/run";
+          anvil::scene::Case c = anvil::scene::read_case(std::string(ANVIL_SOURCE_DIR) + "/cases/hertz_cylinder.yaml",
+                                                         {"bodies[1].mesh.element_size=" + std::to_string(block_size),
+                                                          "contact_pairs[0].master=" + std::string(master),
+                                                          "contact_pairs[0].slave=" + slave,
+                                                          "contact_pairs[0].formulation=" + std::string(formulation),
+                                                          "contact_pairs[0].integration=" + std::string(integration)});
+          std::filesystem::remove_all(dir);
+          anvil::scene::run(c, {dir});
+          const double force = std::abs(anvil::io::read_loads(dir, "support").back().force.x());
+          const Hertz h = hertz(2.0 * force / thickness, radius, plane_modulus);
+          double peak_sum[2] = {0, 0}, error_max = 0, error_sq = 0, width = 0, depth = 0;
+          int peak_count[2] = {0, 0}, count = 0;
+          for (const anvil::io::InterfaceRow& row : anvil::io::read_interface(dir)) {
+            const double y = row.position.y(), exact = h.pressure(y);
+            const int body = row.body == "cylinder" ? 0 : 1;
+            profile << c.bodies[0].mesh.element_size << "," << block_size << "," << master << "," << formulation << ","
+                    << integration << "," << row.body << "," << y << "," << row.position.z() << "," << row.normal_stress
+                    << "," << exact << "\n";
+            if (y < 1e-6) peak_sum[body] += row.normal_stress, ++peak_count[body];
+            if (row.normal_stress > 1e-3 * h.peak) width = std::max(width, y);
+            if (row.body == master) depth = std::max(depth, -row.gap);
+            if (y > 1.5 * h.half_width) continue;
+            const double error = std::abs(row.normal_stress - exact) / h.peak;
+            error_max = std::max(error_max, error);
+            error_sq += error * error;
+            ++count;
+          }
+          const double peak[2] = {peak_sum[0] / std::max(peak_count[0], 1) / h.peak,
+                                  peak_sum[1] / std::max(peak_count[1], 1) / h.peak};
+          const double rms = std::sqrt(error_sq / std::max(count, 1));
+          const double contact_time =
+              anvil::io::read_summary_number(dir, "search") + anvil::io::read_summary_number(dir, "contact");
+          const int newton = static_cast<int>(anvil::io::read_summary_number(dir, "newton_iterations"));
+          std::printf(
+              "| %.2g/%.2g mm | %s | %s | %s | %.4g N | %.3f mm, %.2f MPa | %.3f, %.3f | %.1f %%, %.1f %% | %.2f | "
+              "%.2g µm | %d | %.2f s |\n",
+              c.bodies[0].mesh.element_size, block_size, master, formulation, integration, force, h.half_width, h.peak,
+              peak[0], peak[1], 100 * error_max, 100 * rms, width / h.half_width, 1e3 * depth, newton, contact_time);
+          std::fflush(stdout);
+          csv << c.bodies[0].mesh.element_size << "," << block_size << "," << master << "," << formulation << ","
+              << integration << "," << force << "," << h.half_width << "," << h.peak << "," << peak[0] << "," << peak[1]
+              << "," << error_max << "," << rms << "," << width << "," << 1e3 * depth << "," << newton << ","
+              << contact_time << "\n";
         }
 }
 
@@ -151,14 +264,15 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
-      std::puts("usage: tools/patch_test [--paper | --quadrature] [DIR]\n"
+      std::puts("usage: tools/patch_test [--paper | --quadrature | --curved] [DIR]\n"
                 "  (default) the unit-cube table: 648 runs, about 15 minutes; DIR/patch_test_cubes.csv\n"
                 "  --quadrature  facet quadrature levels against error and contact time; DIR/facet_quadrature.csv\n"
                 "  --paper       the blocks of Fourment 2008, nodal contact: 72 runs; DIR/patch_test.csv\n"
+                "  --curved      a cylinder on a block against Hertz: 16 runs; DIR/hertz_cylinder*.csv\n"
                 "  DIR defaults to out/patch_test_table");
       return 0;
     }
-    if (arg == "--paper" || arg == "--quadrature")
+    if (arg == "--paper" || arg == "--quadrature" || arg == "--curved")
       mode = arg.substr(2);
     else
       out = arg;
@@ -172,6 +286,8 @@ int main(int argc, char** argv) {
       paper_table(out);
     else if (mode == "quadrature")
       quadrature_table(out);
+    else if (mode == "curved")
+      curved_table(out);
     else
       cubes_table(out);
     std::printf("results in %s/\n", out.c_str());

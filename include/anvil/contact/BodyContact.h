@@ -58,11 +58,17 @@ enum class PairIntegration { nodal, facet };
 PairIntegration pair_integration(const std::string& name); ///< throws InputError on an unknown name
 std::string to_string(PairIntegration integration);
 
+/// Facet integration's quadrature (contact/facet_quadrature.h).
+enum class FacetQuadrature { intersection, subdivision };
+FacetQuadrature facet_quadrature(const std::string& name); ///< throws InputError on an unknown name
+std::string to_string(FacetQuadrature quadrature);
+
 /// How a pair's contact term is discretised.
 struct PairMethod {
   PairFormulation formulation = PairFormulation::quasi_symmetric;
   PairIntegration integration = PairIntegration::nodal;
-  int facet_subdivision = 4; ///< facet integration: most levels of subdivision (contact/facet_quadrature.h)
+  FacetQuadrature quadrature = FacetQuadrature::intersection;
+  int facet_subdivision = 4; ///< subdivision quadrature: most levels
 };
 std::string describe(const PairMethod& method);
 
@@ -104,7 +110,13 @@ Eigen::Vector3d relative_velocity(const ContactPoint& p, const Eigen::VectorXd& 
 
 class BodyContact final : public solver::NodalTerm {
 public:
-  explicit BodyContact(std::vector<BodyPair> pairs) : pairs_(std::move(pairs)) {}
+  /// `symmetry_faces`: per boundary face of the mesh, 1 where the face lies
+  /// on a symmetry plane of its body (empty: none). Such a face is no
+  /// contact surface: beyond it lies the body's mirror image, and a point
+  /// pressed a hair into the other body, on the symmetry plane they share,
+  /// would otherwise find it closest.
+  explicit BodyContact(std::vector<BodyPair> pairs, std::vector<char> symmetry_faces = {})
+      : pairs_(std::move(pairs)), symmetry_faces_(std::move(symmetry_faces)) {}
 
   /// Projects the boundary nodes of each pair (slave nodes, and master nodes
   /// unless master/slave) that are within `search_distance` (mm) of the other
@@ -122,6 +134,7 @@ public:
   std::vector<std::pair<int, int>> couplings() const override;
 
   const std::vector<BodyPair>& pairs() const { return pairs_; }
+  const std::vector<char>& symmetry_faces() const { return symmetry_faces_; }
   /// The points whose gaps make the constraints: the projected nodes of
   /// nodal pairs, the quadrature points of facet pairs.
   const std::vector<ContactPoint>& points() const { return points_; }
@@ -154,6 +167,7 @@ private:
   double pressure(const ContactPoint& p, const Eigen::VectorXd& nodal) const;
 
   std::vector<BodyPair> pairs_;
+  std::vector<char> symmetry_faces_;
   std::vector<ContactPoint> nodes_;
   std::vector<ContactPoint> points_;
   std::vector<Multiplier> multipliers_;

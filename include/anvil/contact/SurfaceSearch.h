@@ -1,8 +1,10 @@
-// Closest facet of a triangulated body surface to a point: the search of
-// node-to-facet contact between bodies (DESIGN §3), a CGAL AABB tree
+// Closest facet of a triangulated body surface to a point, and the facets
+// near a box: the search of contact between bodies (DESIGN §3), a CGAL AABB tree
 // (TECH-NOTES §2) rebuilt once per increment, when the surface has moved.
 #pragma once
 #include "anvil/mesh/TetMesh.h"
+
+#include <Eigen/Geometry>
 
 #include <memory>
 #include <vector>
@@ -22,6 +24,10 @@ public:
     mesh::Point point; ///< closest point on that face (mm)
   };
   Closest closest(const mesh::Point& x) const;
+
+  /// The faces (indices into the `faces` given) whose bounding boxes meet
+  /// `box`, into `found` (cleared first).
+  void overlapping(const Eigen::AlignedBox3d& box, std::vector<int>& found) const;
 
 private:
   struct Tree;

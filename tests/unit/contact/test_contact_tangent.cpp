@@ -114,10 +114,12 @@ TEST_CASE("Body-pair contact: the tangent blocks are the derivative of the resid
   using contact::PairFormulation;
   for (const PairFormulation formulation :
        {PairFormulation::master_slave, PairFormulation::symmetric, PairFormulation::quasi_symmetric})
-    for (const contact::PairIntegration integration :
-         {contact::PairIntegration::nodal, contact::PairIntegration::facet})
+    for (const auto& [integration, quadrature] :
+         {std::pair{contact::PairIntegration::nodal, contact::FacetQuadrature::intersection},
+          std::pair{contact::PairIntegration::facet, contact::FacetQuadrature::intersection},
+          std::pair{contact::PairIntegration::facet, contact::FacetQuadrature::subdivision}})
       for (const contact::FrictionLaw& law : every_law()) {
-        const contact::PairMethod method{formulation, integration, 1};
+        const contact::PairMethod method{formulation, integration, quadrature, 1};
         INFO(contact::describe(method) << ", friction " << contact::describe(law));
         contact::BodyContact contact({{"lower/upper", lower, upper, method, law}});
         contact.search(mesh, 0.5);
