@@ -197,4 +197,52 @@ inline Errors run_cubes(const CubesLoad& load, const CubesMeshes& meshes, const 
   return e;
 }
 
+// The curved interface of cases/hertz_cylinder.yaml (a cylinder, R = 10 mm,
+// on a block in a plane-strain slice 0.4 mm thick, half the cylinder
+// modelled; E = 1000 MPa, ν = 0.3 both) against Hertz's line contact
+// (Johnson 1985, §4.3) at the load each run transmits.
+
+struct Hertz {
+  double half_width, peak; ///< b (mm), p0 (MPa)
+  double pressure(double y) const {
+    return y >= half_width ? 0.0 : peak * std::sqrt(1.0 - (y * y) / (half_width * half_width));
+  }
+};
+
+struct HertzErrors {
+  Hertz hertz;
+  std::array<double, 2> peak{};    ///< mean normal stress at the line of first contact / p0: cylinder, block
+  std::array<int, 2> peak_nodes{}; ///< nodes on that line, per body
+  double profile_max = 0.0, profile_rms = 0.0; ///< |p − p_Hertz| / p0 over the interface nodes within 1.5 b
+  double contact_half_width = 0.0;             ///< mm, the farthest node carrying 1e-3 p0
+  double master_depth = 0.0;                   ///< mm, the deepest master node
+};
+
+/// Hertz at the support force `force` (N, on the half model) and the
+/// errors of the interface rows of a run whose master body is `master`.
+inline HertzErrors compare_with_hertz(const std::vector<anvil::io::InterfaceRow>& rows, double force,
+                                      const std::string& master) {
+  const double load = 2.0 * force / 0.4, radius = 10.0, plane_modulus = 1000.0 / (2.0 * (1.0 - 0.3 * 0.3));
+  const double b = std::sqrt(4.0 * load * radius / (M_PI * plane_modulus));
+  HertzErrors e{.hertz = {b, 2.0 * load / (M_PI * b)}};
+  double error_sq = 0.0;
+  int count = 0;
+  for (const anvil::io::InterfaceRow& row : rows) {
+    const double y = row.position.y();
+    const int body = row.body == "cylinder" ? 0 : 1;
+    if (y < 1e-6) e.peak[body] += row.normal_stress, ++e.peak_nodes[body];
+    if (row.normal_stress > 1e-3 * e.hertz.peak) e.contact_half_width = std::max(e.contact_half_width, y);
+    if (row.body == master) e.master_depth = std::max(e.master_depth, -row.gap);
+    if (y > 1.5 * b) continue;
+    const double error = std::abs(row.normal_stress - e.hertz.pressure(y)) / e.hertz.peak;
+    e.profile_max = std::max(e.profile_max, error);
+    error_sq += error * error;
+    ++count;
+  }
+  for (int body = 0; body < 2; ++body)
+    e.peak[body] /= std::max(e.peak_nodes[body], 1) * e.hertz.peak;
+  e.profile_rms = std::sqrt(error_sq / std::max(count, 1));
+  return e;
+}
+
 } // namespace patch_test

@@ -1,7 +1,6 @@
 #include "anvil/contact/BodyContact.h"
 
-#include "anvil/contact/SurfaceSearch.h"
-#include "anvil/contact/facet_quadrature.h"
+#include "anvil/contact/ContactSurface.h"
 #include "anvil/core/error.h"
 #include "anvil/fem/DofMap.h"
 
@@ -64,46 +63,6 @@ std::string to_string(PairFormulation formulation) {
 
 namespace {
 
-/// Barycentric coordinates of the projection of `q` onto the plane of triangle abc.
-Eigen::Vector3d plane_barycentric(const mesh::Point& q, const mesh::Point& a, const mesh::Point& b,
-                                  const mesh::Point& c) {
-  const Eigen::Vector3d e0 = b - a, e1 = c - a, r = q - a;
-  const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = r.dot(e0), d21 = r.dot(e1);
-  const double det = d00 * d11 - d01 * d01;
-  Eigen::Vector3d l;
-  l[1] = (d11 * d20 - d01 * d21) / det;
-  l[2] = (d00 * d21 - d01 * d20) / det;
-  l[0] = 1.0 - l[1] - l[2];
-  return l;
-}
-
-/// Barycentric coordinates of `q` (on or near the plane of triangle abc), clamped to the triangle.
-Eigen::Vector3d barycentric(const mesh::Point& q, const mesh::Point& a, const mesh::Point& b, const mesh::Point& c) {
-  const Eigen::Vector3d l = plane_barycentric(q, a, b, c).cwiseMax(0.0);
-  return l / l.sum();
-}
-
-/// The point of triangle f with barycentric coordinates `shape`.
-mesh::Point point_on(const mesh::TetMesh& mesh, const mesh::Triangle& f, const Eigen::Vector3d& shape) {
-  return shape[0] * mesh.nodes[f[0]] + shape[1] * mesh.nodes[f[1]] + shape[2] * mesh.nodes[f[2]];
-}
-
-/// Whether boundary face f lies on a symmetry plane of its body (BodyContact's constructor).
-bool on_symmetry_plane(const std::vector<char>& symmetry_faces, int f) {
-  return !symmetry_faces.empty() && symmetry_faces[f];
-}
-
-/// Outward unit normal of a body's contact surface at a boundary node: the
-/// area-weighted mean of its boundary faces off the symmetry planes; zero
-/// when it has none.
-Eigen::Vector3d own_normal(const mesh::TetMesh& mesh, const std::vector<int>& faces,
-                           const std::vector<char>& symmetry_faces) {
-  Eigen::Vector3d n = Eigen::Vector3d::Zero();
-  for (int f : faces)
-    if (!on_symmetry_plane(symmetry_faces, f)) n += mesh::area_vector(mesh, mesh.boundary_faces[f]);
-  return n.isZero() ? n : n.normalized();
-}
-
 /// Σ_j w_j value[node_j] over the nodes of positive weight.
 double interpolate(const std::vector<double>& nodal_value, const std::array<int, 3>& nodes, const Eigen::Vector3d& w) {
   double value = 0.0;
@@ -133,116 +92,6 @@ RelativeStencil stencil(const ContactPoint& p, double sense) {
   return s;
 }
 
-/// Where a point projects onto the other body of its pair.
-struct Projection {
-  int facet;              ///< index into mesh.boundary_faces
-  Eigen::Vector3d shape;  ///< N_j(ξ)
-  Eigen::Vector3d normal; ///< the facet body's outward normal, towards the point
-  double gap;             ///< δ₀ (mm)
-};
-
-/// `p` for the point x, its gap snapped to zero within round-off; nothing
-/// when it lies `search_distance` or more from the surface.
-std::optional<Projection> within_reach(Projection p, const mesh::Point& x, double search_distance) {
-  // Touching to round-off is touching: a quadrature point interpolated
-  // between nodes on the other body's plane lies off it by 1e-16, and a
-  // static case has no speed to set an active-set tolerance from.
-  if (std::abs(p.gap) <= 1e-12 * (1.0 + x.norm())) p.gap = 0.0;
-  // Deeper than the reach is not a penetration of this increment: the
-  // point lies behind the other body's edge (a block's top corner over
-  // the side of the block below), where the side test is ambiguous.
-  if (std::abs(p.gap) >= search_distance) return std::nullopt;
-  return p;
-}
-
-/// The boundary facets of `r` off its symmetry planes (indices into mesh.boundary_faces).
-std::vector<int> surface_facets(const mesh::MeshRange& r, const std::vector<char>& symmetry_faces) {
-  std::vector<int> list;
-  for (int f = r.first_face; f < r.first_face + r.face_count; ++f)
-    if (!on_symmetry_plane(symmetry_faces, f)) list.push_back(f);
-  return list;
-}
-
-std::vector<mesh::Triangle> triangles(const mesh::TetMesh& mesh, const std::vector<int>& faces) {
-  std::vector<mesh::Triangle> list;
-  for (int f : faces)
-    list.push_back(mesh.boundary_faces[f]);
-  return list;
-}
-
-/// One side of a pair seen from the other: its contact surface (the body's
-/// boundary facets but those on its symmetry planes), their search tree,
-/// and the facets around each node.
-struct Side {
-  const mesh::TetMesh& mesh;
-  const mesh::MeshRange& range;
-  const std::vector<std::vector<int>>& node_faces;
-  const std::vector<char>& symmetry_faces;
-  std::vector<int> ids; ///< the surface's facets, indices into mesh.boundary_faces
-  SurfaceSearch surface;
-
-  Side(const mesh::TetMesh& m, const mesh::MeshRange& r, const std::vector<std::vector<int>>& nf,
-       const std::vector<char>& symmetry)
-      : mesh(m), range(r), node_faces(nf), symmetry_faces(symmetry), ids(surface_facets(r, symmetry)),
-        surface(m.nodes, triangles(m, ids)) {}
-
-  bool holds_face(int f) const {
-    return f >= range.first_face && f < range.first_face + range.face_count && !on_symmetry_plane(symmetry_faces, f);
-  }
-
-  /// Projects x, a point of the other body whose outward normal there is
-  /// `own`; nothing when it is `search_distance` or more from this side.
-  std::optional<Projection> project(const mesh::Point& x, const Eigen::Vector3d& own, double search_distance) const {
-    const SurfaceSearch::Closest hit = surface.closest(x);
-    // On an edge or a vertex several facets hold the closest point (to a
-    // hair: two blocks sharing a symmetry plane meet there to round-off);
-    // the one that faces the point's own surface best gives the normal and
-    // the side (a point on the rim of a block lying on another must not
-    // take the side face of the block below).
-    const double hair = std::max(1e-9 * (1.0 + hit.point.norm()), 1e-3 * search_distance);
-    int best = ids[hit.face];
-    double best_facing = mesh::area_vector(mesh, mesh.boundary_faces[best]).normalized().dot(own);
-    for (int vertex : mesh.boundary_faces[best])
-      for (int f : node_faces[vertex]) {
-        if (!holds_face(f)) continue;
-        const mesh::Triangle& t = mesh.boundary_faces[f];
-        const double facing = mesh::area_vector(mesh, t).normalized().dot(own);
-        const Eigen::Vector3d l = barycentric(hit.point, mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]);
-        if (facing < best_facing && (point_on(mesh, t, l) - hit.point).norm() <= hair) best = f, best_facing = facing;
-      }
-    const mesh::Triangle& facet = mesh.boundary_faces[best];
-    const Eigen::Vector3d facet_normal = mesh::area_vector(mesh, facet).normalized();
-    // Inside a facet (or off its edge by a hair: bodies pressed together
-    // widen alike, to round-off) the offset is along its normal; off an
-    // edge or a vertex the offset direction is the surface normal there.
-    // The side comes from the facet.
-    const Eigen::Vector3d shape = barycentric(x, mesh.nodes[facet[0]], mesh.nodes[facet[1]], mesh.nodes[facet[2]]);
-    const Eigen::Vector3d offset = x - point_on(mesh, facet, shape);
-    const double along_normal = offset.dot(facet_normal);
-    const double lateral = (offset - along_normal * facet_normal).norm();
-    const bool over_facet = lateral <= hair;
-    const double side = along_normal >= 0.0 ? 1.0 : -1.0;
-    return within_reach({best, shape, over_facet ? facet_normal : Eigen::Vector3d(side * offset / offset.norm()),
-                         over_facet ? along_normal : side * offset.norm()},
-                        x, search_distance);
-  }
-
-  /// Projects x along the normal of this side's facet f, which x lies over.
-  std::optional<Projection> project_onto(const mesh::Point& x, int f, double search_distance) const {
-    const mesh::Triangle& facet = mesh.boundary_faces[f];
-    const Eigen::Vector3d normal = mesh::area_vector(mesh, facet).normalized();
-    const Eigen::Vector3d shape = barycentric(x, mesh.nodes[facet[0]], mesh.nodes[facet[1]], mesh.nodes[facet[2]]);
-    return within_reach({f, shape, normal, (x - point_on(mesh, facet, shape)).dot(normal)}, x, search_distance);
-  }
-};
-
-/// A face looks at the other body when its outward normal opposes the
-/// other body's normal by more than about 70° (not the sides of a block,
-/// whose edge nodes would otherwise weigh double).
-bool looks_at(const Eigen::Vector3d& face_area_vector, const Eigen::Vector3d& other_normal) {
-  return face_area_vector.dot(other_normal) < -0.3 * face_area_vector.norm();
-}
-
 } // namespace
 
 Eigen::Vector3d relative_velocity(const ContactPoint& p, const Eigen::VectorXd& nodal) {
@@ -257,21 +106,18 @@ Eigen::Vector3d relative_velocity(const ContactPoint& p, const Eigen::VectorXd& 
 void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
   nodes_.clear();
   points_.clear();
-  std::vector<std::vector<int>> node_faces(mesh.nodes.size());
-  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
-    for (int node : mesh.boundary_faces[f])
-      node_faces[node].push_back(static_cast<int>(f));
-
+  const ContactBoundary boundary(mesh, symmetry_faces_);
+  std::vector<FacetPoint> facet_points;
   for (std::size_t q = 0; q < pairs_.size(); ++q) {
     const BodyPair& pair = pairs_[q];
     const bool one_sided = pair.method.formulation == PairFormulation::master_slave;
     const double share = one_sided ? 1.0 : 0.5; // f_p: eqs. 10, 19 against the ½ of eqs. 12, 14, 20, 21
     // The surfaces projected onto: the master's, and the slave's unless master/slave.
-    const Side master(mesh, pair.master, node_faces, symmetry_faces_);
-    const std::optional<Side> slave =
-        one_sided ? std::nullopt : std::optional<Side>(std::in_place, mesh, pair.slave, node_faces, symmetry_faces_);
+    const ContactSurface master(boundary, pair.master);
+    const std::optional<ContactSurface> slave =
+        one_sided ? std::nullopt : std::optional<ContactSurface>(std::in_place, boundary, pair.slave);
     // A point of `from` (own nodes and shape functions, area A_p) projected as `hit`.
-    auto point = [&](const std::array<int, 3>& own, const Eigen::Vector3d& own_shape, const Projection& hit,
+    auto point = [&](const std::array<int, 3>& own, const Eigen::Vector3d& own_shape, const SurfaceProjection& hit,
                      double area, double gap_weight, bool on_slave) {
       return ContactPoint{.pair = static_cast<int>(q),
                           .own = own,
@@ -285,19 +131,29 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
                           .gap_weight = gap_weight,
                           .on_slave = on_slave};
     };
-    auto project_nodes = [&](const mesh::MeshRange& from, const Side& onto, bool on_slave) {
+    auto project_nodes = [&](const mesh::MeshRange& from, const ContactSurface& onto, bool on_slave) {
       for (int node = from.first_node; node < from.first_node + from.node_count; ++node) {
-        const Eigen::Vector3d own = own_normal(mesh, node_faces[node], symmetry_faces_);
+        const Eigen::Vector3d own = boundary.own_normal(node);
         if (own.isZero()) continue; // an interior node, or one on symmetry planes only
-        const std::optional<Projection> hit = onto.project(mesh.nodes[node], own, search_distance);
+        const std::optional<SurfaceProjection> hit = onto.project(mesh.nodes[node], own, search_distance);
         if (!hit) continue;
-        double area = 0.0; // tributary area on the faces that look at the other body
-        for (int f : node_faces[node])
-          if (const Eigen::Vector3d n = mesh::area_vector(mesh, mesh.boundary_faces[f]);
-              !on_symmetry_plane(symmetry_faces_, f) && looks_at(n, hit->normal))
-            area += n.norm() / 3.0;
+        const double area = boundary.tributary_area(node, hit->normal);
         if (area == 0.0) continue; // no face looks at the other body: not on its contact surface
         nodes_.push_back(point({node, -1, -1}, Eigen::Vector3d::UnitX(), *hit, area, share, on_slave));
+      }
+    };
+    // The quadrature points of the facets of `from`, grouped by the facet
+    // of the other body they fall on, so that add() sums their friction
+    // blocks once per pair of facets.
+    auto project_facets = [&](const mesh::MeshRange& from, const ContactSurface& onto, bool on_slave) {
+      for (int f = from.first_face; f < from.first_face + from.face_count; ++f) {
+        if (boundary.on_symmetry_plane(f)) continue;
+        const double facet_area = mesh::area_vector(mesh, mesh.boundary_faces[f]).norm();
+        onto.facet_points(f, pair.method, search_distance, facet_points);
+        for (const FacetPoint& g : facet_points) {
+          const double area = g.area_fraction * facet_area;
+          points_.push_back(point(mesh.boundary_faces[f], g.barycentric, g.hit, area, share * area, on_slave));
+        }
       }
     };
     const std::size_t first_node = nodes_.size();
@@ -307,75 +163,6 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
       points_.insert(points_.end(), nodes_.begin() + static_cast<std::ptrdiff_t>(first_node), nodes_.end());
       continue;
     }
-    std::vector<int> near; // facets of the other side near a facet
-    // The parts of facet t over the other side's facets it overlaps.
-    auto integrate_overlaps = [&](const mesh::Triangle& t, const Eigen::Vector3d& area_vector, const Side& onto,
-                                  bool on_slave) {
-      const std::array<Eigen::Vector3d, 3> own{mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]]};
-      const Eigen::Vector3d reach = Eigen::Vector3d::Constant(search_distance);
-      onto.surface.overlapping(
-          {own[0].cwiseMin(own[1]).cwiseMin(own[2]) - reach, own[0].cwiseMax(own[1]).cwiseMax(own[2]) + reach}, near);
-      for (int index : near) {
-        const mesh::Triangle& other = mesh.boundary_faces[onto.ids[index]];
-        if (!looks_at(area_vector, mesh::area_vector(mesh, other).normalized())) continue;
-        const FacetOverlap o = overlap(own, {mesh.nodes[other[0]], mesh.nodes[other[1]], mesh.nodes[other[2]]});
-        for (int i = 0; i < o.count; ++i)
-          for (const FacetQuadraturePoint& g : degree_two_rule(o.parts[i], o.area_fraction[i])) {
-            const std::optional<Projection> hit =
-                onto.project_onto(point_on(mesh, t, g.barycentric), onto.ids[index], search_distance);
-            if (!hit) continue;
-            const double area = g.weight * area_vector.norm();
-            points_.push_back(point(t, g.barycentric, *hit, area, share * area, on_slave));
-          }
-      }
-    };
-    auto project_facets = [&](const mesh::MeshRange& from, const Side& onto, bool on_slave) {
-      for (int f = from.first_face; f < from.first_face + from.face_count; ++f) {
-        if (on_symmetry_plane(symmetry_faces_, f)) continue;
-        const mesh::Triangle& t = mesh.boundary_faces[f];
-        const Eigen::Vector3d area_vector = mesh::area_vector(mesh, t);
-        if (pair.method.quadrature == FacetQuadrature::intersection) {
-          integrate_overlaps(t, area_vector, onto, on_slave);
-          continue;
-        }
-        const Eigen::Vector3d own = area_vector.normalized();
-        double longest = 0.0;
-        for (int k = 0; k < 3; ++k)
-          longest = std::max(longest, (mesh.nodes[t[k]] - mesh.nodes[t[(k + 1) % 3]]).norm());
-        // Sub-triangle `c`, a fraction `area_fraction` of the facet with its
-        // longest edge `size`, at subdivision `level` (facet_quadrature.h).
-        auto integrate = [&](auto& self, const SubTriangle& c, int level, double area_fraction, double size) -> void {
-          // A sub-triangle whose centroid is beyond the reach by more than
-          // its longest edge has no point within reach.
-          const std::optional<Projection> centre =
-              onto.project(point_on(mesh, t, (c[0] + c[1] + c[2]) / 3.0), own, search_distance + size);
-          if (!centre) return;
-          const mesh::Triangle& other = mesh.boundary_faces[centre->facet];
-          bool one_facet = true; // every corner projects into the centroid's facet
-          for (const Eigen::Vector3d& corner : c)
-            one_facet = one_facet && plane_barycentric(point_on(mesh, t, corner), mesh.nodes[other[0]],
-                                                       mesh.nodes[other[1]], mesh.nodes[other[2]])
-                                             .minCoeff() >= -1e-9;
-          if (!one_facet && level < pair.method.facet_subdivision) {
-            for (const SubTriangle& child : split(c))
-              self(self, child, level + 1, area_fraction / 4.0, size / 2.0);
-            return;
-          }
-          for (const FacetQuadraturePoint& g : degree_two_rule(c, area_fraction)) {
-            const std::optional<Projection> hit = onto.project(point_on(mesh, t, g.barycentric), own, search_distance);
-            if (!hit || !looks_at(area_vector, hit->normal)) continue;
-            const double area = g.weight * area_vector.norm();
-            points_.push_back(point(t, g.barycentric, *hit, area, share * area, on_slave));
-          }
-        };
-        const std::size_t first = points_.size();
-        integrate(integrate, whole_facet(), 0, 1.0, longest);
-        // By the facet each point falls on, so that add() sums the friction
-        // blocks of a facet over one facet of the other body once.
-        std::stable_sort(points_.begin() + static_cast<std::ptrdiff_t>(first), points_.end(),
-                         [](const ContactPoint& a, const ContactPoint& b) { return a.facet < b.facet; });
-      }
-    };
     project_facets(pair.slave, master, true);
     if (slave) project_facets(pair.master, *slave, false);
   }

@@ -79,6 +79,10 @@ void cubes_table(const std::string& out) {
   struct Worst {
     double pressure = 0, szz = 0, depth = 0, swap = 0;
     int extra_newton = -99;
+    void include(const Worst& o) {
+      pressure = std::max(pressure, o.pressure), szz = std::max(szz, o.szz), depth = std::max(depth, o.depth);
+      swap = std::max(swap, o.swap), extra_newton = std::max(extra_newton, o.extra_newton);
+    }
   };
   // The matching pair first: the others' Newton counts are compared with it.
   std::vector<CubesMeshes> pairs = patch_test::cubes_meshes();
@@ -137,12 +141,7 @@ void cubes_table(const std::string& out) {
   for (const auto& [load, worst] : worst_of_load)
     for (const auto& [method, w] : worst) {
       print(load, method, w);
-      Worst& o = overall[method];
-      o.pressure = std::max(o.pressure, w.pressure);
-      o.szz = std::max(o.szz, w.szz);
-      o.depth = std::max(o.depth, w.depth);
-      o.extra_newton = std::max(o.extra_newton, w.extra_newton);
-      o.swap = std::max(o.swap, w.swap);
+      overall[method].include(w);
     }
   for (const auto& [method, w] : overall)
     print("all", method, w);
@@ -178,23 +177,7 @@ void quadrature_table(const std::string& out) {
         }
 }
 
-/// Hertz's line contact (Johnson 1985, §4.3) for the load per unit length
-/// P of the whole cylinder, radius R, plane strain modulus E*.
-struct Hertz {
-  double half_width, peak;
-  double pressure(double y) const {
-    return y >= half_width ? 0.0 : peak * std::sqrt(1.0 - (y * y) / (half_width * half_width));
-  }
-};
-Hertz hertz(double load_per_length, double radius, double plane_modulus) {
-  const double b = std::sqrt(4.0 * load_per_length * radius / (M_PI * plane_modulus));
-  return {b, 2.0 * load_per_length / (M_PI * b)};
-}
-
 void curved_table(const std::string& out) {
-  // cases/hertz_cylinder.yaml: R = 10 mm, a slice 0.4 mm thick, half the
-  // cylinder modelled (y >= 0); E = 1000 MPa, nu = 0.3 for both bodies.
-  const double radius = 10.0, thickness = 0.4, plane_modulus = 1000.0 / (2.0 * (1.0 - 0.3 * 0.3));
   std::ofstream csv(out + "/hertz_cylinder.csv");
   csv << "cylinder_size,block_size,master,formulation,integration,support_force_N,hertz_half_width_mm,hertz_peak_MPa,"
          "peak_cylinder,peak_block,profile_max,profile_rms,contact_half_width_mm,master_depth_um,newton_iterations,"
@@ -219,28 +202,14 @@ void curved_table(const std::string& out) {
                                                           "contact_pairs[0].integration=" + std::string(integration)});
           std::filesystem::remove_all(dir);
           anvil::scene::run(c, {dir});
+          const std::vector<anvil::io::InterfaceRow> rows = anvil::io::read_interface(dir);
           const double force = std::abs(anvil::io::read_loads(dir, "support").back().force.x());
-          const Hertz h = hertz(2.0 * force / thickness, radius, plane_modulus);
-          double peak_sum[2] = {0, 0}, error_max = 0, error_sq = 0, width = 0, depth = 0;
-          int peak_count[2] = {0, 0}, count = 0;
-          for (const anvil::io::InterfaceRow& row : anvil::io::read_interface(dir)) {
-            const double y = row.position.y(), exact = h.pressure(y);
-            const int body = row.body == "cylinder" ? 0 : 1;
+          const patch_test::HertzErrors e = patch_test::compare_with_hertz(rows, force, master);
+          const patch_test::Hertz& h = e.hertz;
+          for (const anvil::io::InterfaceRow& row : rows)
             profile << c.bodies[0].mesh.element_size << "," << block_size << "," << master << "," << formulation << ","
-                    << integration << "," << row.body << "," << y << "," << row.position.z() << "," << row.normal_stress
-                    << "," << exact << "\n";
-            if (y < 1e-6) peak_sum[body] += row.normal_stress, ++peak_count[body];
-            if (row.normal_stress > 1e-3 * h.peak) width = std::max(width, y);
-            if (row.body == master) depth = std::max(depth, -row.gap);
-            if (y > 1.5 * h.half_width) continue;
-            const double error = std::abs(row.normal_stress - exact) / h.peak;
-            error_max = std::max(error_max, error);
-            error_sq += error * error;
-            ++count;
-          }
-          const double peak[2] = {peak_sum[0] / std::max(peak_count[0], 1) / h.peak,
-                                  peak_sum[1] / std::max(peak_count[1], 1) / h.peak};
-          const double rms = std::sqrt(error_sq / std::max(count, 1));
+                    << integration << "," << row.body << "," << row.position.y() << "," << row.position.z() << ","
+                    << row.normal_stress << "," << h.pressure(row.position.y()) << "\n";
           const double contact_time =
               anvil::io::read_summary_number(dir, "search") + anvil::io::read_summary_number(dir, "contact");
           const int newton = static_cast<int>(anvil::io::read_summary_number(dir, "newton_iterations"));
@@ -248,12 +217,13 @@ void curved_table(const std::string& out) {
               "| %.2g/%.2g mm | %s | %s | %s | %.4g N | %.3f mm, %.2f MPa | %.3f, %.3f | %.1f %%, %.1f %% | %.2f | "
               "%.2g µm | %d | %.2f s |\n",
               c.bodies[0].mesh.element_size, block_size, master, formulation, integration, force, h.half_width, h.peak,
-              peak[0], peak[1], 100 * error_max, 100 * rms, width / h.half_width, 1e3 * depth, newton, contact_time);
+              e.peak[0], e.peak[1], 100 * e.profile_max, 100 * e.profile_rms, e.contact_half_width / h.half_width,
+              1e3 * e.master_depth, newton, contact_time);
           std::fflush(stdout);
           csv << c.bodies[0].mesh.element_size << "," << block_size << "," << master << "," << formulation << ","
-              << integration << "," << force << "," << h.half_width << "," << h.peak << "," << peak[0] << "," << peak[1]
-              << "," << error_max << "," << rms << "," << width << "," << 1e3 * depth << "," << newton << ","
-              << contact_time << "\n";
+              << integration << "," << force << "," << h.half_width << "," << h.peak << "," << e.peak[0] << ","
+              << e.peak[1] << "," << e.profile_max << "," << e.profile_rms << "," << e.contact_half_width << ","
+              << 1e3 * e.master_depth << "," << newton << "," << contact_time << "\n";
         }
 }
 

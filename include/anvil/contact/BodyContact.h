@@ -1,7 +1,7 @@
 // Contact between deformable bodies (Fourment 2008, DESIGN §3). One search
-// and projection for every formulation: points of one body of a pair are
-// projected onto the other body's boundary facets. A projected point p gives
-// the gap velocity of the increment, linear in v:
+// and projection for every formulation (contact/ContactSurface.h): points of
+// one body of a pair are projected onto the other body's contact surface. A
+// projected point p gives the gap velocity of the increment, linear in v:
 //   h_p = −(Σ_i M_i v_i − Σ_j N_j(ξ) v_j)·n − δ₀/Δt   (paper eq. 4, in velocity)
 // with M_i the point's own shape functions (1 at a node), N_j(ξ) those of the
 // facet it projects onto, n that facet body's outward normal, δ₀ the signed
