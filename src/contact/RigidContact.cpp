@@ -83,22 +83,35 @@ void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     const double h = gap_velocity(c, nodal);
     const Eigen::Vector3d& n = c.normal;
     const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - n * n.transpose();
-    const Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * c.node) - dies_[c.die].velocity;
     // Normal: potential ½ ρ A h⁺², so r = −A ρ h n and ∂r/∂v = A ρ n nᵀ (∂h/∂v = −n).
     const double sigma_n = rho * h; // may be tensile while the set is frozen; checked at convergence
     Eigen::Vector3d r = -c.area * sigma_n * n;
     Eigen::Matrix3d k = c.area * rho * n * n.transpose();
-    const FrictionLaw& law = dies_[c.die].friction;
-    if (law.kind != FrictionKind::frictionless) {
-      const FrictionStress f =
-          friction_stress(law, {tangent_projector * relative, sigma_n, increment_.flow_stress[c.node],
-                                increment_.consistency[c.node], increment_.regularisation, rho});
+    if (dies_[c.die].friction.kind != FrictionKind::frictionless) {
+      const FrictionStress f = friction(c, nodal, sigma_n);
       r += c.area * f.stress;
       k += c.area * (f.d_sliding * tangent_projector - rho * f.d_normal_pressure * n.transpose());
     }
     residual.segment<3>(kDofsPerNode * c.node) += r;
     if (blocks) blocks->push_back({c.node, c.node, k});
   }
+}
+
+Eigen::Vector3d RigidContact::sliding(const ContactCandidate& c, const Eigen::VectorXd& nodal) const {
+  const Eigen::Vector3d relative = nodal.segment<3>(kDofsPerNode * c.node) - dies_[c.die].velocity;
+  return (Eigen::Matrix3d::Identity() - c.normal * c.normal.transpose()) * relative;
+}
+
+FrictionStress RigidContact::friction(const ContactCandidate& c, const Eigen::VectorXd& nodal, double sigma_n) const {
+  return friction_stress(dies_[c.die].friction,
+                         {sliding(c, nodal), sigma_n, increment_.flow_stress[c.node], increment_.consistency[c.node],
+                          increment_.regularisation, increment_.penalty});
+}
+
+double RigidContact::friction_power(int i, const Eigen::VectorXd& nodal) const {
+  const ContactCandidate& c = candidates_[i];
+  if (!active_[i] || dies_[c.die].friction.kind == FrictionKind::frictionless) return 0.0;
+  return c.area * friction(c, nodal, increment_.penalty * gap_velocity(c, nodal)).stress.dot(sliding(c, nodal));
 }
 
 std::vector<Eigen::Vector3d> RigidContact::die_forces(const Eigen::VectorXd& nodal) const {

@@ -136,6 +136,7 @@ void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation
   cell_fields.push_back(von_mises);
   std::vector<Field> point_fields{velocity, pressure};
   if (scene.has_contact()) point_fields.insert(point_fields.end(), {contact_status, contact_pressure, gap});
+  if (!state.temperature.empty()) point_fields.push_back({"temperature", 1, state.temperature});
   std::string names = scene.bodies.front().name;
   for (std::size_t b = 1; b < scene.bodies.size(); ++b)
     names += "+" + scene.bodies[b].name;
@@ -198,13 +199,20 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
       .member("anvil_version", ANVIL_VERSION)
       .key("bodies")
       .begin_array();
-  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const mesh::MeshRange& range = state.bodies[b];
     json.begin_object()
         .member("name", scene.bodies[b].name)
-        .member("nodes", state.bodies[b].node_count)
-        .member("elements", state.bodies[b].tet_count)
-        .member("volume_mm3", mesh::volume(state.mesh, state.bodies[b]))
-        .end_object();
+        .member("nodes", range.node_count)
+        .member("elements", range.tet_count)
+        .member("volume_mm3", mesh::volume(state.mesh, range));
+    if (!state.temperature.empty()) {
+      const auto first = state.temperature.begin() + range.first_node;
+      const auto [low, high] = std::minmax_element(first, first + range.node_count);
+      json.member("temperature_min_C", *low).member("temperature_max_C", *high);
+    }
+    json.end_object();
+  }
   json.end_array();
   std::vector<int> newton, krylov;
   for (const auto& i : state.iterations)
@@ -239,6 +247,27 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
       .member("inside_dies_end", inside_dies)
       .member("material_relative_change", initial > 0 ? (volume_end - inside_dies) / initial - 1.0 : 0.0)
       .end_object();
+  if (!state.temperature.empty()) {
+    // The bodies' heat balance (mJ); the imbalance relative to the largest line.
+    const scene::HeatBudget& h = state.heat;
+    const double largest = std::max({std::abs(h.plastic), std::abs(h.friction), std::abs(h.to_dies),
+                                     std::abs(h.to_environment), std::abs(h.stored)});
+    const auto [low, high] = std::minmax_element(state.temperature.begin(), state.temperature.end());
+    json.key("heat_mJ")
+        .begin_object()
+        .member("plastic_work_heat", h.plastic)
+        .member("friction_heat", h.friction)
+        .member("to_dies", h.to_dies)
+        .member("to_environment", h.to_environment)
+        .member("stored_change", h.stored)
+        .member("imbalance", h.imbalance())
+        .member("relative_imbalance", largest > 0.0 ? h.imbalance() / largest : 0.0)
+        .member("stored_change_by_remeshing", h.remeshing)
+        .member("transfer_time_s", state.transfer_time)
+        .member("temperature_min_C", *low)
+        .member("temperature_max_C", *high)
+        .end_object();
+  }
   if (scene.input.remeshing.enabled) {
     double seconds = 0.0;
     for (const scene::RemeshRecord& r : state.remeshes)

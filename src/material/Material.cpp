@@ -31,8 +31,9 @@ double norton_hoff_viscosity(double consistency, double sensitivity, double regu
 
 } // namespace
 
-NortonHoff::NortonHoff(double consistency, double sensitivity, double regularisation_rate)
-    : consistency_(consistency), sensitivity_(sensitivity), regularisation_rate_(regularisation_rate) {
+NortonHoff::NortonHoff(double consistency, double sensitivity, double regularisation_rate, Softening softening)
+    : consistency_(consistency), sensitivity_(sensitivity), regularisation_rate_(regularisation_rate),
+      softening_(softening) {
   if (!(consistency > 0.0)) throw InputError("Norton-Hoff: K must be > 0 MPa.s^m");
   if (!(sensitivity > 0.0 && sensitivity <= 1.0)) throw InputError("Norton-Hoff: m must be in (0, 1]");
   if (!(regularisation_rate >= 0.0)) throw InputError("Norton-Hoff: regularisation rate must be >= 0 1/s");
@@ -44,8 +45,21 @@ double NortonHoff::viscosity(double equivalent_rate) const {
   return norton_hoff_viscosity(consistency_, sensitivity_, regularisation_rate_, equivalent_rate);
 }
 
-void NortonHoff::deviatoric_stress(const Vec6& strain_rate, const PointState&, Vec6& stress, J2Tangent& tangent) const {
-  norton_hoff_stress(consistency_, sensitivity_, regularisation_rate_, strain_rate, stress, tangent);
+double NortonHoff::consistency(const PointState& state) const {
+  if (softening_.activation_temperature == 0.0) return consistency_;
+  constexpr double kelvin = 273.15;
+  return consistency_ *
+         std::exp(softening_.activation_temperature *
+                  (1.0 / (state.temperature + kelvin) - 1.0 / (softening_.reference_temperature + kelvin)));
+}
+
+double NortonHoff::secant_viscosity(double equivalent_rate, const PointState& state) const {
+  return norton_hoff_viscosity(consistency(state), sensitivity_, regularisation_rate_, equivalent_rate);
+}
+
+void NortonHoff::deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
+                                   J2Tangent& tangent) const {
+  norton_hoff_stress(consistency(state), sensitivity_, regularisation_rate_, strain_rate, stress, tangent);
 }
 
 std::string NortonHoff::describe() const {
@@ -55,7 +69,13 @@ std::string NortonHoff::describe() const {
   else
     std::snprintf(text, sizeof text, "Norton-Hoff, K %g MPa.s^m, m %g, regularisation rate %g 1/s", consistency_,
                   sensitivity_, regularisation_rate_);
-  return text;
+  std::string line = text;
+  if (softening_.activation_temperature != 0.0) {
+    std::snprintf(text, sizeof text, "; K at %g C, times exp(%g K (1/T - 1/T_ref))", softening_.reference_temperature,
+                  softening_.activation_temperature);
+    line += text;
+  }
+  return line;
 }
 
 LinearElastic::LinearElastic(double young_modulus, double poisson_ratio)

@@ -9,6 +9,7 @@
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/remesh_body.h"
 #include "anvil/remesh/size_field.h"
+#include "anvil/thermal/HeatStep.h"
 
 #include <algorithm>
 #include <chrono>
@@ -73,6 +74,13 @@ Remeshed remesh_part(const scene::Scene& scene, const scene::RunState& state, in
   return best;
 }
 
+/// Σ C_i T_i (mJ) of a body `part` of one thermal material at nodal `temperature`.
+double stored_heat(const mesh::TetMesh& part, const thermal::ThermalMaterial& material,
+                   std::span<const double> temperature) {
+  const std::vector<const thermal::ThermalMaterial*> materials(part.tets.size(), &material);
+  return thermal::stored_heat(part, mesh::whole_range(part), materials, temperature);
+}
+
 double relative(double after, double before) {
   return before != 0.0 ? after / before - 1.0 : after - before;
 }
@@ -81,9 +89,10 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
                    std::span<const int> touching_die, std::span<const double> rate, Timers& timers) {
   Timers::Scope scope(timers, "remeshing");
   const bool carries_stress = !state.elastic_stress.empty();
+  const bool thermal = !state.temperature.empty();
   mesh::TetMesh next;
   std::vector<mesh::MeshRange> ranges;
-  std::vector<double> nodal, strain, stress;
+  std::vector<double> nodal, strain, stress, temperature;
   auto append_values = [](std::vector<double>& to, const double* first, std::size_t count) {
     to.insert(to.end(), first, first + count);
   };
@@ -101,9 +110,11 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     const std::vector<double> part_strain(state.equivalent_strain.begin() + range.first_tet,
                                           state.equivalent_strain.begin() + range.first_tet + range.tet_count);
     const auto why = std::find_if(due.begin(), due.end(), [&](const RemeshDue& d) { return d.body == int(b); });
+    const double* part_temperature = thermal ? state.temperature.data() + range.first_node : nullptr;
     if (why == due.end()) {
       ranges.push_back(mesh::append(next, part));
       append_values(nodal, part_nodal, 4 * range.node_count);
+      if (thermal) append_values(temperature, part_temperature, range.node_count);
       append_values(strain, part_strain.data(), part_strain.size());
       if (carries_stress) append_values(stress, &state.elastic_stress[6 * range.first_tet], 6 * range.tet_count);
       continue;
@@ -124,6 +135,20 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     const std::vector<double> fresh_strain = transfer_element(part, part_strain, in_old, best.remeshed);
     ranges.push_back(mesh::append(next, fresh));
     append_values(nodal, fresh_nodal.data(), fresh_nodal.size());
+    if (thermal) {
+      // T interpolated linearly at the new nodes (P1, as it is solved); the
+      // stored heat it changes is logged and kept apart in the heat budget.
+      const Eigen::VectorXd fresh_temperature = interpolate_nodal(
+          part, Eigen::Map<const Eigen::VectorXd>(part_temperature, range.node_count), 1, in_old.locate(fresh.nodes));
+      append_values(temperature, fresh_temperature.data(), fresh_temperature.size());
+      if (const auto& body_thermal = scene.bodies[b].thermal) {
+        const double before = stored_heat(part, *body_thermal, {part_temperature, std::size_t(range.node_count)});
+        const double after = stored_heat(fresh, *body_thermal, {fresh_temperature.data(), fresh.nodes.size()});
+        state.heat.remeshing += after - before;
+        log::info("    temperature interpolated: stored heat %+.4g mJ (%+.3f%% of the heat above 0 C)", after - before,
+                  100.0 * relative(after, before));
+      }
+    }
     append_values(strain, fresh_strain.data(), fresh_strain.size());
     if (carries_stress) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // a flowing body carries none
 
@@ -169,6 +194,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
   state.bodies = std::move(ranges);
   state.equivalent_strain = std::move(strain);
   state.elastic_stress = std::move(stress);
+  if (thermal) state.temperature = std::move(temperature);
   {
     Timers::Scope overlap(timers, "die overlap");
     state.inside_dies = scene::inside_dies(scene, state);

@@ -189,6 +189,72 @@ void read_dies(const CheckedYaml& doc, Case& c) {
   });
 }
 
+/// A table `values_key` against `at_key` of `item` (both lists of numbers,
+/// `at_key` increasing, one value for each), or one value (a constant).
+thermal::PropertyTable read_table(const CheckedYaml& doc, const YAML::Node& item, const std::string& values_key,
+                                  const std::string& at_key, const std::string& shown) {
+  const std::vector<double> values = doc.numbers(item, values_key);
+  const std::vector<double> at = doc.numbers(item, at_key);
+  if (values.size() == 1) return thermal::PropertyTable(values.front());
+  if (at.size() != values.size())
+    doc.fail(item[values_key], (shown.empty() ? "" : shown + ".") + values_key,
+             std::to_string(values.size()) + " values need as many entries in '" + at_key + "' (" +
+                 std::to_string(at.size()) + " given)");
+  for (std::size_t i = 1; i < at.size(); ++i)
+    if (!(at[i] > at[i - 1])) doc.fail(item[at_key], (shown.empty() ? "" : shown + ".") + at_key, "must increase");
+  return thermal::PropertyTable(at, values);
+}
+
+/// The heat exchange keys of the dies and contact pairs: read in a thermal
+/// scene, refused in an isothermal one.
+void read_contact_heat(const CheckedYaml& doc, Case& c) {
+  const std::vector<std::string> die_keys{"temperature", "heat_transfer", "heat_transfer_pressure",
+                                          "friction_heat_to_body"};
+  for_each_entry(doc.root()["dies"], "dies", [&](const YAML::Node& n, const std::string& shown) {
+    DieSpec& d = c.dies[std::stoul(shown.substr(5))];
+    if (!c.thermal.enabled) {
+      for (const std::string& key : die_keys)
+        doc.forbid(n, key, shown, "an isothermal scene (the case has no 'thermal' section)");
+      return;
+    }
+    doc.require(n, "temperature", shown, "a thermal scene holds each die at its temperature (°C)");
+    doc.require(n, "heat_transfer", shown,
+                "a thermal scene needs the die-body heat transfer coefficient (hot forging under pressure: 5-20 "
+                "kW/(m2.K))");
+    d.temperature = doc.number(n, "temperature", "dies[].temperature");
+    d.heat = {read_table(doc, n, "heat_transfer", "heat_transfer_pressure", shown), true};
+    d.friction_heat_to_body = doc.number(n, "friction_heat_to_body", "dies[].friction_heat_to_body");
+  });
+  for_each_entry(doc.root()["contact_pairs"], "contact_pairs", [&](const YAML::Node& n, const std::string& shown) {
+    ContactPairSpec& pair = c.contact_pairs[std::stoul(shown.substr(14))];
+    if (!c.thermal.enabled) {
+      for (const char* key : {"heat_transfer", "heat_transfer_pressure"})
+        doc.forbid(n, key, shown, "an isothermal scene (the case has no 'thermal' section)");
+      return;
+    }
+    pair.heat = n["heat_transfer"]
+                    ? ContactHeatSpec{read_table(doc, n, "heat_transfer", "heat_transfer_pressure", shown), true}
+                    : ContactHeatSpec{thermal::PropertyTable(1000.0), false};
+  });
+}
+
+void read_thermal(const CheckedYaml& doc, Case& c) {
+  const YAML::Node t = doc.root()["thermal"];
+  if (t) {
+    ThermalSpec& s = c.thermal;
+    s.enabled = true;
+    s.source = doc.at(t);
+    s.taylor_quinney = doc.number(t, "taylor_quinney", "thermal.taylor_quinney");
+    const YAML::Node air = t["environment"] ? t["environment"] : YAML::Node(YAML::NodeType::Map);
+    s.environment_temperature = doc.number(air, "temperature", "thermal.environment.temperature");
+    s.convection = doc.number(air, "convection", "thermal.environment.convection");
+    s.transfer_time = doc.number(t, "transfer_time", "thermal.transfer_time");
+    s.transfer_steps = doc.integer(t, "transfer_steps", "thermal.transfer_steps");
+    if (!c.time.enabled) doc.fail(t, "thermal", "heat needs a 'time' section (it is solved over time)");
+  }
+  read_contact_heat(doc, c);
+}
+
 void read_time(const CheckedYaml& doc, Case& c) {
   const YAML::Node t = doc.root()["time"];
   if (!t) return;
@@ -352,6 +418,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.contact.penalty = doc.number(contact, "penalty", "contact.penalty");
   c.contact.regularisation = doc.number(contact, "regularisation", "contact.regularisation");
   read_time(doc, c);
+  read_thermal(doc, c);
   if (const YAML::Node r = root["remeshing"]) {
     if (!c.time.enabled) doc.fail(r, "remeshing", "remeshing needs a 'time' section (it happens between increments)");
     RemeshSpec& m = c.remeshing;
@@ -373,8 +440,22 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
 
 MaterialCard read_material(const std::string& path) {
   const CheckedYaml doc(path, material_schema());
-  MaterialCard card{read_law(doc), std::nullopt};
-  if (doc.root()["temperature"]) card.temperature = doc.number(doc.root(), "temperature", "temperature");
+  MaterialCard card{read_law(doc), std::nullopt, std::nullopt};
+  const YAML::Node& root = doc.root();
+  if (root["temperature"]) card.temperature = doc.number(root, "temperature", "temperature");
+  const std::vector<std::string> thermal_keys{"conductivity", "specific_heat", "density"};
+  if (std::any_of(thermal_keys.begin(), thermal_keys.end(), [&](const std::string& k) { return bool(root[k]); })) {
+    for (const std::string& key : thermal_keys)
+      doc.require(root, key, "", "thermal properties need conductivity, specific_heat and density");
+    thermal::ThermalMaterial& t = card.thermal.emplace();
+    t.conductivity = read_table(doc, root, "conductivity", "thermal_temperatures", "");
+    t.specific_heat = read_table(doc, root, "specific_heat", "thermal_temperatures", "");
+    t.density = doc.number(root, "density", "density");
+    t.emissivity = root["emissivity"] ? doc.number(root, "emissivity", "emissivity") : 0.0;
+  } else {
+    for (const char* key : {"emissivity", "thermal_temperatures"})
+      doc.forbid(root, key, "", "a card without thermal properties (conductivity, specific_heat, density)");
+  }
   return card;
 }
 
@@ -403,9 +484,18 @@ std::unique_ptr<material::Material> read_law(const CheckedYaml& doc) {
                                                      doc.number(root, "regularisation_rate", "regularisation_rate"));
   }
   if (law == "newtonian") return std::make_unique<material::NortonHoff>(needed("viscosity"), 1.0, 0.0);
-  if (law == "norton_hoff")
+  if (law != "norton_hoff") doc.forbid(root, "activation_temperature", "", "law '" + law + "'");
+  if (law == "norton_hoff") {
+    material::NortonHoff::Softening softening;
+    if (root["activation_temperature"]) {
+      doc.require(root, "temperature", "", "K(T) holds K at the card's temperature");
+      softening = {doc.number(root, "activation_temperature", "activation_temperature"),
+                   doc.number(root, "temperature", "temperature")};
+    }
     return std::make_unique<material::NortonHoff>(needed("consistency"), needed("sensitivity"),
-                                                  doc.number(root, "regularisation_rate", "regularisation_rate"));
+                                                  doc.number(root, "regularisation_rate", "regularisation_rate"),
+                                                  softening);
+  }
   return std::make_unique<material::LinearElastic>(needed("young_modulus"), needed("poisson_ratio"));
 }
 

@@ -8,7 +8,9 @@
 // in format 3, before the material kept; r×10 in format 2, before the load check),
 // /dies (d×6), /loads (r×7), /iterations (i×2), /outputs (k×2) with
 // /output_files (strings), /fingerprint (strings: the case, as a resumed run
-// compares it), scalar attributes on the root group.
+// compares it), /temperature (n, thermal scenes; empty otherwise) and /heat
+// (7: the heat budget and the transfer time done; both absent before they
+// were kept), scalar attributes on the root group.
 #include "anvil/core/error.h"
 #include "anvil/io/atomic_file.h"
 #include "anvil/mesh/TetMesh.h"
@@ -17,6 +19,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -214,6 +217,11 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
                    {double(r.increment), r.time, double(r.surface), r.stroke, r.force.x(), r.force.y(), r.force.z()});
     write_array(file, "loads", H5T_NATIVE_DOUBLE, loads.data(), s.loads.size(), 7);
     write_array(file, "iterations", H5T_NATIVE_INT, s.iterations.data(), s.iterations.size(), 2);
+    write_array(file, "temperature", H5T_NATIVE_DOUBLE, s.temperature.data(), s.temperature.size(), 0);
+    const HeatBudget& h = s.heat;
+    const std::array<double, 7> heat{h.plastic, h.friction,  h.to_dies,      h.to_environment,
+                                     h.stored,  h.remeshing, s.transfer_time};
+    write_array(file, "heat", H5T_NATIVE_DOUBLE, heat.data(), heat.size(), 0);
     std::vector<double> outputs;
     std::string files;
     for (const io::VtkSeries::Entry& e : s.outputs) {
@@ -347,7 +355,16 @@ RunState read_checkpoint(const std::string& path) {
     name.clear();
     ++k;
   }
+  if (H5Lexists(file, "heat", H5P_DEFAULT) > 0) { // absent in checkpoints written before heat
+    read_finite_array(file, path, "temperature", s.temperature, 1);
+    std::vector<double> heat;
+    read_finite_array(file, path, "heat", heat, 1);
+    if (heat.size() != 7) throw InputError(path + ": checkpoint dataset 'heat' has a wrong size");
+    s.heat = {heat[0], heat[1], heat[2], heat[3], heat[4], heat[5]};
+    s.transfer_time = heat[6];
+  }
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
+      (!s.temperature.empty() && s.temperature.size() != s.mesh.nodes.size()) ||
       s.equivalent_strain.size() != s.mesh.tets.size() ||
       (!s.elastic_stress.empty() && s.elastic_stress.size() != 6 * s.mesh.tets.size()) ||
       s.mesh.boundary_tags.size() != s.mesh.boundary_faces.size())

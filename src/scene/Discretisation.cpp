@@ -70,13 +70,14 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
     append(imposed, remeshed ? impose(mesh::extract(state.mesh, range), body.conditions) : body.initial_imposed,
            range.first_node);
   }
+  std::vector<char> on_symmetry_plane = symmetry_faces(scene, state);
   std::unique_ptr<contact::BodyContact> pairs;
   if (!scene.input.contact_pairs.empty()) {
     std::vector<contact::BodyPair> list;
     for (const ContactPairSpec& p : scene.input.contact_pairs)
       list.push_back({scene.bodies[p.master].name + "/" + scene.bodies[p.slave].name, state.bodies[p.master],
                       state.bodies[p.slave], p.method, p.friction});
-    pairs = std::make_unique<contact::BodyContact>(std::move(list), symmetry_faces(scene, state));
+    pairs = std::make_unique<contact::BodyContact>(std::move(list), on_symmetry_plane);
   }
   std::vector<material::PointState> states(state.mesh.tets.size());
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
@@ -85,13 +86,20 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
     states[e].equivalent_strain = state.equivalent_strain[e];
   for (std::size_t e = 0; e < state.elastic_stress.size() / 6; ++e)
     states[e].elastic_stress = Eigen::Map<const material::Vec6>(&state.elastic_stress[6 * e]);
+  std::unique_ptr<Heat> heat;
+  if (scene.thermal) {
+    heat = std::make_unique<Heat>(scene, state);
+    element_temperatures(state.mesh, state.temperature, states);
+  }
   for (int k = 0; k < imposed.values.size(); ++k)
     if (imposed.prescribed[k]) state.unknowns.nodal[k] = imposed.values[k];
   auto solver =
       std::make_unique<solver::IncrementSolver>(state.mesh, imposed.prescribed, scene.input.linear_solver, timers);
-  return Discretisation{std::move(laws),         std::move(imposed), std::move(states),
-                        contact::RigidContact{}, std::move(pairs),   mesh::QualityGuard(state.mesh),
-                        std::move(solver)};
+  return Discretisation{std::move(laws),   std::move(imposed),
+                        std::move(states), contact::RigidContact{},
+                        std::move(pairs),  mesh::QualityGuard(state.mesh),
+                        std::move(solver), std::move(on_symmetry_plane),
+                        std::move(heat)};
 }
 
 } // namespace anvil::scene

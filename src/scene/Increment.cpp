@@ -246,6 +246,24 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
   return true;
 }
 
+void advance_heat(const Scene& scene, Discretisation& disc, const IncrementOutcome& inc, RunState& state,
+                  Timers& timers) {
+  Timers::Scope scope(timers, "effect heat");
+  disc.heat->advance(scene, state, disc.heat_contacts(scene), &inc.fields, inc.time_step);
+  element_temperatures(state.mesh, state.temperature, disc.point_states);
+}
+
+void transfer(const Scene& scene, Discretisation& disc, RunState& state, Timers& timers) {
+  const ThermalSpec& spec = scene.input.thermal;
+  const double dt = spec.transfer_time / spec.transfer_steps;
+  Timers::Scope scope(timers, "effect heat");
+  while (state.transfer_time < spec.transfer_time * (1.0 - 1e-12)) {
+    disc.heat->advance(scene, state, {nullptr, nullptr, disc.symmetry_faces}, nullptr, dt);
+    state.transfer_time += dt;
+  }
+  element_temperatures(state.mesh, state.temperature, disc.point_states);
+}
+
 void accept_without_motion(const Scene& scene, const IncrementOutcome& inc, RunState& state) {
   state.increment = 1;
   state.unknowns = inc.unknowns;

@@ -167,6 +167,7 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     body.material_file = spec.material_file;
     body.law = std::move(card.law);
     body.state.temperature = spec.temperature.value_or(card.temperature.value_or(20.0));
+    if (c.thermal.enabled) body.thermal = card.thermal;
     const mesh::TetMesh part = build_mesh(spec.mesh, "bodies[" + std::to_string(b) + "].mesh");
     for (std::size_t i = 0; i < c.boundary.size(); ++i)
       if (c.boundary_body[i] == static_cast<int>(b)) body.conditions.push_back(c.boundary[i]);
@@ -193,6 +194,10 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
   for (Body& body : bodies)
     body.velocity_form = body.law->is_elastic() && !solve_displacement;
   carries_stress = std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.velocity_form; });
+  thermal = std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.thermal.has_value(); });
+  if (c.thermal.enabled && !thermal)
+    throw InputError(c.thermal.source + ": key 'thermal': no body's material card gives thermal properties "
+                                        "(conductivity, specific_heat, density): nothing to solve for heat");
   effects = resolve_effects(c, laws);
   compensate_volume = std::find(effects.begin(), effects.end(), "volume_compensation") != effects.end();
 
@@ -245,6 +250,9 @@ RunState initial_state(const Scene& scene) {
   state.equivalent_strain.assign(state.mesh.tets.size(), 0.0);
   if (scene.carries_stress) state.elastic_stress.assign(6 * state.mesh.tets.size(), 0.0);
   state.dies.assign(scene.dies.size(), DieState{});
+  if (scene.thermal)
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+      state.temperature.insert(state.temperature.end(), state.bodies[b].node_count, scene.bodies[b].state.temperature);
   state.volume.initial = mesh::volume(state.mesh);
   state.inside_dies = inside_dies(scene, state);
   return state;
@@ -262,6 +270,9 @@ void check_resumable(const Scene& scene, const RunState& state, const std::strin
   if (!same_bodies)
     throw InputError(path + ": checkpoint dataset 'body_ranges': the bodies do not match the case's (was the case "
                             "changed?)");
+  if (scene.thermal == state.temperature.empty())
+    throw InputError(path + (scene.thermal ? ": the case is thermal, the checkpoint holds no temperatures"
+                                           : ": the checkpoint holds temperatures, the case has no 'thermal' section"));
   if (scene.carries_stress != !state.elastic_stress.empty())
     throw InputError(path + ": checkpoint dataset 'elastic_stress' does not match the case's bodies (was the case "
                             "changed?)");

@@ -119,21 +119,31 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
   }
 }
 
+/// "  T 812..1143 C (heat 6 %)": the bodies' temperature range and the heat
+/// step's share `heat_share` of the increment's wall time; empty when isothermal.
+std::string temperature_text(const RunState& state, double heat_share) {
+  if (state.temperature.empty()) return "";
+  const auto [low, high] = std::minmax_element(state.temperature.begin(), state.temperature.end());
+  char text[80];
+  std::snprintf(text, sizeof text, "  T %.0f..%.0f C (heat %.0f %%)", *low, *high, 100.0 * heat_share);
+  return text;
+}
+
 /// The progress line of an accepted increment: its columns are explained in the README.
 void log_progress(const Scene& scene, const Discretisation& disc, const RunState& state, const IncrementOutcome& inc,
-                  double time_left) {
+                  double time_left, double heat_share) {
   const LoadRecord& lead = state.loads[state.loads.size() - scene.surfaces.size()];
   const int contacts = (scene.dies.empty() ? 0 : disc.die_contact.active_count()) +
                        (disc.pair_contact ? disc.pair_contact->active_count() : 0);
   const std::string krylov =
       disc.solver->linear_solver().iterative() ? " krylov " + std::to_string(inc.report.linear_iterations) : "";
   log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN  newton %zu%s  contact %d  volume %+.3f%% "
-            "(%.3f%% inside dies)  left ~%s",
+            "(%.3f%% inside dies)%s  left ~%s",
             state.increment, state.time, lead.stroke, inc.time_step, scene.surfaces[lead.surface].name.c_str(),
             lead.press_load() / 1e3, inc.report.iterations.size(), krylov.c_str(), contacts,
             100.0 * (mesh::volume(state.mesh) / state.volume.initial - 1.0),
             100.0 * std::accumulate(state.inside_dies.begin(), state.inside_dies.end(), 0.0) / state.volume.initial,
-            std::isnan(time_left) ? "?" : clock_text(time_left).c_str());
+            temperature_text(state, heat_share).c_str(), std::isnan(time_left) ? "?" : clock_text(time_left).c_str());
 }
 
 void finish(const Scene& scene, const Discretisation& disc, RunState& state, io::RunWriter& writer,
@@ -243,12 +253,18 @@ RunEnd run(const Case& c, const RunOptions& options) {
     return {"one increment solved", true};
   }
 
+  if (scene.thermal && state.transfer_time < c.thermal.transfer_time) {
+    transfer(scene, disc, state, timers);
+    log::info("transfer: %.4g s in air%s before the press moves%s", c.thermal.transfer_time,
+              scene.dies.empty() ? "" : " and on the dies the bodies touch", temperature_text(state, 0.0).c_str());
+  }
   const TimeStepControl clock(scene);
   TimeLeft time_left;
   time_left.update(clock.progress(state), seconds_since(start));
   solver::NewtonReport last;
   Stop stop;
   while (!(stop = clock.stop(state))) {
+    const Clock::time_point increment_start = Clock::now();
     TimeStep step = clock.next_step(state);
     IncrementOutcome inc = solve_increment(scene, disc, state, step, timers);
     // A failed try leaves the state as it was: try again with half the Δt tried.
@@ -267,7 +283,10 @@ RunEnd run(const Case& c, const RunOptions& options) {
       inc = solve_increment(scene, disc, state, step, timers);
     }
     last = inc.report;
-    log_progress(scene, disc, state, inc, time_left.update(clock.progress(state), seconds_since(start)));
+    const double heat_before = timers.seconds("effect heat");
+    if (disc.heat) advance_heat(scene, disc, inc, state, timers);
+    log_progress(scene, disc, state, inc, time_left.update(clock.progress(state), seconds_since(start)),
+                 (timers.seconds("effect heat") - heat_before) / seconds_since(increment_start));
     if (c.remeshing.enabled && !clock.stop(state)) {
       const std::vector<remesh::RemeshDue> due = remesh::remesh_due(scene, state, inc.time_step);
       if (!due.empty()) {

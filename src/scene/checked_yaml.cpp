@@ -264,11 +264,20 @@ void CheckedYaml::check_value(const YAML::Node& value, const KeySpec& k, const s
     for (const auto& c : value)
       if (!c.IsNull() && !parse_number(c)) wrong();
     return;
-  case KeyType::numbers:
-    if (!value.IsSequence() || value.size() == 0) wrong();
-    for (const auto& c : value)
-      if (!parse_number(c)) wrong();
+  case KeyType::numbers: {
+    // One number stands for a list of one.
+    if (!(value.IsScalar() || (value.IsSequence() && value.size() > 0))) wrong();
+    auto check_entry = [&](const YAML::Node& c) {
+      const auto v = parse_number(c);
+      if (!v || *v < k.min || *v > k.max || (k.min_exclusive && *v == k.min)) wrong();
+    };
+    if (value.IsScalar())
+      check_entry(value);
+    else
+      for (const auto& c : value)
+        check_entry(c);
     return;
+  }
   case KeyType::integer:
   case KeyType::number: {
     const auto v = parse_number(value);
@@ -312,7 +321,9 @@ std::array<std::optional<double>, 3> CheckedYaml::partial_vector(const YAML::Nod
 
 std::vector<double> CheckedYaml::numbers(const YAML::Node& map, const std::string& key) const {
   std::vector<double> out;
-  for (const auto& c : map[key])
+  const YAML::Node list = map[key];
+  if (list && list.IsScalar()) return {*parse_number(list)};
+  for (const auto& c : list)
     out.push_back(*parse_number(c));
   return out;
 }

@@ -25,6 +25,14 @@ const std::vector<Effect>& effect_registry() {
       {"hardening", "flow stress depending on ε̄ (Hansel-Spittel)"},
       {"remeshing",
        "quality watch every increment; CGAL remeshing of flowing bodies with field transfer when triggered"},
+      {"heat", "temperature of the bodies with thermal properties: P1 conduction, lumped capacity, backward Euler, "
+               "staggered with the flow each increment"},
+      {"plastic_heating", "β σ:ε̇ of the flowing bodies into the heat equation (Taylor-Quinney)"},
+      {"air_cooling", "convection and radiation of the free surfaces to the environment"},
+      {"die_heat_transfer", "heat exchange with rigid dies held at their temperature (h constant or against pressure)"},
+      {"contact_heat_transfer", "heat exchange between bodies in contact, through the contact pairs"},
+      {"friction_heating", "friction heat on die contact, split between the body and the die"},
+      {"thermal_softening", "flow stress at the local temperature (Hansel-Spittel T terms, Norton-Hoff K(T))"},
   };
   return registry;
 }
@@ -73,6 +81,18 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
   for (const material::Material* law : laws)
     if (law->hardens()) add("hardening");
   if (c.remeshing.enabled) add("remeshing");
+  if (c.thermal.enabled) {
+    add("heat");
+    add("air_cooling");
+    for (const material::Material* law : laws) {
+      if (!law->is_elastic()) add("plastic_heating");
+      if (law->depends_on_temperature()) add("thermal_softening");
+    }
+    if (!c.dies.empty()) add("die_heat_transfer");
+    if (!c.contact_pairs.empty()) add("contact_heat_transfer");
+    for (const DieSpec& d : c.dies)
+      if (d.friction.kind != contact::FrictionKind::frictionless) add("friction_heating");
+  }
   // Registry order, so logs of different scenes compare line by line.
   std::vector<std::string> ordered;
   for (const Effect& e : effect_registry())

@@ -79,6 +79,19 @@ std::vector<KeySpec> friction_keys(const std::string& owner, const std::string& 
           range(key(f + ".exponent", T::number, "norton: q", "-"), 0, 1, true)};
 }
 
+/// The heat transfer keys of a die or a contact pair under `owner`.
+std::vector<KeySpec> heat_transfer_keys(const std::string& owner, const std::string& between) {
+  using T = KeyType;
+  return {range(key(owner + ".heat_transfer", T::numbers,
+                    "thermal scenes: heat transfer coefficient h " + between +
+                        "; one value, or one per heat_transfer_pressure",
+                    "kW/(m2.K) = mW/(mm2.K)"),
+                0, kInf),
+          range(key(owner + ".heat_transfer_pressure", T::numbers,
+                    "contact pressures of the heat_transfer table, increasing (h is held beyond its ends)", "MPa"),
+                0, kInf)};
+}
+
 } // namespace
 
 const std::vector<KeySpec>& case_schema() {
@@ -171,7 +184,9 @@ const std::vector<KeySpec>& case_schema() {
             "velocity, plates: velocity; a component written ~ (null) is left free (velocity type only)", "mm/s"),
         key("boundary[].traction", T::vector3, "traction: surface force density", "MPa"),
         key("boundary[].pressure", T::number, "pressure: positive pushes into the body", "MPa"),
-        range(key("bodies[].temperature", T::number, "isothermal temperature of the body; default the material card's",
+        range(key("bodies[].temperature", T::number,
+                  "temperature of the body: held in an isothermal scene, initial in a thermal one; default the "
+                  "material card's",
                   "°C"),
               -273.15, kInf, true),
         with_default(
@@ -316,6 +331,48 @@ const std::vector<KeySpec>& case_schema() {
                          "from the last)"),
                      "false"),
     };
+    const std::vector<KeySpec> thermal = {
+        key("thermal", T::map,
+            "heat: the temperature is solved in every body whose material card gives thermal properties, "
+            "coupled to the flow each increment (staggered); absent: each body keeps its temperature"),
+        with_default(range(key("thermal.taylor_quinney", T::number,
+                               "β: share of the plastic work that becomes heat (Taylor & Quinney 1934 measured "
+                               "about 0.9 in metals)"),
+                           0, 1),
+                     "0.9"),
+        key("thermal.environment", T::map, "the air around the bodies"),
+        with_default(key("thermal.environment.temperature", T::number, "air temperature", "°C"), "20"),
+        with_default(range(key("thermal.environment.convection", T::number,
+                               "heat transfer coefficient to the air (free convection in gases: 2-25 W/(m2.K), "
+                               "Incropera & DeWitt, Fundamentals of Heat and Mass Transfer, Table 1.1)",
+                               "kW/(m2.K) = mW/(mm2.K)"),
+                           0, kInf),
+                     "0.01"),
+        with_default(range(key("thermal.transfer_time", T::number,
+                               "time before the press moves: the bodies cool in air, and on the dies where they touch "
+                               "them",
+                               "s"),
+                           0, kInf),
+                     "0"),
+        with_default(range(key("thermal.transfer_steps", T::integer, "heat steps over the transfer time"), 1, 10000),
+                     "10"),
+        key("dies[].temperature", T::number, "thermal scenes: the die's temperature, held", "°C"),
+        with_default(range(key("dies[].friction_heat_to_body", T::number,
+                               "thermal scenes: share of the friction heat that enters the body, the rest the die "
+                               "(0.5: the two surfaces' effusivities are within 10 % for a steel billet on a steel "
+                               "die)"),
+                           0, 1),
+                     "0.5"),
+    };
+    keys.insert(keys.end(), thermal.begin(), thermal.end());
+    for (const auto& [owner, between] :
+         {std::pair{"dies[]", "die-body; required (hot forging under pressure: 5-20 kW/(m2.K), much lower before "
+                              "full contact)"},
+          std::pair{"contact_pairs[]", "between the two bodies; default 1000 (perfect contact at forging time "
+                                       "scales)"}}) {
+      const std::vector<KeySpec> heat = heat_transfer_keys(owner, between);
+      keys.insert(keys.end(), heat.begin(), heat.end());
+    }
     for (const auto& [owner, between] :
          {std::pair{"dies[]", "die and body"}, std::pair{"contact_pairs[]", "the two bodies"}}) {
       const std::vector<KeySpec> friction = friction_keys(owner, between);
@@ -354,6 +411,15 @@ const std::vector<KeySpec>& material_schema() {
           range(key("minimum_strain", T::number, "hansel_spittel: ε̄ floor (ε̄^m2 and exp(m4/ε̄) are singular at 0)", "-"),
                 0, 1, true),
           "0.01"),
+      key("activation_temperature", T::number,
+          "norton_hoff: β of K(T) = K exp(β (1/T − 1/T_ref)), T in kelvin, T_ref the card's temperature", "K"),
+      range(key("conductivity", T::numbers, "thermal: k, one value or one per thermal_temperatures", "W/(m.K)"), 0,
+            kInf, true),
+      range(key("specific_heat", T::numbers, "thermal: c, one value or one per thermal_temperatures", "J/(kg.K)"), 0,
+            kInf, true),
+      key("thermal_temperatures", T::numbers, "thermal: temperatures of the k and c tables, increasing", "°C"),
+      range(key("density", T::number, "thermal: ρ", "kg/m3"), 0, kInf, true),
+      range(key("emissivity", T::number, "thermal: ε of the surface (radiation to the air)", "-"), 0, 1),
       range(key("young_modulus", T::number, "linear_elastic: E", "MPa"), 0, kInf, true),
       range(key("poisson_ratio", T::number, "linear_elastic: ν (0.5 allowed: u-p form)", "-"), -1, 0.5, true),
       required(key("sources", T::map, "where each number comes from: one entry per numeric key")),
@@ -362,7 +428,8 @@ const std::vector<KeySpec>& material_schema() {
   static const std::vector<KeySpec> with_sources = [] {
     std::vector<KeySpec> all = schema;
     for (const KeySpec& k : schema)
-      if (k.type == T::number) all.push_back(key("sources." + k.path, T::string, "source (or reason) of " + k.path));
+      if (k.type == T::number || k.type == T::numbers)
+        all.push_back(key("sources." + k.path, T::string, "source (or reason) of " + k.path));
     return all;
   }();
   return with_sources;

@@ -54,6 +54,9 @@ public:
   std::vector<Eigen::Vector3d> die_forces(const Eigen::VectorXd& nodal) const;
   /// Contact pressure σn (MPa) of candidate `i` at `nodal` (0 when released).
   double pressure(int i, const Eigen::VectorXd& nodal) const;
+  /// Friction power τ·w A (mW) at candidate `i` at `nodal`, the heat its
+  /// sliding makes; 0 when released or frictionless.
+  double friction_power(int i, const Eigen::VectorXd& nodal) const;
   /// Earliest time (s) at which a candidate that is not touching (gap above
   /// `touching`, mm) reaches its die when moving with `nodal`; infinity if none.
   double first_contact_time(const Eigen::VectorXd& nodal, double touching) const;
@@ -63,6 +66,10 @@ public:
 
 private:
   double gap_velocity(const ContactCandidate& c, const Eigen::VectorXd& nodal) const;
+  /// w: the tangential velocity of the node relative to its die.
+  Eigen::Vector3d sliding(const ContactCandidate& c, const Eigen::VectorXd& nodal) const;
+  /// τ of the die's friction law at the node, under contact pressure `sigma_n`.
+  FrictionStress friction(const ContactCandidate& c, const Eigen::VectorXd& nodal, double sigma_n) const;
   /// h of every candidate at `nodal`, into gap_.
   const std::vector<double>& gaps(const Eigen::VectorXd& nodal);
 

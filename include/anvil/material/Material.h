@@ -68,6 +68,9 @@ public:
   /// True when the stress depends on ε̄ (the body needs ε̄ accumulated).
   virtual bool hardens() const { return false; }
 
+  /// True when the stress depends on T (thermal softening in a thermal scene).
+  virtual bool depends_on_temperature() const { return false; }
+
   /// Strain-rate sensitivity m (-): load ∝ velocity^m (0 for elastic laws).
   virtual double rate_sensitivity(const PointState& state) const = 0;
 
@@ -77,33 +80,42 @@ public:
 
 /// Norton-Hoff viscoplastic law: s = 2K (√3 ε̄̇_r)^(m-1) dev ε̇ with the
 /// regularised rate ε̄̇_r = sqrt(ε̄̇² + ε̄̇₀²) (DESIGN §2). m = 1 is Newtonian
-/// with viscosity η = K.
+/// with viscosity η = K. K may soften with temperature by an Arrhenius
+/// factor, K(T) = K exp(β (1/T − 1/T_ref)) with T in kelvin (the form of
+/// FORGE's Norton-Hoff cards, K₀ exp(β/T)).
 class NortonHoff final : public Material {
 public:
+  /// Temperature dependence of K: none when β = 0.
+  struct Softening {
+    double activation_temperature = 0.0; ///< β (K)
+    double reference_temperature = 20.0; ///< T_ref (°C), where K holds
+  };
   /// K in MPa·s^m, 0 < m ≤ 1, ε̄̇₀ ≥ 0 in 1/s (> 0 required when m < 1 so
   /// that rigid zones have a finite viscosity).
-  NortonHoff(double consistency, double sensitivity, double regularisation_rate);
+  NortonHoff(double consistency, double sensitivity, double regularisation_rate, Softening softening);
+  NortonHoff(double consistency, double sensitivity, double regularisation_rate)
+      : NortonHoff(consistency, sensitivity, regularisation_rate, Softening{0.0, 20.0}) {}
 
   void deviatoric_stress(const Vec6& strain_rate, const PointState& state, Vec6& stress,
                          J2Tangent& tangent) const override;
   std::string describe() const override;
   bool is_linear() const override { return sensitivity_ == 1.0; }
-  double secant_viscosity(double equivalent_rate, const PointState&) const override {
-    return viscosity(equivalent_rate);
-  }
-
-  double consistency(const PointState&) const override { return consistency_; }
+  double secant_viscosity(double equivalent_rate, const PointState& state) const override;
+  /// K(T) at the point's temperature.
+  double consistency(const PointState& state) const override;
+  bool depends_on_temperature() const override { return softening_.activation_temperature != 0.0; }
   double rate_sensitivity(const PointState&) const override { return sensitivity_; }
   double consistency() const { return consistency_; }
   double sensitivity() const { return sensitivity_; }
   double regularisation_rate() const { return regularisation_rate_; }
-  /// Viscosity η = K (√3 ε̄̇_r)^(m-1) at equivalent strain rate ε̄̇ (MPa·s).
+  /// Viscosity η = K (√3 ε̄̇_r)^(m-1) at equivalent strain rate ε̄̇ (MPa·s), at T_ref.
   double viscosity(double equivalent_rate) const;
 
 private:
   double consistency_;
   double sensitivity_;
   double regularisation_rate_;
+  Softening softening_;
 };
 
 /// Isotropic linear elasticity, small strain, in u-p mixed form: s = 2G dev ε,
@@ -156,7 +168,7 @@ private:
   double time_step_; ///< s
 };
 
-/// Hansel-Spittel flow stress (isothermal use: T is a constant of the scene):
+/// Hansel-Spittel flow stress, T the point's temperature:
 ///   σ̄ = A e^(m1 T) T^m9 ε̄^m2 e^(m4/ε̄) (1+ε̄)^(m5 T) e^(m7 ε̄) ε̄̇^(m3 + m8 T),
 /// T in °C, written as Norton-Hoff with m = m3 + m8 T and the strain- and
 /// temperature-dependent consistency K = σ̄(ε̄̇ = 1/√3) / √3, so that
@@ -177,6 +189,7 @@ public:
   /// ε̄ matters only through m2, m4, m5, m7; a steady-state card (all zero)
   /// needs no strain accumulated.
   bool hardens() const override { return c_.m2 != 0.0 || c_.m4 != 0.0 || c_.m5 != 0.0 || c_.m7 != 0.0; }
+  bool depends_on_temperature() const override { return c_.m1 != 0.0 || c_.m5 != 0.0 || c_.m8 != 0.0 || c_.m9 != 0.0; }
   double secant_viscosity(double equivalent_rate, const PointState& state) const override;
   double consistency(const PointState& state) const override;
   double rate_sensitivity(const PointState& state) const override { return c_.m3 + c_.m8 * state.temperature; }

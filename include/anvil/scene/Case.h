@@ -5,6 +5,7 @@
 #include "anvil/material/Material.h"
 #include "anvil/scene/BoundaryCondition.h"
 #include "anvil/solver/IncrementSolver.h"
+#include "anvil/thermal/ThermalMaterial.h"
 
 #include <limits>
 #include <memory>
@@ -26,7 +27,14 @@ struct BodySpec {
   std::string name;
   std::string material_file;
   MeshSpec mesh;
-  std::optional<double> temperature; ///< °C, isothermal; default: the material card's
+  std::optional<double> temperature; ///< °C, isothermal or initial; default: the material card's
+};
+
+/// Heat exchange through a contact (die-billet, body-body): the heat transfer
+/// coefficient, constant or a table against the contact pressure.
+struct ContactHeatSpec {
+  thermal::PropertyTable coefficient; ///< h (kW/(m²·K) = mW/(mm²·K)) against σn (MPa)
+  bool given = false;
 };
 
 /// A rigid die: surface, press motion and friction with the body.
@@ -45,6 +53,10 @@ struct DieSpec {
   double crank_radius = 0.0, rod_length = 0.0, rpm = 0.0, start_angle = 0.0; ///< mm, mm, 1/min, deg
   double load_limit = std::numeric_limits<double>::infinity();               ///< N, hydraulic
   contact::FrictionLaw friction;
+  // Thermal scenes only.
+  double temperature = 20.0;          ///< °C, held (a die is a heat sink)
+  ContactHeatSpec heat;               ///< to the bodies it touches
+  double friction_heat_to_body = 0.5; ///< share of the friction heat into the body
   std::string source;
 };
 
@@ -53,6 +65,18 @@ struct ContactPairSpec {
   int master = 0, slave = 1; ///< body indices
   contact::PairMethod method;
   contact::FrictionLaw friction;
+  ContactHeatSpec heat; ///< thermal scenes: between the two bodies (perfect contact when absent)
+  std::string source;
+};
+
+/// Heat (thermal scenes, DESIGN §2): absent from a case, every body keeps its temperature.
+struct ThermalSpec {
+  bool enabled = false;
+  double taylor_quinney = 0.9;           ///< β: share of the plastic work that becomes heat
+  double environment_temperature = 20.0; ///< °C, of the air around the bodies
+  double convection = 0.01;              ///< h to the air, mW/(mm²·K) = kW/(m²·K)
+  double transfer_time = 0.0; ///< s before the press moves (the billet cools in air and on the dies it touches)
+  int transfer_steps = 10;    ///< heat steps over the transfer time
   std::string source;
 };
 
@@ -114,6 +138,7 @@ struct Case {
   ContactSpec contact;
   TimeSpec time;
   RemeshSpec remeshing;
+  ThermalSpec thermal;
   int vtk_every = 1;         ///< write the VTK series every N increments (and the last)
   int checkpoint_every = 10; ///< HDF5 checkpoint every N increments (and the last); 0 = never
 };
@@ -127,7 +152,8 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
 /// A material card as read.
 struct MaterialCard {
   std::unique_ptr<material::Material> law;
-  std::optional<double> temperature; ///< °C, the temperature the numbers hold at
+  std::optional<double> temperature;               ///< °C, the temperature the numbers hold at
+  std::optional<thermal::ThermalMaterial> thermal; ///< when the card gives thermal properties
 };
 
 /// Reads a material card, requiring a source for every number.

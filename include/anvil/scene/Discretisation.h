@@ -9,6 +9,7 @@
 #include "anvil/core/Timers.h"
 #include "anvil/fem/Assembler.h"
 #include "anvil/mesh/QualityGuard.h"
+#include "anvil/scene/Heat.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"
 #include "anvil/solver/IncrementSolver.h"
@@ -30,6 +31,13 @@ struct Discretisation {
   std::unique_ptr<contact::BodyContact> pair_contact; ///< only when the case has contact pairs
   mesh::QualityGuard projection_guard;                ///< elements around each node, for the contact projection
   std::unique_ptr<solver::IncrementSolver> solver;    ///< keeps its preconditioner between increments
+  std::vector<char> symmetry_faces;                   ///< per boundary face: on a symmetry plane of its body
+  std::unique_ptr<Heat> heat;                         ///< only in a thermal scene
+
+  /// What moves heat besides conduction, after the increment just solved.
+  HeatContacts heat_contacts(const Scene& scene) const {
+    return {scene.dies.empty() ? nullptr : &die_contact, pair_contact.get(), symmetry_faces};
+  }
 
   /// The Newton terms of the contacts `scene` has.
   std::vector<solver::NodalTerm*> contact_terms(const Scene& scene);

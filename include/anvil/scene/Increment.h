@@ -49,6 +49,15 @@ IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const
 /// element would invert.
 bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome& inc, RunState& state, Timers& timers);
 
+/// Thermal scenes: the heat step over the increment just accepted
+/// (staggered: the next increment's flow sees its temperatures).
+void advance_heat(const Scene& scene, Discretisation& disc, const IncrementOutcome& inc, RunState& state,
+                  Timers& timers);
+
+/// Thermal scenes: what is left of the transfer before the press moves
+/// (thermal.transfer_time), in thermal.transfer_steps heat steps without flow.
+void transfer(const Scene& scene, Discretisation& disc, RunState& state, Timers& timers);
+
 /// Accepts the solution of a case without a time loop: increment 1 at t = 0,
 /// the geometry as it is.
 void accept_without_motion(const Scene& scene, const IncrementOutcome& inc, RunState& state);

@@ -74,6 +74,21 @@ struct RemeshRecord {
   double material_change = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// Heat budget of a thermal run (mJ), summed over its heat steps
+/// (summary.json "heat"). The bodies' balance is
+///   stored = plastic + friction − to_dies − to_environment,
+/// conduction inside and between bodies creating no heat.
+struct HeatBudget {
+  double plastic = 0.0;  ///< β × the plastic work
+  double friction = 0.0; ///< friction heat generated, on both surfaces
+  double to_dies = 0.0;  ///< into rigid dies (and bodies not solved for heat): conduction and their friction share
+  double to_environment = 0.0; ///< convection and radiation to the air
+  double stored = 0.0;         ///< change of the heat the bodies hold, Σ C ΔT over the steps
+  double remeshing = 0.0;      ///< change of the stored heat by remeshing's transfer (apart from `stored`)
+  /// stored − (plastic + friction − to_dies − to_environment): zero to the linear solver's precision.
+  double imbalance() const { return stored - (plastic + friction - to_dies - to_environment); }
+};
+
 struct RunState {
   int increment = 0;
   double time = 0.0; ///< s
@@ -84,6 +99,10 @@ struct RunState {
   /// σ (MPa, Mandel, 6 per element) carried by the elements of elastic bodies
   /// solved in velocity form; empty when the scene has none.
   std::vector<double> elastic_stress;
+  /// T (°C) per node in a thermal scene; empty otherwise.
+  std::vector<double> temperature;
+  HeatBudget heat;
+  double transfer_time = 0.0; ///< s of the transfer phase done (thermal.transfer_time), before increment 1
   std::vector<DieState> dies;
   std::vector<LoadRecord> loads;
   VolumeBudget volume;

@@ -12,6 +12,7 @@
 #include "anvil/scene/RunState.h"
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,7 +29,10 @@ struct Body {
   /// increment's Δt (material::IncrementalElastic), and it carries its
   /// stress from one increment to the next (RunState::elastic_stress).
   bool velocity_form = false;
-  material::PointState state;                ///< the body's temperature (isothermal)
+  material::PointState state; ///< the body's temperature: held, or initial in a thermal scene
+  /// Thermal properties of a thermal scene's body that is solved for heat;
+  /// empty otherwise (the body keeps its temperature).
+  std::optional<thermal::ThermalMaterial> thermal;
   std::vector<BoundaryCondition> conditions; ///< the case's conditions on this body
   /// What they impose on the mesh as the case builds it (faces chosen on the
   /// initial geometry: a plane condition on a moving face is found there once).
@@ -63,6 +67,7 @@ struct Scene {
   bool solve_displacement = false;
   bool carries_stress = false;     ///< some body is elastic in velocity form
   bool compensate_volume = false;  ///< the volume_compensation effect
+  bool thermal = false;            ///< the heat effect: some body is solved for heat
   double body_size = 0.0;          ///< mm, diagonal of the initial bounding box
   double reference_length = 0.0;   ///< mm, mean boundary edge of the initial mesh
   double reference_velocity = 0.0; ///< mm/s, fastest die or imposed velocity at t = 0

@@ -1,0 +1,96 @@
+// One backward-Euler step of the heat equation (DESIGN §2, heat) on linear
+// tetrahedra, the same mesh the flow is solved on:
+//   (C/Δt + K + H) T_{n+1} = C/Δt T_n + Q + H T_far
+// C the lumped (row-sum) capacity, Σ_e ρc V_e/4 per node: no undershoot at
+// small Δt (THERMAL-NOTES "Numerics"); K the conduction, k V ∇N∇Nᵀ per
+// element; H the exchanges of boundary nodes, with a far temperature (air,
+// rigid die, a body not solved for heat) or with the facet of another body
+// they touch; Q the heat sources (plastic work per element, friction per
+// node). The properties are taken at T_n (one linear solve per step). The
+// matrix is symmetric positive definite: CHOLMOD.
+#pragma once
+#include "anvil/mesh/TetMesh.h"
+#include "anvil/thermal/ThermalMaterial.h"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <array>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace anvil::thermal {
+
+/// Where the heat a boundary node exchanges goes: the budget line it feeds.
+enum class Sink { environment, dies };
+
+/// A boundary node exchanging q = h (T − T_far) (mW/mm²) over its area with
+/// something at a known temperature.
+struct NodeExchange {
+  int node;
+  double area;            ///< mm²
+  double coefficient;     ///< h, mW/(mm²·K) = kW/(m²·K)
+  double far_temperature; ///< °C
+  Sink sink;
+};
+
+/// A boundary node exchanging q = h (T − Σ_j N_j T_j) over its area with the
+/// facet of another body it touches; the facet's nodes receive it in
+/// proportion N_j, so the exchange creates no heat.
+struct FacetExchange {
+  int node;
+  std::array<int, 3> facet;
+  Eigen::Vector3d shape; ///< N_j at the node's projection
+  double area;           ///< mm²
+  double coefficient;    ///< h, mW/(mm²·K)
+};
+
+/// What one step exchanged (mJ): the budget's lines (summary.json "heat").
+struct HeatFlows {
+  double sources = 0.0;        ///< Q Δt: plastic and friction heat put into the bodies
+  double to_environment = 0.0; ///< Σ h A (T_{n+1} − T_far) Δt to the air
+  double to_dies = 0.0;        ///< the same to rigid dies and bodies not solved for heat
+  double stored = 0.0;         ///< Σ C (T_{n+1} − T_n)
+};
+
+/// What a step needs besides the mesh and the temperatures.
+struct HeatStepInput {
+  double time_step;                              ///< Δt, s
+  std::span<const double> element_power;         ///< mW per element (empty: none)
+  std::span<const double> node_power;            ///< mW per node (empty: none)
+  std::span<const NodeExchange> exchanges;       ///< with known temperatures
+  std::span<const FacetExchange> facet_contacts; ///< between bodies
+};
+
+/// The step's solver: keeps its storage from one step to the next.
+class HeatStep {
+public:
+  HeatStep();
+  ~HeatStep();
+  HeatStep(HeatStep&&) noexcept;
+  HeatStep& operator=(HeatStep&&) noexcept;
+
+  /// Advances `temperature` (°C, per node of `mesh`) over the step;
+  /// `materials[e]` is element e's thermal material, or null where its body
+  /// is not solved for heat (its nodes keep their temperature). Throws
+  /// RunError when the system cannot be factorised.
+  HeatFlows advance(const mesh::TetMesh& mesh, std::span<const ThermalMaterial* const> materials,
+                    const HeatStepInput& input, std::vector<double>& temperature);
+
+  /// Lumped capacity per node (mJ/K) at `temperature`: the C of the step.
+  static std::vector<double> capacity(const mesh::TetMesh& mesh, std::span<const ThermalMaterial* const> materials,
+                                      std::span<const double> temperature);
+
+private:
+  struct Solver;
+  std::unique_ptr<Solver> solver_;
+  std::vector<Eigen::Triplet<double>> entries_;
+  std::vector<char> solved_; ///< per node: its temperature is an unknown
+};
+
+/// Σ C_i T_i (mJ) of the nodes of `range`: the heat it stores above 0 °C
+/// (with the capacity at each node's own temperature).
+double stored_heat(const mesh::TetMesh& mesh, const mesh::MeshRange& range,
+                   std::span<const ThermalMaterial* const> materials, std::span<const double> temperature);
+
+} // namespace anvil::thermal

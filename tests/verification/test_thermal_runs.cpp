@@ -1,0 +1,110 @@
+// Heat in whole runs (scene/Heat.h): the adiabatic homogeneous compression
+// (THERMAL-NOTES benchmark 1) and the heat budget of the hot upsetting case.
+#include "run_outputs.h"
+
+#include "anvil/core/log.h"
+
+#include <fstream>
+
+using namespace anvil;
+
+namespace {
+
+/// Writes `text` to `path` (a test's own input files).
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+} // namespace
+
+TEST_CASE("adiabatic homogeneous compression heats the body by beta times the plastic work over rho c",
+          "[verification]") {
+  // A Newtonian cube (η = 50 MPa.s) of side H = 10 mm, quarter-symmetric,
+  // squeezed between frictionless plates at V = 1 mm/s, insulated (no
+  // convection, no emissivity, plates exchange nothing). Without volume
+  // compensation the flow of increment n is the exact homogeneous one on
+  // the height h_n = H − V t_n: ε̄̇_n = V/h_n, σ̄ ε̄̇ = 3η (V/h_n)². So
+  //   T_N = T₀ + β/(ρc) Σ_n 3η (V/h_n)² Δt     exactly (the explicit update),
+  // and β/(ρc) 3ηV (1/h_N − 1/H) in the limit Δt → 0.
+  log::set_quiet(true);
+  const auto folder = std::filesystem::temp_directory_path() / "anvil_adiabatic_input";
+  std::filesystem::create_directories(folder);
+  write_text(folder / "fluid.yaml", R"(format: 1
+name: Newtonian fluid with steel-like thermal properties (test)
+law: newtonian
+viscosity: 50
+conductivity: 30
+specific_heat: 600
+density: 7800
+sources:
+  viscosity: "test value"
+  conductivity: "test value"
+  specific_heat: "test value"
+  density: "test value"
+)");
+  write_text(folder / "case.yaml", R"(anvil: 1
+bodies:
+  - name: cube
+    material: fluid.yaml
+    temperature: 1000
+    mesh: {generate: box, size: [10, 10, 10], element_size: 2.5}
+boundary:
+  - {name: sym_x, type: symmetry, plane: {point: [0, 0, 0], normal: [1, 0, 0]}}
+  - {name: sym_y, type: symmetry, plane: {point: [0, 0, 0], normal: [0, 1, 0]}}
+  - {name: bottom, type: frictionless_plate, plane: {point: [0, 0, 0], normal: [0, 0, 1]}}
+  - {name: top, type: frictionless_plate, velocity: [0, 0, -1], plane: {point: [0, 0, 10], normal: [0, 0, 1]}}
+thermal:
+  environment: {convection: 0}
+time:
+  stroke_increment: 0.1
+  volume_compensation: false
+  stop: {time: 3}
+solver: {tolerance: 1e-10}
+)");
+  const scene::Case c = scene::read_case((folder / "case.yaml").string());
+  const RunOutputs out = run_case(c, "anvil_adiabatic");
+  const scene::RunState state = out.final_state();
+  REQUIRE(state.increment == 30);
+  const double beta = 0.9, eta = 50.0, rho_c = 7800.0 * 600.0 * 1e-6, H = 10.0, V = 1.0, dt = 0.1;
+  double rise = 0.0;
+  for (int n = 0; n < state.increment; ++n)
+    rise += beta * 3.0 * eta * std::pow(V / (H - V * n * dt), 2) * dt / rho_c;
+  const double limit = beta * 3.0 * eta * V * (1.0 / (H - V * 3.0) - 1.0 / H) / rho_c;
+  const auto [low, high] = std::minmax_element(state.temperature.begin(), state.temperature.end());
+  INFO("T " << *low << " to " << *high << " C; exact (explicit update) " << 1000.0 + rise << " C, Δt → 0 "
+            << 1000.0 + limit << " C");
+  // To the Newton tolerance (1e-10 relative on the forces): 1e-6 of the rise.
+  CHECK(std::abs(*high - 1000.0 - rise) < 1e-6 * rise);
+  CHECK(std::abs(*low - 1000.0 - rise) < 1e-6 * rise);
+  // The explicit update is first order: 30 increments, within 5 % of the limit.
+  CHECK(std::abs(rise / limit - 1.0) < 0.05);
+  // All of it is plastic heat stored: the budget closes.
+  CHECK(state.heat.plastic == Approx(state.heat.stored).epsilon(1e-9));
+  CHECK(state.heat.to_environment == 0.0);
+}
+
+TEST_CASE("hot upsetting: the heat budget closes and the dies chill the billet", "[verification]") {
+  // cases/hot_upsetting.yaml to 2 mm of stroke on a coarser mesh: transfer
+  // on the bottom die, then contact with both dies, friction and plastic heat.
+  log::set_quiet(true);
+  const scene::Case c = scene::read_case(source_path("cases/hot_upsetting.yaml"),
+                                         {"bodies[0].mesh.element_size=1.5", "time.stop.stroke=2"});
+  const RunOutputs out = run_case(c, "anvil_hot_upsetting_budget");
+  const scene::RunState state = out.final_state();
+  const scene::HeatBudget& h = state.heat;
+  INFO("plastic " << h.plastic << " mJ, friction " << h.friction << ", to dies " << h.to_dies << ", to air "
+                  << h.to_environment << ", stored " << h.stored);
+  CHECK(h.plastic > 0.0);
+  CHECK(h.friction > 0.0);
+  CHECK(h.to_dies > 0.0);
+  CHECK(h.to_environment > 0.0);
+  // Every line of the budget is summed from the same solved system: the
+  // balance holds to the linear solver's precision (1e-12 of the largest line;
+  // 1e-9 asserted).
+  CHECK(std::abs(h.imbalance()) < 1e-9 * std::abs(h.to_dies));
+  CHECK(out.summary_number("relative_imbalance") == Approx(h.imbalance() / h.to_dies).margin(1e-12));
+  CHECK(state.transfer_time == Approx(3.0));
+  const auto [low, high] = std::minmax_element(state.temperature.begin(), state.temperature.end());
+  CHECK(*low < 1000.0); // chilled skin at the die faces
+  CHECK(*high < 1150.0 + 50.0);
+}
