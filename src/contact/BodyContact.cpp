@@ -297,6 +297,36 @@ double BodyContact::pressure(const ContactPoint& p, const Eigen::VectorXd& nodal
   return pressure;
 }
 
+Eigen::Vector3d BodyContact::sliding(const ContactPoint& p, const Eigen::VectorXd& nodal) const {
+  const double sense = p.on_slave ? 1.0 : -1.0;
+  return sense * (Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose()) * relative_velocity(p, nodal);
+}
+
+bool BodyContact::point_friction(const ContactPoint& p, const Eigen::VectorXd& nodal, FrictionStress& f) const {
+  const FrictionLaw& law = pairs_[p.pair].friction;
+  if (law.kind == FrictionKind::frictionless || law.kind == FrictionKind::sticking) return false;
+  double sigma_n = 0.0;
+  bool touching = false;
+  for (const MultiplierWeight& w : p.multipliers)
+    if (active_[w.multiplier]) {
+      touching = true;
+      sigma_n += w.weight * stress_[w.multiplier];
+    }
+  if (!touching) return false;
+  f = friction_stress(law, {sliding(p, nodal), sigma_n, weaker_side(increment_.flow_stress, p),
+                            weaker_side(increment_.consistency, p), increment_.regularisation, increment_.penalty});
+  return true;
+}
+
+void BodyContact::friction_power(const Eigen::VectorXd& nodal, std::vector<double>& power) const {
+  power.assign(points_.size(), 0.0);
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    FrictionStress f;
+    if (point_friction(points_[i], nodal, f))
+      power[i] = points_[i].share * points_[i].area * f.stress.dot(sliding(points_[i], nodal));
+  }
+}
+
 double BodyContact::node_pressure(int i, const Eigen::VectorXd& nodal) const {
   return pressure(nodes_[i], nodal);
 }
@@ -348,21 +378,10 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     summing = false;
   };
   for (const ContactPoint& p : points_) {
-    const FrictionLaw& law = pairs_[p.pair].friction;
-    if (law.kind == FrictionKind::frictionless || law.kind == FrictionKind::sticking) continue;
-    double sigma_n = 0.0;
-    bool touching = false;
-    for (const MultiplierWeight& w : p.multipliers)
-      if (active_[w.multiplier]) {
-        touching = true;
-        sigma_n += w.weight * stress_[w.multiplier];
-      }
-    if (!touching) continue;
+    FrictionStress f;
+    if (!point_friction(p, nodal, f)) continue;
     const double sense = p.on_slave ? 1.0 : -1.0;
     const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
-    const FrictionStress f = friction_stress(
-        law, {sense * tangent_projector * relative_velocity(p, nodal), sigma_n, weaker_side(increment_.flow_stress, p),
-              weaker_side(increment_.consistency, p), increment_.regularisation, rho});
     // w = sense P (Σ M_i v_i − Σ N_j v_j): coefficient of node a in w is c_a P.
     const RelativeStencil st = stencil(p, sense);
     const double area = p.share * p.area;

@@ -250,6 +250,7 @@ void read_thermal(const CheckedYaml& doc, Case& c) {
     s.convection = doc.number(air, "convection", "thermal.environment.convection");
     s.transfer_time = doc.number(t, "transfer_time", "thermal.transfer_time");
     s.transfer_steps = doc.integer(t, "transfer_steps", "thermal.transfer_steps");
+    s.coupling_tolerance = doc.number(t, "coupling_tolerance", "thermal.coupling_tolerance");
     if (!c.time.enabled) doc.fail(t, "thermal", "heat needs a 'time' section (it is solved over time)");
   }
   read_contact_heat(doc, c);

@@ -59,10 +59,10 @@ void Heat::exchanges(const Scene& scene, const RunState& state, const HeatContac
     const auto& candidates = contacts.dies->candidates();
     for (std::size_t i = 0; i < candidates.size(); ++i) {
       const contact::ContactCandidate& c = candidates[i];
-      const double p = contacts.dies->pressure(int(i), state.unknowns.nodal);
+      const double p = contacts.dies->pressure(int(i), *contacts.solution);
       if (p <= 0.0 || area_[c.node] == 0.0 || !solved(c.node)) continue;
       die_exchange(c.node, c.die, p);
-      const double power = contacts.dies->friction_power(int(i), state.unknowns.nodal);
+      const double power = contacts.dies->friction_power(int(i), *contacts.solution);
       const double to_body = scene.input.dies[c.die].friction_heat_to_body;
       node_power_[c.node] += to_body * power;
       friction_generated_ += power;
@@ -85,7 +85,7 @@ void Heat::exchanges(const Scene& scene, const RunState& state, const HeatContac
     for (std::size_t i = 0; i < points.size(); ++i) {
       const contact::ContactPoint& p = points[i];
       if (!p.on_slave || area_[p.node()] == 0.0) continue;
-      const double pressure = contacts.pairs->node_pressure(int(i), state.unknowns.nodal);
+      const double pressure = contacts.pairs->node_pressure(int(i), *contacts.solution);
       if (pressure <= 0.0) continue;
       const ContactPairSpec& spec = scene.input.contact_pairs[p.pair];
       facet_contacts_.push_back({p.node(), p.facet, p.shape, area_[p.node()], spec.heat.coefficient.at(pressure)});
@@ -94,6 +94,7 @@ void Heat::exchanges(const Scene& scene, const RunState& state, const HeatContac
         in_contact_[j] = 1;
     }
   }
+  if (contacts.pairs) friction_between_bodies(scene, state, contacts);
   // The rest of the surface gives the air convection and radiation.
   const ThermalSpec& air = scene.input.thermal;
   const double air_kelvin = air.environment_temperature + kKelvin;
@@ -107,11 +108,42 @@ void Heat::exchanges(const Scene& scene, const RunState& state, const HeatContac
   }
 }
 
-thermal::HeatFlows Heat::advance(const Scene& scene, RunState& state, const HeatContacts& contacts,
-                                 const fem::ElementFields* fields, double dt) {
+void Heat::friction_between_bodies(const Scene& scene, const RunState& state, const HeatContacts& contacts) {
+  contacts.pairs->friction_power(*contacts.solution, point_power_);
+  const auto& points = contacts.pairs->points();
+  // Heat into a node of a body not solved for heat leaves the budget, as into a die.
+  auto deposit = [&](int node, double power) {
+    if (scene.bodies[body_of_node_[node]].thermal)
+      node_power_[node] += power;
+    else
+      friction_to_dies_ += power;
+  };
+  auto effusivity = [&](int node) {
+    const auto& thermal = scene.bodies[body_of_node_[node]].thermal;
+    return thermal ? thermal->effusivity(state.temperature[node]) : 0.0;
+  };
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double power = point_power_[i];
+    if (power == 0.0) continue;
+    const contact::ContactPoint& p = points[i];
+    // Split by the effusivities √(kρc) of the two surfaces; half each when
+    // one body is not solved for heat (its effusivity is not known).
+    const double own = effusivity(p.own[0]), other = effusivity(p.facet[0]);
+    const double to_own = own > 0.0 && other > 0.0 ? own / (own + other) : 0.5;
+    friction_generated_ += power;
+    for (int k = 0; k < 3; ++k)
+      if (p.own[k] >= 0) deposit(p.own[k], to_own * power * p.own_shape[k]);
+    for (int j = 0; j < 3; ++j)
+      deposit(p.facet[j], (1.0 - to_own) * power * p.shape[j]);
+  }
+}
+
+thermal::HeatFlows Heat::step(const Scene& scene, const RunState& state, const HeatContacts& contacts,
+                              const fem::ElementFields* fields, double dt, std::vector<double>& temperature,
+                              double& plastic) {
   exchanges(scene, state, contacts);
   element_power_.assign(state.mesh.tets.size(), 0.0);
-  double plastic = 0.0;
+  plastic = 0.0;
   if (fields)
     for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
       if (!scene.bodies[b].thermal || scene.bodies[b].law->is_elastic()) continue;
@@ -123,8 +155,17 @@ thermal::HeatFlows Heat::advance(const Scene& scene, RunState& state, const Heat
         plastic += element_power_[e] * dt;
       }
     }
-  const thermal::HeatFlows flows = step_.advance(
-      state.mesh, materials_, {dt, element_power_, node_power_, exchanges_, facet_contacts_}, state.temperature);
+  temperature = state.temperature;
+  return step_.advance(state.mesh, materials_, {dt, element_power_, node_power_, exchanges_, facet_contacts_},
+                       temperature);
+}
+
+thermal::HeatFlows Heat::advance(const Scene& scene, RunState& state, const HeatContacts& contacts,
+                                 const fem::ElementFields* fields, double dt) {
+  double plastic = 0.0;
+  std::vector<double> next;
+  const thermal::HeatFlows flows = step(scene, state, contacts, fields, dt, next, plastic);
+  state.temperature = std::move(next);
   HeatBudget& budget = state.heat;
   budget.plastic += plastic;
   budget.friction += friction_generated_ * dt;
@@ -132,6 +173,14 @@ thermal::HeatFlows Heat::advance(const Scene& scene, RunState& state, const Heat
   budget.to_environment += flows.to_environment;
   budget.stored += flows.stored;
   return flows;
+}
+
+std::vector<double> Heat::predict(const Scene& scene, const RunState& state, const HeatContacts& contacts,
+                                  const fem::ElementFields& fields, double dt) {
+  double plastic = 0.0;
+  std::vector<double> next;
+  step(scene, state, contacts, &fields, dt, next, plastic);
+  return next;
 }
 
 } // namespace anvil::scene

@@ -170,6 +170,45 @@ IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const
   return out;
 }
 
+IncrementOutcome solve_coupled(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
+                               Timers& timers) {
+  const double tolerance = scene.input.thermal.coupling_tolerance;
+  const bool iterated = disc.heat && tolerance > 0.0;
+  // The flow starts from T_n, also when retrying a cut step.
+  if (iterated) element_temperatures(state.mesh, state.temperature, disc.point_states);
+  IncrementOutcome inc = solve_increment(scene, disc, state, step, timers);
+  if (!iterated) return inc;
+  constexpr int kMostCouplings = 5;
+  for (; inc.converged(); ++inc.couplings) {
+    std::vector<double> end;
+    {
+      Timers::Scope scope(timers, "effect heat");
+      end = disc.heat->predict(scene, state, disc.heat_contacts(scene, inc.unknowns.nodal), inc.fields, inc.time_step);
+    }
+    double change = 0.0;
+    for (int e = 0; e < state.mesh.tet_count(); ++e) {
+      const mesh::Tet& t = state.mesh.tets[e];
+      const double mean = 0.25 * (end[t[0]] + end[t[1]] + end[t[2]] + end[t[3]]);
+      change = std::max(change, std::abs(mean - disc.point_states[e].temperature));
+      disc.point_states[e].temperature = mean;
+    }
+    if (change <= tolerance) return inc;
+    if (inc.couplings == kMostCouplings) {
+      inc.report.converged = false;
+      inc.failure = "heat and flow still differ by " + std::to_string(change) + " C after " +
+                    std::to_string(kMostCouplings) + " coupled solves (thermal.coupling_tolerance " +
+                    std::to_string(tolerance) + " C)";
+      return inc;
+    }
+    const int couplings = inc.couplings;
+    TimeStep again = step;
+    again.length = inc.time_step;
+    inc = solve_increment(scene, disc, state, again, timers, ContactEvents::ignore);
+    inc.couplings = couplings;
+  }
+  return inc;
+}
+
 bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome& inc, RunState& state,
                       Timers& timers) {
   Timers::Scope scope(timers, "update");
@@ -249,7 +288,7 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
 void advance_heat(const Scene& scene, Discretisation& disc, const IncrementOutcome& inc, RunState& state,
                   Timers& timers) {
   Timers::Scope scope(timers, "effect heat");
-  disc.heat->advance(scene, state, disc.heat_contacts(scene), &inc.fields, inc.time_step);
+  disc.heat->advance(scene, state, disc.heat_contacts(scene, state.unknowns.nodal), &inc.fields, inc.time_step);
   element_temperatures(state.mesh, state.temperature, disc.point_states);
 }
 

@@ -135,8 +135,9 @@ void log_progress(const Scene& scene, const Discretisation& disc, const RunState
   const LoadRecord& lead = state.loads[state.loads.size() - scene.surfaces.size()];
   const int contacts = (scene.dies.empty() ? 0 : disc.die_contact.active_count()) +
                        (disc.pair_contact ? disc.pair_contact->active_count() : 0);
-  const std::string krylov =
+  std::string krylov =
       disc.solver->linear_solver().iterative() ? " krylov " + std::to_string(inc.report.linear_iterations) : "";
+  if (inc.couplings > 0) krylov += " coupled " + std::to_string(inc.couplings);
   log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN  newton %zu%s  contact %d  volume %+.3f%% "
             "(%.3f%% inside dies)%s  left ~%s",
             state.increment, state.time, lead.stroke, inc.time_step, scene.surfaces[lead.surface].name.c_str(),
@@ -266,7 +267,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
   while (!(stop = clock.stop(state))) {
     const Clock::time_point increment_start = Clock::now();
     TimeStep step = clock.next_step(state);
-    IncrementOutcome inc = solve_increment(scene, disc, state, step, timers);
+    IncrementOutcome inc = solve_coupled(scene, disc, state, step, timers);
     // A failed try leaves the state as it was: try again with half the Δt tried.
     for (int cuts = 0; !inc.converged() || !accept_increment(scene, disc, inc, state, timers); ++cuts) {
       const std::optional<double> shorter = clock.cut(inc.time_step, cuts);
@@ -280,7 +281,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
       step.length = *shorter;
       log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1,
                 inc.failure.c_str(), step.length, cuts + 1, c.time.max_cuts);
-      inc = solve_increment(scene, disc, state, step, timers);
+      inc = solve_coupled(scene, disc, state, step, timers);
     }
     last = inc.report;
     const double heat_before = timers.seconds("effect heat");

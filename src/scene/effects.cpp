@@ -31,7 +31,7 @@ const std::vector<Effect>& effect_registry() {
       {"air_cooling", "convection and radiation of the free surfaces to the environment"},
       {"die_heat_transfer", "heat exchange with rigid dies held at their temperature (h constant or against pressure)"},
       {"contact_heat_transfer", "heat exchange between bodies in contact, through the contact pairs"},
-      {"friction_heating", "friction heat on die contact, split between the body and the die"},
+      {"friction_heating", "friction heat on die and pair contact, split between the two surfaces"},
       {"thermal_softening", "flow stress at the local temperature (Hansel-Spittel T terms, Norton-Hoff K(T))"},
   };
   return registry;
@@ -92,6 +92,8 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
     if (!c.contact_pairs.empty()) add("contact_heat_transfer");
     for (const DieSpec& d : c.dies)
       if (d.friction.kind != contact::FrictionKind::frictionless) add("friction_heating");
+    for (const ContactPairSpec& p : c.contact_pairs)
+      if (p.friction.kind != contact::FrictionKind::frictionless) add("friction_heating");
   }
   // Registry order, so logs of different scenes compare line by line.
   std::vector<std::string> ordered;

@@ -356,6 +356,13 @@ const std::vector<KeySpec>& case_schema() {
                      "0"),
         with_default(range(key("thermal.transfer_steps", T::integer, "heat steps over the transfer time"), 1, 10000),
                      "10"),
+        with_default(range(key("thermal.coupling_tolerance", T::number,
+                               "0: staggered (the flow of an increment sees the temperatures at its start); > 0: "
+                               "iterated (the flow is solved again with the temperatures its heat step gives, until "
+                               "they change by less than this)",
+                               "°C"),
+                           0, kInf),
+                     "0"),
         key("dies[].temperature", T::number, "thermal scenes: the die's temperature, held", "°C"),
         with_default(range(key("dies[].friction_heat_to_body", T::number,
                                "thermal scenes: share of the friction heat that enters the body, the rest the die "

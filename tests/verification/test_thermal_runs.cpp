@@ -108,3 +108,28 @@ TEST_CASE("hot upsetting: the heat budget closes and the dies chill the billet",
   CHECK(*low < 1000.0); // chilled skin at the die faces
   CHECK(*high < 1150.0 + 50.0);
 }
+
+TEST_CASE("hot forging between elastic dies: heat and friction heat cross the contact pairs", "[verification]") {
+  // cases/hot_forging_elastic_dies.yaml to 0.15 s: the billet (1150 °C) and
+  // the meshed dies (250 °C) exchange through their quasi-symmetric pairs.
+  log::set_quiet(true);
+  const scene::Case c =
+      scene::read_case(source_path("cases/hot_forging_elastic_dies.yaml"), {"time.stop.time=0.15", "output.vtk=false"});
+  const RunOutputs out = run_case(c, "anvil_hot_elastic_dies");
+  const scene::RunState state = out.final_state();
+  const scene::HeatBudget& h = state.heat;
+  INFO("plastic " << h.plastic << " mJ, friction " << h.friction << ", to dies " << h.to_dies << ", to air "
+                  << h.to_environment << ", stored " << h.stored);
+  CHECK(h.friction > 0.0);
+  // The dies are bodies: what they receive is stored, nothing leaves to rigid dies.
+  CHECK(h.to_dies == 0.0);
+  CHECK(std::abs(h.imbalance()) < 1e-9 * std::max(h.plastic, h.to_environment));
+  auto range_of = [&](int body) {
+    const mesh::MeshRange& r = state.bodies[body];
+    return std::minmax_element(state.temperature.begin() + r.first_node,
+                               state.temperature.begin() + r.first_node + r.node_count);
+  };
+  CHECK(*range_of(0).first < 1000.0); // the billet's faces chilled
+  CHECK(*range_of(1).second > 300.0); // the top die's face warmed
+  CHECK(*range_of(2).second > 300.0); // and the bottom die's
+}

@@ -144,6 +144,10 @@ public:
   /// multipliers (its own λ, or for a quasi-symmetric master node λ̃, eq. 22).
   double node_pressure(int i, const Eigen::VectorXd& nodal) const;
   int active_count() const { return active_.count(); }
+  /// Friction power τ·w f_p A_p (mW) at each of points() at `nodal`, with
+  /// the pressures of the last add(): the heat sliding makes there (0 where
+  /// a point does not touch, and for frictionless and sticking pairs).
+  void friction_power(const Eigen::VectorXd& nodal, std::vector<double>& power) const;
 
 private:
   /// One constraint: C = Σ_i c_i·v_i − gap_sum/Δt over its support nodes.
@@ -165,6 +169,11 @@ private:
   const std::vector<double>& gaps(const Eigen::VectorXd& nodal);
   void build_multipliers(int node_count);
   double pressure(const ContactPoint& p, const Eigen::VectorXd& nodal) const;
+  /// w: the point's tangential velocity relative to its projection, from the point's side.
+  Eigen::Vector3d sliding(const ContactPoint& p, const Eigen::VectorXd& nodal) const;
+  /// τ of the pair's friction law at a touching point, under the pressure of
+  /// its multipliers; false where it does not touch or the law has no τ of its own.
+  bool point_friction(const ContactPoint& p, const Eigen::VectorXd& nodal, FrictionStress& f) const;
 
   std::vector<BodyPair> pairs_;
   std::vector<char> symmetry_faces_;

@@ -75,8 +75,9 @@ struct ThermalSpec {
   double taylor_quinney = 0.9;           ///< β: share of the plastic work that becomes heat
   double environment_temperature = 20.0; ///< °C, of the air around the bodies
   double convection = 0.01;              ///< h to the air, mW/(mm²·K) = kW/(m²·K)
-  double transfer_time = 0.0; ///< s before the press moves (the billet cools in air and on the dies it touches)
-  int transfer_steps = 10;    ///< heat steps over the transfer time
+  double transfer_time = 0.0;      ///< s before the press moves (the billet cools in air and on the dies it touches)
+  int transfer_steps = 10;         ///< heat steps over the transfer time
+  double coupling_tolerance = 0.0; ///< °C; 0: staggered, > 0: iterated (scene/Increment.h solve_coupled)
   std::string source;
 };
 

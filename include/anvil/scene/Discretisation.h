@@ -34,9 +34,9 @@ struct Discretisation {
   std::vector<char> symmetry_faces;                   ///< per boundary face: on a symmetry plane of its body
   std::unique_ptr<Heat> heat;                         ///< only in a thermal scene
 
-  /// What moves heat besides conduction, after the increment just solved.
-  HeatContacts heat_contacts(const Scene& scene) const {
-    return {scene.dies.empty() ? nullptr : &die_contact, pair_contact.get(), symmetry_faces};
+  /// What moves heat besides conduction in the increment just solved, with solution `nodal`.
+  HeatContacts heat_contacts(const Scene& scene, const Eigen::VectorXd& nodal) const {
+    return {scene.dies.empty() ? nullptr : &die_contact, pair_contact.get(), symmetry_faces, &nodal};
   }
 
   /// The Newton terms of the contacts `scene` has.

@@ -9,6 +9,10 @@
 // - a slave node pressed on the other body of a contact pair exchanges
 //   h(σn) (T − T_facet) with the master facet it projects onto (once per
 //   node pair: master nodes of symmetric formulations do not exchange again);
+//   the pair's friction power τ·w f_p A_p at each of its contact points
+//   (nodes or quadrature points) is split between the two surfaces by their
+//   effusivities √(kρc), each side's share spread on its nodes by their
+//   shape functions there;
 // - every other boundary node not on a symmetry plane gives the air
 //   h (T − T_air) + εσ_SB (T⁴ − T_air⁴), the radiation as the secant
 //   coefficient εσ_SB (T² + T_air²)(T + T_air) at T_n (kelvin).
@@ -33,6 +37,7 @@ struct HeatContacts {
   const contact::RigidContact* dies = nullptr; ///< die contact of the increment (null: by proximity)
   const contact::BodyContact* pairs = nullptr; ///< pair contact of the increment (null: none)
   std::span<const char> symmetry_faces;        ///< per boundary face: on a symmetry plane
+  const Eigen::VectorXd* solution = nullptr;   ///< nodal (v, p) the contacts' pressures are read at
 };
 
 class Heat {
@@ -44,11 +49,21 @@ public:
   /// advance. `fields`: the increment's (plastic heat), or null (transfer).
   thermal::HeatFlows advance(const Scene& scene, RunState& state, const HeatContacts& contacts,
                              const fem::ElementFields* fields, double dt);
+  /// The temperatures the same step would give, `state` unchanged: the
+  /// iterated coupling's estimate of the end of an increment being solved.
+  std::vector<double> predict(const Scene& scene, const RunState& state, const HeatContacts& contacts,
+                              const fem::ElementFields& fields, double dt);
 
   std::span<const thermal::ThermalMaterial* const> materials() const { return materials_; }
 
 private:
   void exchanges(const Scene& scene, const RunState& state, const HeatContacts& contacts);
+  /// The friction heat of the contact pairs into node_power_, split between the two surfaces.
+  void friction_between_bodies(const Scene& scene, const RunState& state, const HeatContacts& contacts);
+  /// The step from state.temperature into `temperature`; `plastic`: the plastic heat put in (mJ).
+  thermal::HeatFlows step(const Scene& scene, const RunState& state, const HeatContacts& contacts,
+                          const fem::ElementFields* fields, double dt, std::vector<double>& temperature,
+                          double& plastic);
 
   std::vector<const thermal::ThermalMaterial*> materials_; ///< per element; null where not solved
   std::vector<int> body_of_node_;
@@ -56,7 +71,7 @@ private:
   // Reused from step to step.
   std::vector<thermal::NodeExchange> exchanges_;
   std::vector<thermal::FacetExchange> facet_contacts_;
-  std::vector<double> element_power_, node_power_, area_;
+  std::vector<double> element_power_, node_power_, area_, point_power_;
   std::vector<char> in_contact_;
   double friction_generated_ = 0.0, friction_to_dies_ = 0.0; ///< mW of the step being built
 };

@@ -26,6 +26,7 @@ struct IncrementOutcome {
   /// ε̄ and elastic bodies integrate, and what the remeshing size field reads.
   fem::ElementFields fields;
   std::string failure; ///< why it cannot be accepted; empty when it can
+  int couplings = 0;   ///< iterated heat coupling: flow solves redone with the increment's end temperatures
 
   bool converged() const { return report.converged; }
 };
@@ -41,6 +42,14 @@ enum class ContactEvents {
 /// (v, p). Uses `disc`'s contact terms and solver; `state` is not changed.
 IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
                                  Timers& timers, ContactEvents events = ContactEvents::end_increment);
+
+/// solve_increment in the time loop. In a thermal scene with
+/// thermal.coupling_tolerance > 0 (iterated coupling) the flow is solved
+/// again with the element temperatures the increment's heat step predicts,
+/// until they change by less than the tolerance (°C), 5 times at most (then
+/// the increment fails and is cut); otherwise (staggered) the flow sees T_n.
+IncrementOutcome solve_coupled(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
+                               Timers& timers);
 
 /// Accepts a converged increment into `state`: x ← x + Δt v, the dies
 /// moved, contact nodes projected onto them, the loads recorded, ε̄ and the
