@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 
 namespace anvil::remesh {
 namespace {
@@ -136,18 +137,31 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     ranges.push_back(mesh::append(next, fresh));
     append_values(nodal, fresh_nodal.data(), fresh_nodal.size());
     if (thermal) {
-      // T interpolated linearly at the new nodes (P1, as it is solved); the
-      // stored heat it changes is logged and kept apart in the heat budget.
-      const Eigen::VectorXd fresh_temperature = interpolate_nodal(
+      // T interpolated linearly at the new nodes (P1, as it is solved).
+      // Interpolation smooths a steep skin profile and so changes the stored
+      // heat; a uniform shift gives it back, so that only the change of the
+      // mesh's volume (the put-back onto the dies, the material given back)
+      // changes it, at the body's mean heat per mm³. That change is logged
+      // and kept apart in the heat budget.
+      Eigen::VectorXd fresh_temperature = interpolate_nodal(
           part, Eigen::Map<const Eigen::VectorXd>(part_temperature, range.node_count), 1, in_old.locate(fresh.nodes));
-      append_values(temperature, fresh_temperature.data(), fresh_temperature.size());
       if (const auto& body_thermal = scene.bodies[b].thermal) {
         const double before = stored_heat(part, *body_thermal, {part_temperature, std::size_t(range.node_count)});
+        const double by_volume = before * relative(volume_after, volume_before);
+        const double interpolated = stored_heat(fresh, *body_thermal, {fresh_temperature.data(), fresh.nodes.size()});
+        const std::vector<const thermal::ThermalMaterial*> materials(fresh.tets.size(), &*body_thermal);
+        const std::vector<double> capacity = thermal::HeatStep::capacity(
+            fresh, materials, {fresh_temperature.data(), std::size_t(fresh_temperature.size())});
+        const double shift =
+            (before + by_volume - interpolated) / std::accumulate(capacity.begin(), capacity.end(), 0.0);
+        fresh_temperature.array() += shift;
         const double after = stored_heat(fresh, *body_thermal, {fresh_temperature.data(), fresh.nodes.size()});
         state.heat.remeshing += after - before;
-        log::info("    temperature interpolated: stored heat %+.4g mJ (%+.3f%% of the heat above 0 C)", after - before,
-                  100.0 * relative(after, before));
+        log::info("    temperature interpolated (stored heat %+.4g mJ) and shifted by %+.3g C to keep it; stored heat "
+                  "%+.4g mJ (%+.3f%%) with the change of volume",
+                  interpolated - before, shift, after - before, 100.0 * relative(after, before));
       }
+      append_values(temperature, fresh_temperature.data(), fresh_temperature.size());
     }
     append_values(strain, fresh_strain.data(), fresh_strain.size());
     if (carries_stress) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // a flowing body carries none

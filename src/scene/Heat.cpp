@@ -49,6 +49,8 @@ void Heat::exchanges(const Scene& scene, const RunState& state, const HeatContac
       area_[node] += third;
   }
   auto solved = [&](int node) { return scene.bodies[body_of_node_[node]].thermal.has_value(); };
+  // Without a solution (transfer), what lies within this distance touches, at zero pressure.
+  const double touching = 1e-3 * scene.reference_length;
   auto die_exchange = [&](int node, int die, double pressure) {
     const DieSpec& spec = scene.input.dies[die];
     exchanges_.push_back(
@@ -70,7 +72,6 @@ void Heat::exchanges(const Scene& scene, const RunState& state, const HeatContac
     }
   } else {
     // Transfer: a node lying on a die (the billet on the lower die) exchanges with it at h(0).
-    const double touching = 1e-3 * scene.reference_length;
     for (int node = 0; node < n; ++node) {
       if (area_[node] == 0.0 || !solved(node)) continue;
       for (std::size_t d = 0; d < scene.dies.size(); ++d)
@@ -85,8 +86,8 @@ void Heat::exchanges(const Scene& scene, const RunState& state, const HeatContac
     for (std::size_t i = 0; i < points.size(); ++i) {
       const contact::ContactPoint& p = points[i];
       if (!p.on_slave || area_[p.node()] == 0.0) continue;
-      const double pressure = contacts.pairs->node_pressure(int(i), *contacts.solution);
-      if (pressure <= 0.0) continue;
+      const double pressure = contacts.solution ? contacts.pairs->node_pressure(int(i), *contacts.solution) : 0.0;
+      if (contacts.solution ? pressure <= 0.0 : p.gap > touching) continue;
       const ContactPairSpec& spec = scene.input.contact_pairs[p.pair];
       facet_contacts_.push_back({p.node(), p.facet, p.shape, area_[p.node()], spec.heat.coefficient.at(pressure)});
       in_contact_[p.node()] = 1;
@@ -94,7 +95,7 @@ void Heat::exchanges(const Scene& scene, const RunState& state, const HeatContac
         in_contact_[j] = 1;
     }
   }
-  if (contacts.pairs) friction_between_bodies(scene, state, contacts);
+  if (contacts.pairs && contacts.solution) friction_between_bodies(scene, state, contacts);
   // The rest of the surface gives the air convection and radiation.
   const ThermalSpec& air = scene.input.thermal;
   const double air_kelvin = air.environment_temperature + kKelvin;

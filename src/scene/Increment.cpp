@@ -296,8 +296,10 @@ void transfer(const Scene& scene, Discretisation& disc, RunState& state, Timers&
   const ThermalSpec& spec = scene.input.thermal;
   const double dt = spec.transfer_time / spec.transfer_steps;
   Timers::Scope scope(timers, "effect heat");
+  // Bodies resting on each other exchange where they touch (nothing moves: one search).
+  if (disc.pair_contact) disc.pair_contact->search(state.mesh, 0.05 * scene.reference_length);
   while (state.transfer_time < spec.transfer_time * (1.0 - 1e-12)) {
-    disc.heat->advance(scene, state, {nullptr, nullptr, disc.symmetry_faces}, nullptr, dt);
+    disc.heat->advance(scene, state, {nullptr, disc.pair_contact.get(), disc.symmetry_faces, nullptr}, nullptr, dt);
     state.transfer_time += dt;
   }
   element_temperatures(state.mesh, state.temperature, disc.point_states);

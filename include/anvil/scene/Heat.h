@@ -17,8 +17,8 @@
 //   h (T − T_air) + εσ_SB (T⁴ − T_air⁴), the radiation as the secant
 //   coefficient εσ_SB (T² + T_air²)(T + T_air) at T_n (kelvin).
 // Before the press moves (thermal.transfer_time) the same step runs without
-// flow; a node then exchanges with a die it lies on (within 1e-3 of the
-// mean boundary edge) at h(0).
+// flow; a node then exchanges with a die or the facet of another body it
+// lies on (within 1e-3 of the mean boundary edge) at h(0).
 #pragma once
 #include "anvil/contact/BodyContact.h"
 #include "anvil/contact/RigidContact.h"
@@ -37,7 +37,7 @@ struct HeatContacts {
   const contact::RigidContact* dies = nullptr; ///< die contact of the increment (null: by proximity)
   const contact::BodyContact* pairs = nullptr; ///< pair contact of the increment (null: none)
   std::span<const char> symmetry_faces;        ///< per boundary face: on a symmetry plane
-  const Eigen::VectorXd* solution = nullptr;   ///< nodal (v, p) the contacts' pressures are read at
+  const Eigen::VectorXd* solution = nullptr;   ///< nodal (v, p) the contacts' pressures are read at (null: transfer)
 };
 
 class Heat {
