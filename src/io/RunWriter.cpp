@@ -7,6 +7,7 @@
 #include "anvil/io/atomic_file.h"
 #include "anvil/material/mandel.h"
 #include "anvil/mesh/tet_geometry.h"
+#include "anvil/thermal/HeatStep.h"
 
 #include <algorithm>
 #include <cmath>
@@ -253,6 +254,8 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
     const double largest = std::max({std::abs(h.plastic), std::abs(h.friction), std::abs(h.to_dies),
                                      std::abs(h.to_environment), std::abs(h.stored)});
     const auto [low, high] = std::minmax_element(state.temperature.begin(), state.temperature.end());
+    const double end_heat =
+        thermal::stored_heat(state.mesh, mesh::whole_range(state.mesh), disc.heat->materials(), state.temperature);
     json.key("heat_mJ")
         .begin_object()
         .member("plastic_work_heat", h.plastic)
@@ -263,6 +266,11 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
         .member("imbalance", h.imbalance())
         .member("relative_imbalance", largest > 0.0 ? h.imbalance() / largest : 0.0)
         .member("stored_change_by_remeshing", h.remeshing)
+        .member("stored_heat_start", h.initial_heat)
+        .member("stored_heat_end", end_heat)
+        // What the steps' balance does not see: the heat the bodies' change
+        // of volume (volume compensation, contact projection) carries.
+        .member("stored_change_by_volume", end_heat - h.initial_heat - h.stored - h.remeshing)
         .member("transfer_time_s", state.transfer_time)
         .member("temperature_min_C", *low)
         .member("temperature_max_C", *high)

@@ -15,7 +15,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numeric>
 
 namespace anvil::remesh {
 namespace {
@@ -149,11 +148,12 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
         const double before = stored_heat(part, *body_thermal, {part_temperature, std::size_t(range.node_count)});
         const double by_volume = before * relative(volume_after, volume_before);
         const double interpolated = stored_heat(fresh, *body_thermal, {fresh_temperature.data(), fresh.nodes.size()});
-        const std::vector<const thermal::ThermalMaterial*> materials(fresh.tets.size(), &*body_thermal);
-        const std::vector<double> capacity = thermal::HeatStep::capacity(
-            fresh, materials, {fresh_temperature.data(), std::size_t(fresh_temperature.size())});
-        const double shift =
-            (before + by_volume - interpolated) / std::accumulate(capacity.begin(), capacity.end(), 0.0);
+        const thermal::NodalMass m =
+            thermal::nodal_mass(fresh, std::vector<const thermal::ThermalMaterial*>(fresh.tets.size(), &*body_thermal));
+        double capacity = 0.0; // mJ/K of the body at its temperatures
+        for (int i = 0; i < fresh.node_count(); ++i)
+          capacity += m.mass[i] * body_thermal->specific_heat.at(fresh_temperature[i]);
+        const double shift = (before + by_volume - interpolated) / capacity;
         fresh_temperature.array() += shift;
         const double after = stored_heat(fresh, *body_thermal, {fresh_temperature.data(), fresh.nodes.size()});
         state.heat.remeshing += after - before;

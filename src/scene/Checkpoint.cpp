@@ -9,7 +9,7 @@
 // /dies (d×6), /loads (r×7), /iterations (i×2), /outputs (k×2) with
 // /output_files (strings), /fingerprint (strings: the case, as a resumed run
 // compares it), /temperature (n, thermal scenes; empty otherwise) and /heat
-// (7: the heat budget and the transfer time done; both absent before they
+// (8: the heat budget and the transfer time done; both absent before they
 // were kept), scalar attributes on the root group.
 #include "anvil/core/error.h"
 #include "anvil/io/atomic_file.h"
@@ -219,8 +219,8 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
     write_array(file, "iterations", H5T_NATIVE_INT, s.iterations.data(), s.iterations.size(), 2);
     write_array(file, "temperature", H5T_NATIVE_DOUBLE, s.temperature.data(), s.temperature.size(), 0);
     const HeatBudget& h = s.heat;
-    const std::array<double, 7> heat{h.plastic, h.friction,  h.to_dies,      h.to_environment,
-                                     h.stored,  h.remeshing, s.transfer_time};
+    const std::array<double, 8> heat{h.plastic, h.friction,  h.to_dies,      h.to_environment,
+                                     h.stored,  h.remeshing, h.initial_heat, s.transfer_time};
     write_array(file, "heat", H5T_NATIVE_DOUBLE, heat.data(), heat.size(), 0);
     std::vector<double> outputs;
     std::string files;
@@ -359,9 +359,9 @@ RunState read_checkpoint(const std::string& path) {
     read_finite_array(file, path, "temperature", s.temperature, 1);
     std::vector<double> heat;
     read_finite_array(file, path, "heat", heat, 1);
-    if (heat.size() != 7) throw InputError(path + ": checkpoint dataset 'heat' has a wrong size");
-    s.heat = {heat[0], heat[1], heat[2], heat[3], heat[4], heat[5]};
-    s.transfer_time = heat[6];
+    if (heat.size() != 8) throw InputError(path + ": checkpoint dataset 'heat' has a wrong size");
+    s.heat = {heat[0], heat[1], heat[2], heat[3], heat[4], heat[5], heat[6]};
+    s.transfer_time = heat[7];
   }
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
       (!s.temperature.empty() && s.temperature.size() != s.mesh.nodes.size()) ||

@@ -254,6 +254,9 @@ RunEnd run(const Case& c, const RunOptions& options) {
     return {"one increment solved", true};
   }
 
+  if (scene.thermal && !options.resume)
+    state.heat.initial_heat =
+        thermal::stored_heat(state.mesh, mesh::whole_range(state.mesh), disc.heat->materials(), state.temperature);
   if (scene.thermal && state.transfer_time < c.thermal.transfer_time) {
     transfer(scene, disc, state, timers);
     log::info("transfer: %.4g s in air%s before the press moves%s", c.thermal.transfer_time,

@@ -21,6 +21,25 @@ double PropertyTable::at(double variable) const {
   return (1.0 - s) * values_[j - 1] + s * values_[j];
 }
 
+double PropertyTable::mean(double a, double b) const {
+  if (at_.empty()) return values_.front();
+  const double low = std::min(a, b), high = std::max(a, b);
+  if (high - low <= 1e-12 * (1.0 + std::abs(low))) return at(low);
+  // Trapezoids between the breakpoints inside (low, high): exact for linear pieces.
+  double sum = 0.0, x = low;
+  for (double point : at_)
+    if (point > low && point < high) {
+      sum += 0.5 * (at(x) + at(point)) * (point - x);
+      x = point;
+    }
+  sum += 0.5 * (at(x) + at(high)) * (high - x);
+  return sum / (high - low);
+}
+
+double PropertyTable::integral(double variable) const {
+  return variable == 0.0 ? 0.0 : mean(0.0, variable) * variable;
+}
+
 double ThermalMaterial::effusivity(double temperature) const {
   return std::sqrt(conductivity.at(temperature) * capacity(temperature));
 }

@@ -85,6 +85,7 @@ struct HeatBudget {
   double to_environment = 0.0; ///< convection and radiation to the air
   double stored = 0.0;         ///< change of the heat the bodies hold, Σ C ΔT over the steps
   double remeshing = 0.0;      ///< change of the stored heat by remeshing's transfer (apart from `stored`)
+  double initial_heat = 0.0;   ///< Σ C T (above 0 °C) of the bodies at the start of the run
   /// stored − (plastic + friction − to_dies − to_environment): zero to the linear solver's precision.
   double imbalance() const { return stored - (plastic + friction - to_dies - to_environment); }
 };

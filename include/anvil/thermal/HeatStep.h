@@ -1,13 +1,18 @@
 // One backward-Euler step of the heat equation (DESIGN §2, heat) on linear
 // tetrahedra, the same mesh the flow is solved on:
 //   (C/Δt + K + H) T_{n+1} = C/Δt T_n + Q + H T_far
-// C the lumped (row-sum) capacity, Σ_e ρc V_e/4 per node: no undershoot at
-// small Δt (THERMAL-NOTES "Numerics"); K the conduction, k V ∇N∇Nᵀ per
-// element; H the exchanges of boundary nodes, with a far temperature (air,
-// rigid die, a body not solved for heat) or with the facet of another body
-// they touch; Q the heat sources (plastic work per element, friction per
-// node). The properties are taken at T_n (one linear solve per step). The
-// matrix is symmetric positive definite: CHOLMOD.
+// C the lumped (row-sum) capacity: no undershoot at small Δt (THERMAL-NOTES
+// "Numerics"); K the conduction, k(T_n) V ∇N∇Nᵀ per element; H the
+// exchanges of boundary nodes, with a far temperature (air, rigid die, a
+// body not solved for heat) or with the facet of another body they touch;
+// Q the heat sources (plastic work per element, friction per node). The
+// capacity of node i is its lumped mass m_i = Σ_e ρ V_e/4 times the secant
+// specific heat (H(T_{n+1}) − H(T_n))/(T_{n+1} − T_n), H = ∫c dT: the step
+// solves the enthalpy form m (H(T) − H(T_n))/Δt + (K + H) T = b by Newton
+// (tangent m c(T)/Δt + K + H), so that C ΔT is the node's change of
+// enthalpy exactly and a step across the steel's transformation peak of c
+// neither misses nor invents its latent heat; one solve when c is constant.
+// The matrix is symmetric positive definite: conjugate gradients (Eigen).
 #pragma once
 #include "anvil/mesh/TetMesh.h"
 #include "anvil/thermal/ThermalMaterial.h"
@@ -50,7 +55,8 @@ struct HeatFlows {
   double sources = 0.0;        ///< Q Δt: plastic and friction heat put into the bodies
   double to_environment = 0.0; ///< Σ h A (T_{n+1} − T_far) Δt to the air
   double to_dies = 0.0;        ///< the same to rigid dies and bodies not solved for heat
-  double stored = 0.0;         ///< Σ C (T_{n+1} − T_n)
+  double stored = 0.0;         ///< Σ m (H(T_{n+1}) − H(T_n)): the change of the bodies' enthalpy
+  int solves = 0;              ///< linear solves (Newton iterations on the enthalpy)
 };
 
 /// What a step needs besides the mesh and the temperatures.
@@ -77,10 +83,6 @@ public:
   HeatFlows advance(const mesh::TetMesh& mesh, std::span<const ThermalMaterial* const> materials,
                     const HeatStepInput& input, std::vector<double>& temperature);
 
-  /// Lumped capacity per node (mJ/K) at `temperature`: the C of the step.
-  static std::vector<double> capacity(const mesh::TetMesh& mesh, std::span<const ThermalMaterial* const> materials,
-                                      std::span<const double> temperature);
-
 private:
   struct Solver;
   std::unique_ptr<Solver> solver_;
@@ -88,8 +90,16 @@ private:
   std::vector<char> solved_; ///< per node: its temperature is an unknown
 };
 
-/// Σ C_i T_i (mJ) of the nodes of `range`: the heat it stores above 0 °C
-/// (with the capacity at each node's own temperature).
+/// The lumped thermal mass of each node: Σ_e ρ_e V_e/4 (1e-6 kg per mm³ of
+/// kg/m³), and the material of a body solved for heat it belongs to (null:
+/// not solved). A node's enthalpy is mass × ∫₀ᵀ c dT (mJ).
+struct NodalMass {
+  std::vector<double> mass;
+  std::vector<const ThermalMaterial*> material;
+};
+NodalMass nodal_mass(const mesh::TetMesh& mesh, std::span<const ThermalMaterial* const> materials);
+
+/// Σ m_i H(T_i) (mJ) of the nodes of `range`: the enthalpy it stores above 0 °C.
 double stored_heat(const mesh::TetMesh& mesh, const mesh::MeshRange& range,
                    std::span<const ThermalMaterial* const> materials, std::span<const double> temperature);
 

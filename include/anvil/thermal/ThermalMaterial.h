@@ -19,6 +19,11 @@ public:
   PropertyTable(std::vector<double> at, std::vector<double> values);
 
   double at(double variable) const;
+  /// Mean of the property between a and b, ∫ₐᵇ/(b − a) (its value where they
+  /// meet): exact for the linear pieces and the constant ends.
+  double mean(double a, double b) const;
+  /// ∫₀ˣ of the property.
+  double integral(double variable) const;
   bool constant() const { return values_.size() == 1; }
 
 private:
@@ -34,6 +39,8 @@ struct ThermalMaterial {
 
   /// ρc in mJ/(mm³·K) (= MPa/K) at T (°C).
   double capacity(double temperature) const { return 1e-6 * density * specific_heat.at(temperature); }
+  /// Enthalpy per volume ρ ∫₀ᵀ c dT in mJ/mm³ (0 at 0 °C): what a volume at T stores.
+  double enthalpy(double temperature) const { return 1e-6 * density * specific_heat.integral(temperature); }
   /// Effusivity √(kρc) in mW·s^½/(mm²·K): splits friction heat between two surfaces.
   double effusivity(double temperature) const;
   /// α = k/(ρc), mm²/s.

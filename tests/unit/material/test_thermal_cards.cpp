@@ -78,3 +78,14 @@ TEST_CASE("heat keys: a die in a thermal scene needs its temperature and h; an i
              Catch::Contains("heat needs a 'time' section"));
   CHECK(case_error(kBody + die + ", temperature: 250, heat_transfer: 10}\nthermal: {}\n" + time).empty());
 }
+
+TEST_CASE("a property table integrates exactly over its linear pieces and its constant ends", "[unit]") {
+  const thermal::PropertyTable c({100.0, 200.0, 300.0}, {1.0, 3.0, 2.0});
+  CHECK(c.integral(0.0) == 0.0);
+  CHECK(c.integral(100.0) == Approx(100.0)); // constant 1 below the table
+  CHECK(c.integral(150.0) == Approx(100.0 + 0.5 * (1.0 + 2.0) * 50.0));
+  CHECK(c.integral(300.0) == Approx(100.0 + 200.0 + 250.0));
+  CHECK(c.integral(400.0) == Approx(550.0 + 200.0)); // constant 2 above
+  CHECK(c.integral(-50.0) == Approx(-50.0));
+  CHECK(thermal::PropertyTable(650.0).integral(1100.0) == Approx(650.0 * 1100.0));
+}
