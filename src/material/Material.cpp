@@ -53,6 +53,12 @@ double NortonHoff::consistency(const PointState& state) const {
                   (1.0 / (state.temperature + kelvin) - 1.0 / (softening_.reference_temperature + kelvin)));
 }
 
+NortonHoff NortonHoff::at_temperature(double temperature) const {
+  PointState state;
+  state.temperature = temperature;
+  return NortonHoff(consistency(state), sensitivity_, regularisation_rate_);
+}
+
 double NortonHoff::secant_viscosity(double equivalent_rate, const PointState& state) const {
   return norton_hoff_viscosity(consistency(state), sensitivity_, regularisation_rate_, equivalent_rate);
 }

@@ -167,7 +167,12 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     body.material_file = spec.material_file;
     body.law = std::move(card.law);
     body.state.temperature = spec.temperature.value_or(card.temperature.value_or(20.0));
-    if (c.thermal.enabled) body.thermal = card.thermal;
+    if (c.thermal.enabled)
+      body.thermal = card.thermal;
+    else if (const auto* law = dynamic_cast<const material::NortonHoff*>(body.law.get());
+             law && law->depends_on_temperature())
+      // T is a constant of an isothermal scene: so is K(T).
+      body.law = std::make_unique<material::NortonHoff>(law->at_temperature(body.state.temperature));
     const mesh::TetMesh part = build_mesh(spec.mesh, "bodies[" + std::to_string(b) + "].mesh");
     for (std::size_t i = 0; i < c.boundary.size(); ++i)
       if (c.boundary_body[i] == static_cast<int>(b)) body.conditions.push_back(c.boundary[i]);

@@ -108,6 +108,9 @@ public:
   double consistency() const { return consistency_; }
   double sensitivity() const { return sensitivity_; }
   double regularisation_rate() const { return regularisation_rate_; }
+  /// The same law with K fixed at its value at `temperature` (°C): an
+  /// isothermal scene pays no exp() per point.
+  NortonHoff at_temperature(double temperature) const;
   /// Viscosity η = K (√3 ε̄̇_r)^(m-1) at equivalent strain rate ε̄̇ (MPa·s), at T_ref.
   double viscosity(double equivalent_rate) const;
 
