@@ -25,8 +25,8 @@ const std::vector<Effect>& effect_registry() {
       {"hardening", "flow stress depending on ε̄ (Hansel-Spittel)"},
       {"remeshing",
        "quality watch every increment; CGAL remeshing of flowing bodies with field transfer when triggered"},
-      {"heat", "temperature of the bodies with thermal properties: P1 conduction, lumped capacity, backward Euler, "
-               "staggered with the flow each increment"},
+      {"heat", "temperature of the bodies with thermal properties: P1 conduction, lumped capacity, backward Euler "
+               "on the enthalpy, staggered with the flow each increment (or iterated: thermal.coupling_tolerance)"},
       {"plastic_heating", "β σ:ε̇ of the flowing bodies into the heat equation (Taylor-Quinney)"},
       {"air_cooling", "convection and radiation of the free surfaces to the environment"},
       {"die_heat_transfer", "heat exchange with rigid dies held at their temperature (h constant or against pressure)"},
