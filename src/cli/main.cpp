@@ -8,10 +8,14 @@
 #include "anvil/scene/schema.h"
 #include "anvil/solver/PetscSession.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -43,6 +47,10 @@ usage:
                                  -fieldsplit_0_pc_type gamg (fgmres solver)
                                  -direct_mat_mumps_icntl_14 50 (mumps solver);
                                  they win over the case's solver.petsc_options
+  anvil render DIR [--field NAME] [--view iso|front|top] [--frames N]
+                                 quick-look PNGs of a run's VTK series in
+                                 DIR/render/ (headless: under xvfb-run when
+                                 there is no display)
   anvil --schema                 every case-file and material-card key: type,
                                  default, range, unit, meaning
   anvil --list                   the effects a scene can call for
@@ -56,6 +64,25 @@ summary.json, anvil.log, checkpoint.h5 (time-stepping cases).
 int usage_error(const std::string& message) {
   std::fprintf(stderr, "anvil: %s\n(run 'anvil --help' for usage)\n", message.c_str());
   return 2;
+}
+
+/// `anvil render ...`: runs anvil_render (beside this program) with the
+/// same arguments, under xvfb-run when there is no X display.
+int render(int argc, char** argv) {
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe");
+  const std::string renderer = (self.parent_path() / "anvil_render").string();
+  std::vector<std::string> args;
+  if (!std::getenv("DISPLAY")) args = {"xvfb-run", "-a"};
+  args.push_back(renderer);
+  for (int i = 2; i < argc; ++i)
+    args.emplace_back(argv[i]);
+  std::vector<char*> c_args;
+  for (std::string& a : args)
+    c_args.push_back(a.data());
+  c_args.push_back(nullptr);
+  execvp(c_args[0], c_args.data());
+  return usage_error("cannot start " + args.front() + ": " + std::strerror(errno) +
+                     (args.front() == "xvfb-run" ? " (tools/setup installs xvfb)" : ""));
 }
 
 } // namespace
@@ -81,6 +108,7 @@ int main(int argc, char** argv) {
       std::printf("  %-20s %s\n", e.name.c_str(), e.doc.c_str());
     return 0;
   }
+  if (command == "render") return render(argc, argv);
   if (command != "run" && command != "output-dir") return usage_error("unknown command '" + command + "'");
 
   std::string case_file;

@@ -1,0 +1,259 @@
+// anvil_render: quick-look pictures of a run's VTK series, headless (issue
+// 29). Reads DIR/anvil.pvd, draws the bodies' surface coloured by a field
+// with a labelled colour bar, the dies semi-transparent, the time, stroke and
+// load in a caption, and writes DIR/render/<field>_<increment>.png. Debian's
+// VTK renders through X only (TECH-NOTES "Off-screen PNG"): `anvil render`
+// starts this program under xvfb-run when there is no display. Kept apart
+// from the solver: only this program links VTK's rendering.
+#include "anvil/io/RunResults.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellData.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkWindowToImageFilter.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace {
+
+/// One increment of the series: its time and the files of its parts (part 0: the bodies).
+struct Frame {
+  double time = 0.0;
+  std::map<int, std::string> parts;
+};
+
+std::vector<Frame> read_series(const std::string& directory) {
+  std::ifstream in(directory + "/anvil.pvd");
+  if (!in) throw std::runtime_error(directory + "/anvil.pvd: no VTK series here (was output.vtk off?)");
+  const std::regex entry(R"re(timestep="([^"]+)"[^>]*part="(\d+)"[^>]*file="([^"]+)")re");
+  std::vector<Frame> frames;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (!std::regex_search(line, m, entry)) continue;
+    const double time = std::stod(m[1]);
+    const int part = std::stoi(m[2]);
+    if (part == 0 || frames.empty()) frames.push_back({time, {}});
+    frames.back().parts[part] = directory + "/" + m[3].str();
+  }
+  if (frames.empty()) throw std::runtime_error(directory + "/anvil.pvd: the series is empty");
+  return frames;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& file) {
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
+  if (!grid || grid->GetNumberOfPoints() == 0) throw std::runtime_error(file + ": cannot be read");
+  return grid;
+}
+
+/// The field to colour by: `asked`, else temperature, ε̄, von Mises stress, in that order.
+std::string choose_field(vtkUnstructuredGrid* grid, const std::string& asked) {
+  auto has = [&](const std::string& name) {
+    return grid->GetPointData()->HasArray(name.c_str()) || grid->GetCellData()->HasArray(name.c_str());
+  };
+  if (!asked.empty()) {
+    if (!has(asked)) throw std::runtime_error("field '" + asked + "' is not in the series");
+    return asked;
+  }
+  for (const char* name : {"temperature", "equivalent_strain", "von_mises_stress"})
+    if (has(name)) return name;
+  throw std::runtime_error("the series has none of temperature, equivalent_strain, von_mises_stress");
+}
+
+struct Options {
+  std::string directory, field, view = "iso";
+  int frames = 1;
+  int width = 1000, height = 750;
+};
+
+void render(const Options& o, const Frame& frame, int increment, const std::vector<anvil::io::LoadRow>& loads,
+            const std::string& load_surface, const std::filesystem::path& out) {
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  const auto bodies = read_grid(frame.parts.at(0));
+  const std::string field = choose_field(bodies, o.field);
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputData(bodies);
+  surface->Update();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(surface->GetOutputPort());
+  const bool on_points = bodies->GetPointData()->HasArray(field.c_str());
+  vtkDataArray* values =
+      on_points ? bodies->GetPointData()->GetArray(field.c_str()) : bodies->GetCellData()->GetArray(field.c_str());
+  double range[2];
+  values->GetRange(range, values->GetNumberOfComponents() > 1 ? -1 : 0);
+  if (range[1] <= range[0]) range[1] = range[0] + 1.0;
+  vtkNew<vtkLookupTable> colours;
+  colours->SetHueRange(0.667, 0.0); // blue (low) to red (high)
+  colours->Build();
+  mapper->SetLookupTable(colours);
+  mapper->SetScalarRange(range);
+  if (on_points)
+    mapper->SetScalarModeToUsePointFieldData();
+  else
+    mapper->SetScalarModeToUseCellFieldData();
+  mapper->SelectColorArray(field.c_str());
+  mapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> part;
+  part->SetMapper(mapper);
+  renderer->AddActor(part);
+  // The dies: grey, semi-transparent, so the part shows through them.
+  for (const auto& [index, file] : frame.parts) {
+    if (index == 0) continue;
+    vtkNew<vtkDataSetSurfaceFilter> die_surface;
+    die_surface->SetInputData(read_grid(file));
+    vtkNew<vtkPolyDataMapper> die_mapper;
+    die_mapper->SetInputConnection(die_surface->GetOutputPort());
+    die_mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> die;
+    die->SetMapper(die_mapper);
+    die->GetProperty()->SetColor(0.55, 0.55, 0.6);
+    die->GetProperty()->SetOpacity(0.3);
+    renderer->AddActor(die);
+  }
+  vtkNew<vtkScalarBarActor> bar;
+  bar->SetLookupTable(colours);
+  bar->SetTitle(field.c_str());
+  bar->SetNumberOfLabels(5);
+  bar->GetTitleTextProperty()->SetColor(0.0, 0.0, 0.0);
+  bar->GetLabelTextProperty()->SetColor(0.0, 0.0, 0.0);
+  bar->SetWidth(0.1);
+  bar->SetHeight(0.6);
+  bar->SetPosition(0.88, 0.2);
+  renderer->AddViewProp(bar);
+  char caption[256];
+  std::snprintf(caption, sizeof caption, "increment %d   t %.4g s", increment, frame.time);
+  std::string text = caption;
+  for (const anvil::io::LoadRow& row : loads)
+    if (row.increment == increment) {
+      std::snprintf(caption, sizeof caption, "   stroke %.4g mm   load(%s) %.4g kN", row.stroke, load_surface.c_str(),
+                    std::abs(row.force.z()) / 1e3);
+      text += caption;
+    }
+  vtkNew<vtkTextActor> label;
+  label->SetInput(text.c_str());
+  label->GetTextProperty()->SetColor(0.0, 0.0, 0.0);
+  label->GetTextProperty()->SetFontSize(20);
+  label->SetPosition(15, 15);
+  renderer->AddViewProp(label);
+
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0, 0, 0);
+  if (o.view == "top") {
+    camera->SetPosition(0, 0, 1);
+    camera->SetViewUp(0, 1, 0);
+  } else if (o.view == "front") {
+    camera->SetPosition(0, -1, 0);
+    camera->SetViewUp(0, 0, 1);
+  } else {
+    camera->SetPosition(1, -1.4, 0.9);
+    camera->SetViewUp(0, 0, 1);
+  }
+  renderer->ResetCamera(part->GetBounds());
+  camera->Zoom(1.1);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  window->SetSize(o.width, o.height);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> image;
+  image->SetInput(window);
+  image->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(out.string().c_str());
+  writer->SetInputConnection(image->GetOutputPort());
+  writer->Write();
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw std::runtime_error(arg + " needs a value");
+      return argv[++i];
+    };
+    try {
+      if (arg == "--field")
+        o.field = value();
+      else if (arg == "--view")
+        o.view = value();
+      else if (arg == "--frames")
+        o.frames = std::stoi(value());
+      else if (arg[0] == '-')
+        throw std::runtime_error("unknown option '" + arg + "'");
+      else
+        o.directory = arg;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "anvil render: %s\n", e.what());
+      return 2;
+    }
+  }
+  if (o.directory.empty() || !(o.view == "iso" || o.view == "front" || o.view == "top") || o.frames < 1) {
+    std::fprintf(stderr, "usage: anvil render DIR [--field NAME] [--view iso|front|top] [--frames N]\n");
+    return 2;
+  }
+  try {
+    const std::vector<Frame> frames = read_series(o.directory);
+    std::vector<anvil::io::LoadRow> loads;
+    std::string load_surface;
+    if (std::ifstream csv(o.directory + "/loads.csv"); csv) {
+      std::string header, first;
+      std::getline(csv, header);
+      if (std::getline(csv, first)) {
+        load_surface = first.substr(first.find(',', first.find(',') + 1) + 1);
+        load_surface = load_surface.substr(0, load_surface.find(','));
+        loads = anvil::io::read_loads(o.directory, load_surface);
+      }
+    }
+    const std::filesystem::path folder = std::filesystem::path(o.directory) / "render";
+    std::filesystem::create_directories(folder);
+    const int count = std::min<int>(o.frames, int(frames.size()));
+    for (int k = 0; k < count; ++k) {
+      // Evenly spread over the series, the last one always included.
+      const std::size_t index = count == 1 ? frames.size() - 1 : k * (frames.size() - 1) / (count - 1);
+      const std::string file = frames[index].parts.at(0);
+      const std::smatch m = [&] {
+        std::smatch s;
+        std::regex_search(file, s, std::regex(R"(_(\d+)\.vtu$)"));
+        return s;
+      }();
+      const int increment = m.empty() ? int(index) : std::stoi(m[1]);
+      char name[64];
+      std::snprintf(name, sizeof name, "%s_%06d.png", o.field.empty() ? "default" : o.field.c_str(), increment);
+      render(o, frames[index], increment, loads, load_surface, folder / name);
+      std::printf("%s\n", (folder / name).string().c_str());
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "anvil render: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

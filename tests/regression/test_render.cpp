@@ -1,0 +1,47 @@
+// Quick-look pictures (anvil render): a hot upsetting run rendered headless
+// gives a PNG of the expected size, not one flat colour, with the part in
+// the colours of its field and the dies in grey.
+#include "run_outputs.h"
+
+#include "anvil/core/log.h"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+
+#include <cstdlib>
+#include <set>
+
+TEST_CASE("anvil render draws a run's final state: the part in its field's colours, the dies in grey", "[regression]") {
+  anvil::log::set_quiet(true);
+  const RunOutputs out = run_case(
+      anvil::scene::read_case(source_path("cases/hot_upsetting.yaml"),
+                              {"bodies[0].mesh.element_size=2", "time.stop.stroke=2", "thermal.transfer_time=0.5"}),
+      "anvil_render_test");
+  const std::string command = std::string(ANVIL_EXECUTABLE) + " render " + out.directory + " --field temperature";
+  REQUIRE(std::system(command.c_str()) == 0);
+  const std::string png = out.directory + "/render/temperature_000014.png";
+  REQUIRE(std::filesystem::exists(png));
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(png.c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  int size[3];
+  image->GetDimensions(size);
+  CHECK(size[0] == 1000);
+  CHECK(size[1] == 750);
+  std::set<int> colours;
+  int grey = 0, saturated = 0;
+  for (int y = 0; y < size[1]; ++y)
+    for (int x = 0; x < size[0]; ++x) {
+      const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+      colours.insert(p[0] << 16 | p[1] << 8 | p[2]);
+      const int high = std::max({p[0], p[1], p[2]}), low = std::min({p[0], p[1], p[2]});
+      if (high - low < 12 && high < 235 && high > 60) ++grey; // a die over the white background
+      if (high - low > 100) ++saturated;                      // the part in its colour map
+    }
+  INFO(colours.size() << " colours, " << grey << " grey pixels, " << saturated << " saturated");
+  CHECK(colours.size() > 100);
+  CHECK(grey > 0.02 * size[0] * size[1]);
+  CHECK(saturated > 0.05 * size[0] * size[1]);
+}
