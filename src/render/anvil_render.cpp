@@ -11,12 +11,17 @@
 #include <vtkCamera.h>
 #include <vtkCellData.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkImageAppend.h>
+#include <vtkImageData.h>
+#include <vtkImageResize.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
+#include <vtkReflectionFilter.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
@@ -28,8 +33,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <regex>
 #include <string>
@@ -87,25 +94,45 @@ std::string choose_field(vtkUnstructuredGrid* grid, const std::string& asked) {
 struct Options {
   std::string directory, field, view = "iso";
   int frames = 1;
+  bool mirror = false;          ///< a quarter model (symmetry planes x = 0, y = 0) drawn whole
+  bool sheet = false;           ///< also a contact sheet of the frames
+  double range[2] = {0.0, 0.0}; ///< colour bar range shared by the frames; empty: each frame's own
   int width = 1000, height = 750;
 };
 
-void render(const Options& o, const Frame& frame, int increment, const std::vector<anvil::io::LoadRow>& loads,
-            const std::string& load_surface, const std::filesystem::path& out) {
+/// The surface of `grid`, mirrored across x = 0 and y = 0 when `mirror`.
+vtkSmartPointer<vtkPolyData> surface_of(vtkUnstructuredGrid* grid, bool mirror) {
+  vtkSmartPointer<vtkDataSet> whole = grid;
+  if (mirror)
+    for (const int plane : {vtkReflectionFilter::USE_X, vtkReflectionFilter::USE_Y}) {
+      vtkNew<vtkReflectionFilter> reflect;
+      reflect->SetInputData(whole);
+      reflect->SetPlane(plane);
+      reflect->SetCenter(0.0);
+      reflect->CopyInputOn();
+      reflect->Update();
+      whole = vtkDataSet::SafeDownCast(reflect->GetOutput());
+    }
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputData(whole);
+  surface->Update();
+  return surface->GetOutput();
+}
+
+/// The picture of one frame.
+vtkSmartPointer<vtkImageData> render(const Options& o, const Frame& frame, int increment,
+                                     const std::vector<anvil::io::LoadRow>& loads, const std::string& load_surface) {
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1.0, 1.0, 1.0);
   const auto bodies = read_grid(frame.parts.at(0));
   const std::string field = choose_field(bodies, o.field);
-  vtkNew<vtkDataSetSurfaceFilter> surface;
-  surface->SetInputData(bodies);
-  surface->Update();
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(surface->GetOutputPort());
+  mapper->SetInputData(surface_of(bodies, o.mirror));
   const bool on_points = bodies->GetPointData()->HasArray(field.c_str());
   vtkDataArray* values =
       on_points ? bodies->GetPointData()->GetArray(field.c_str()) : bodies->GetCellData()->GetArray(field.c_str());
-  double range[2];
-  values->GetRange(range, values->GetNumberOfComponents() > 1 ? -1 : 0);
+  double range[2] = {o.range[0], o.range[1]};
+  if (!(range[1] > range[0])) values->GetRange(range, values->GetNumberOfComponents() > 1 ? -1 : 0);
   if (range[1] <= range[0]) range[1] = range[0] + 1.0;
   vtkNew<vtkLookupTable> colours;
   colours->SetHueRange(0.667, 0.0); // blue (low) to red (high)
@@ -124,15 +151,13 @@ void render(const Options& o, const Frame& frame, int increment, const std::vect
   // The dies: grey, semi-transparent, so the part shows through them.
   for (const auto& [index, file] : frame.parts) {
     if (index == 0) continue;
-    vtkNew<vtkDataSetSurfaceFilter> die_surface;
-    die_surface->SetInputData(read_grid(file));
     vtkNew<vtkPolyDataMapper> die_mapper;
-    die_mapper->SetInputConnection(die_surface->GetOutputPort());
+    die_mapper->SetInputData(surface_of(read_grid(file), o.mirror));
     die_mapper->ScalarVisibilityOff();
     vtkNew<vtkActor> die;
     die->SetMapper(die_mapper);
-    die->GetProperty()->SetColor(0.55, 0.55, 0.6);
-    die->GetProperty()->SetOpacity(0.3);
+    die->GetProperty()->SetColor(0.6, 0.6, 0.65);
+    die->GetProperty()->SetOpacity(0.2);
     renderer->AddActor(die);
   }
   vtkNew<vtkScalarBarActor> bar;
@@ -184,10 +209,48 @@ void render(const Options& o, const Frame& frame, int increment, const std::vect
   vtkNew<vtkWindowToImageFilter> image;
   image->SetInput(window);
   image->Update();
+  vtkSmartPointer<vtkImageData> picture = vtkSmartPointer<vtkImageData>::New();
+  picture->DeepCopy(image->GetOutput());
+  return picture;
+}
+
+void write_png(vtkImageData* picture, const std::string& file) {
   vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(out.string().c_str());
-  writer->SetInputConnection(image->GetOutputPort());
+  writer->SetFileName(file.c_str());
+  writer->SetInputData(picture);
   writer->Write();
+}
+
+/// The frames at half size, two to a row, in order (a report's page).
+vtkSmartPointer<vtkImageData> contact_sheet(const std::vector<vtkSmartPointer<vtkImageData>>& pictures) {
+  vtkNew<vtkImageAppend> rows;
+  rows->SetAppendAxis(1);
+  // vtkImageAppend stacks rows bottom-up: the last row first.
+  const std::size_t columns = 2, row_count = (pictures.size() + columns - 1) / columns;
+  for (std::size_t r = row_count; r-- > 0;) {
+    vtkNew<vtkImageAppend> row;
+    row->SetAppendAxis(0);
+    for (std::size_t c = 0; c < columns; ++c) {
+      const std::size_t k = r * columns + c;
+      vtkNew<vtkImageResize> half;
+      half->SetInputData(k < pictures.size() ? pictures[k] : pictures.back());
+      half->SetMagnificationFactors(0.5, 0.5, 1.0);
+      half->SetResizeMethodToMagnificationFactors();
+      half->Update();
+      vtkSmartPointer<vtkImageData> tile = vtkSmartPointer<vtkImageData>::New();
+      tile->DeepCopy(half->GetOutput());
+      if (k >= pictures.size()) tile->GetPointData()->GetScalars()->Fill(255.0); // an empty place stays white
+      row->AddInputData(tile);
+    }
+    row->Update();
+    vtkSmartPointer<vtkImageData> strip = vtkSmartPointer<vtkImageData>::New();
+    strip->DeepCopy(row->GetOutput());
+    rows->AddInputData(strip);
+  }
+  rows->Update();
+  vtkSmartPointer<vtkImageData> sheet = vtkSmartPointer<vtkImageData>::New();
+  sheet->DeepCopy(rows->GetOutput());
+  return sheet;
 }
 
 } // namespace
@@ -207,6 +270,10 @@ int main(int argc, char** argv) {
         o.view = value();
       else if (arg == "--frames")
         o.frames = std::stoi(value());
+      else if (arg == "--mirror")
+        o.mirror = true;
+      else if (arg == "--sheet")
+        o.sheet = true;
       else if (arg[0] == '-')
         throw std::runtime_error("unknown option '" + arg + "'");
       else
@@ -217,7 +284,8 @@ int main(int argc, char** argv) {
     }
   }
   if (o.directory.empty() || !(o.view == "iso" || o.view == "front" || o.view == "top") || o.frames < 1) {
-    std::fprintf(stderr, "usage: anvil render DIR [--field NAME] [--view iso|front|top] [--frames N]\n");
+    std::fprintf(stderr,
+                 "usage: anvil render DIR [--field NAME] [--view iso|front|top] [--frames N] [--mirror] [--sheet]\n");
     return 2;
   }
   try {
@@ -236,9 +304,30 @@ int main(int argc, char** argv) {
     const std::filesystem::path folder = std::filesystem::path(o.directory) / "render";
     std::filesystem::create_directories(folder);
     const int count = std::min<int>(o.frames, int(frames.size()));
-    for (int k = 0; k < count; ++k) {
-      // Evenly spread over the series, the last one always included.
-      const std::size_t index = count == 1 ? frames.size() - 1 : k * (frames.size() - 1) / (count - 1);
+    std::vector<vtkSmartPointer<vtkImageData>> pictures;
+    std::vector<std::string> files;
+    std::vector<std::size_t> chosen;
+    for (int k = 0; k < count; ++k) // evenly spread over the series, the last one always included
+      chosen.push_back(count == 1 ? frames.size() - 1 : k * (frames.size() - 1) / (count - 1));
+    if (count > 1) {
+      // One colour bar for every frame, so the animation and the sheet compare.
+      Options shared = o;
+      shared.range[0] = std::numeric_limits<double>::infinity();
+      shared.range[1] = -shared.range[0];
+      for (std::size_t index : chosen) {
+        const auto grid = read_grid(frames[index].parts.at(0));
+        const std::string field = choose_field(grid, o.field);
+        vtkDataArray* values = grid->GetPointData()->HasArray(field.c_str())
+                                   ? grid->GetPointData()->GetArray(field.c_str())
+                                   : grid->GetCellData()->GetArray(field.c_str());
+        double r[2];
+        values->GetRange(r, values->GetNumberOfComponents() > 1 ? -1 : 0);
+        shared.range[0] = std::min(shared.range[0], r[0]);
+        shared.range[1] = std::max(shared.range[1], r[1]);
+      }
+      o = shared;
+    }
+    for (const std::size_t index : chosen) {
       const std::string file = frames[index].parts.at(0);
       const std::smatch m = [&] {
         std::smatch s;
@@ -248,8 +337,26 @@ int main(int argc, char** argv) {
       const int increment = m.empty() ? int(index) : std::stoi(m[1]);
       char name[64];
       std::snprintf(name, sizeof name, "%s_%06d.png", o.field.empty() ? "default" : o.field.c_str(), increment);
-      render(o, frames[index], increment, loads, load_surface, folder / name);
-      std::printf("%s\n", (folder / name).string().c_str());
+      pictures.push_back(render(o, frames[index], increment, loads, load_surface));
+      files.push_back((folder / name).string());
+      write_png(pictures.back(), files.back());
+      std::printf("%s\n", files.back().c_str());
+    }
+    const std::string stem = (folder / (o.field.empty() ? "default" : o.field)).string();
+    if (o.sheet && pictures.size() > 1) {
+      write_png(contact_sheet(pictures), stem + "_sheet.png");
+      std::printf("%s\n", (stem + "_sheet.png").c_str());
+    }
+    if (pictures.size() > 1) {
+      // The animation by ImageMagick (Debian's imagemagick: tools/setup), 0.3 s a frame.
+      std::string command = "convert -delay 30 -loop 0";
+      for (const std::string& f : files)
+        command += " '" + f + "'";
+      command += " '" + stem + ".gif'";
+      if (std::system(command.c_str()) == 0)
+        std::printf("%s.gif\n", stem.c_str());
+      else
+        std::fprintf(stderr, "anvil render: no animation written (ImageMagick's convert failed or is missing)\n");
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "anvil render: %s\n", e.what());
