@@ -13,9 +13,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <fcntl.h>
 #include <filesystem>
+#include <spawn.h>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
+
+extern char** environ;
 #include <vector>
 
 namespace {
@@ -66,23 +71,49 @@ int usage_error(const std::string& message) {
   return 2;
 }
 
-/// `anvil render ...`: runs anvil_render (beside this program) with the
-/// same arguments, under xvfb-run when there is no X display.
-int render(int argc, char** argv) {
+/// The command line of anvil_render (beside this program) with `arguments`,
+/// under xvfb-run when there is no X display.
+std::vector<std::string> renderer_command(const std::vector<std::string>& arguments) {
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe");
-  const std::string renderer = (self.parent_path() / "anvil_render").string();
   std::vector<std::string> args;
   if (!std::getenv("DISPLAY")) args = {"xvfb-run", "-a"};
-  args.push_back(renderer);
-  for (int i = 2; i < argc; ++i)
-    args.emplace_back(argv[i]);
+  args.push_back((self.parent_path() / "anvil_render").string());
+  args.insert(args.end(), arguments.begin(), arguments.end());
+  return args;
+}
+
+std::vector<char*> c_arguments(std::vector<std::string>& args) {
   std::vector<char*> c_args;
   for (std::string& a : args)
     c_args.push_back(a.data());
   c_args.push_back(nullptr);
+  return c_args;
+}
+
+/// `anvil render ...`: becomes anvil_render with the same arguments.
+int render(int argc, char** argv) {
+  std::vector<std::string> args = renderer_command(std::vector<std::string>(argv + 2, argv + argc));
+  std::vector<char*> c_args = c_arguments(args);
   execvp(c_args[0], c_args.data());
   return usage_error("cannot start " + args.front() + ": " + std::strerror(errno) +
                      (args.front() == "xvfb-run" ? " (tools/setup installs xvfb)" : ""));
+}
+
+/// After a run: DIR/final.png, the last increment, beside loads.png
+/// (output.picture). A picture that cannot be made is said, not fatal.
+void final_picture(const std::string& directory) {
+  std::vector<std::string> args = renderer_command({directory, "--out", directory + "/final.png"});
+  std::vector<char*> c_args = c_arguments(args);
+  pid_t child = 0;
+  posix_spawn_file_actions_t quiet;
+  posix_spawn_file_actions_init(&quiet);
+  posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+  int status = -1;
+  if (posix_spawnp(&child, c_args[0], &quiet, nullptr, c_args.data(), environ) == 0) waitpid(child, &status, 0);
+  posix_spawn_file_actions_destroy(&quiet);
+  if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0))
+    std::fprintf(stderr, "anvil: final.png not written (anvil render %s failed; output.picture: false skips it)\n",
+                 directory.c_str());
 }
 
 } // namespace
@@ -156,6 +187,7 @@ int main(int argc, char** argv) {
     char** petsc_argv = petsc_arguments.data();
     anvil::solver::PetscSession petsc(petsc_argc, petsc_argv);
     const anvil::scene::RunEnd end = anvil::scene::run(c, options);
+    if (c.write_picture && c.write_vtk) final_picture(anvil::scene::output_directory(c, options));
     for (const std::string& unused : anvil::solver::PetscSession::unused_options())
       std::fprintf(stderr, "anvil: warning: PETSc option %s was not used by the solver of this run (misspelt?)\n",
                    unused.c_str());

@@ -96,6 +96,7 @@ struct Options {
   int frames = 1;
   bool mirror = false;          ///< a quarter model (symmetry planes x = 0, y = 0) drawn whole
   bool sheet = false;           ///< also a contact sheet of the frames
+  std::string out;              ///< the last frame only, to this file
   double range[2] = {0.0, 0.0}; ///< colour bar range shared by the frames; empty: each frame's own
   int width = 1000, height = 750;
 };
@@ -274,6 +275,8 @@ int main(int argc, char** argv) {
         o.mirror = true;
       else if (arg == "--sheet")
         o.sheet = true;
+      else if (arg == "--out")
+        o.out = value();
       else if (arg[0] == '-')
         throw std::runtime_error("unknown option '" + arg + "'");
       else
@@ -300,6 +303,12 @@ int main(int argc, char** argv) {
         load_surface = load_surface.substr(0, load_surface.find(','));
         loads = anvil::io::read_loads(o.directory, load_surface);
       }
+    }
+    if (!o.out.empty()) {
+      const int increment = loads.empty() ? int(frames.size()) : loads.back().increment;
+      write_png(render(o, frames.back(), increment, loads, load_surface), o.out);
+      std::printf("%s\n", o.out.c_str());
+      return 0;
     }
     const std::filesystem::path folder = std::filesystem::path(o.directory) / "render";
     std::filesystem::create_directories(folder);

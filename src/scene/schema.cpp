@@ -105,6 +105,9 @@ const std::vector<KeySpec>& case_schema() {
                          "output folder, relative to the working directory; default out/<case name>; -o overrides"),
                      ""),
         with_default(key("output.vtk", T::boolean, "write the .vtu/.pvd series"), "true"),
+        with_default(key("output.picture", T::boolean,
+                         "anvil run: final.png, the last increment drawn by anvil render (needs output.vtk)"),
+                     "true"),
         key("solver", T::map, "Newton and linear solver settings"),
         with_default(
             range(key("solver.tolerance", T::number, "Newton: relative tolerance on the force and div residuals"),
