@@ -11,9 +11,11 @@ namespace anvil::contact {
 
 using fem::kDofsPerNode;
 
-std::vector<double> boundary_node_areas(const mesh::TetMesh& mesh) {
+std::vector<double> boundary_node_areas(const mesh::TetMesh& mesh, std::span<const char> skip) {
   std::vector<double> area(mesh.node_count(), 0.0);
-  for (const mesh::Triangle& f : mesh.boundary_faces) {
+  for (std::size_t i = 0; i < mesh.boundary_faces.size(); ++i) {
+    if (!skip.empty() && skip[i]) continue;
+    const mesh::Triangle& f = mesh.boundary_faces[i];
     const double third = mesh::area_vector(mesh, f).norm() / 3.0;
     for (int k = 0; k < 3; ++k)
       area[f[k]] += third;

@@ -57,6 +57,43 @@ std::vector<LoadRow> read_loads(const std::string& directory, const std::string&
   return rows;
 }
 
+std::vector<std::string> read_load_surfaces(const std::string& directory) {
+  std::vector<std::string> surfaces;
+  for_each_csv_row(directory + "/loads.csv", 7, "increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N",
+                   [&](const std::vector<std::string>& c) {
+                     if (std::find(surfaces.begin(), surfaces.end(), c[2]) == surfaces.end()) surfaces.push_back(c[2]);
+                   });
+  return surfaces;
+}
+
+std::vector<SeriesEntry> read_series(const std::string& directory) {
+  const std::string pvd = directory + "/anvil.pvd";
+  std::ifstream in(pvd);
+  if (!in) throw InputError(pvd + ": cannot open the file (was output.vtk off?)");
+  std::vector<SeriesEntry> series;
+  std::string line;
+  auto attribute = [&line](const std::string& name) {
+    const auto at = line.find(name + "=\"");
+    if (at == std::string::npos) return std::string();
+    const auto first = at + name.size() + 2;
+    return line.substr(first, line.find('"', first) - first);
+  };
+  while (std::getline(in, line)) {
+    const std::string part = attribute("part"), file = attribute("file");
+    if (part.empty() || file.empty()) continue;
+    if (part == "0") {
+      // <name>_<bodies>_<increment>.vtu (VtkSeries)
+      const auto underscore = file.rfind('_'), dot = file.rfind('.');
+      series.push_back(
+          {std::stoi(file.substr(underscore + 1, dot - underscore - 1)), std::stod(attribute("timestep")), {}});
+    }
+    if (series.empty()) throw InputError(pvd + ": a die's file comes before the bodies'");
+    series.back().parts.push_back(file);
+  }
+  if (series.empty()) throw InputError(pvd + ": no body file listed");
+  return series;
+}
+
 std::vector<InterfaceRow> read_interface(const std::string& directory) {
   std::vector<InterfaceRow> rows;
   for_each_csv_row(directory + "/interface.csv", 13,
@@ -77,25 +114,6 @@ std::vector<InterfaceRow> read_interface(const std::string& directory) {
 
 namespace {
 
-/// The body files of `directory`/anvil.pvd (part 0; dies are other parts), with their times.
-std::vector<std::pair<double, std::string>> body_files(const std::string& directory) {
-  const std::string pvd = directory + "/anvil.pvd";
-  std::ifstream in(pvd);
-  if (!in) throw InputError(pvd + ": cannot open the file");
-  std::vector<std::pair<double, std::string>> files;
-  std::string line;
-  auto attribute = [&line](const std::string& name) {
-    const auto at = line.find(name + "=\"");
-    if (at == std::string::npos) return std::string();
-    const auto first = at + name.size() + 2;
-    return line.substr(first, line.find('"', first) - first);
-  };
-  while (std::getline(in, line))
-    if (attribute("part") == "0") files.emplace_back(std::stod(attribute("timestep")), attribute("file"));
-  if (files.empty()) throw InputError(pvd + ": no body file listed");
-  return files;
-}
-
 vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& path) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(path.c_str());
@@ -108,7 +126,7 @@ vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& path) {
 } // namespace
 
 std::vector<double> read_last_cell_field(const std::string& directory, const std::string& name, int components) {
-  const std::string path = directory + "/" + body_files(directory).back().second;
+  const std::string path = directory + "/" + read_series(directory).back().parts.front();
   const vtkSmartPointer<vtkUnstructuredGrid> grid = read_grid(path);
   vtkDataArray* array = grid->GetCellData()->GetArray(name.c_str());
   if (!array || array->GetNumberOfComponents() != components)
@@ -122,13 +140,11 @@ std::vector<double> read_last_cell_field(const std::string& directory, const std
 
 std::vector<WrittenIncrement> read_written_increments(const std::string& directory) {
   std::vector<WrittenIncrement> out;
-  for (const auto& [time, file] : body_files(directory)) {
-    // <name>_<bodies>_<increment>.vtu (VtkSeries)
-    const auto underscore = file.rfind('_'), dot = file.rfind('.');
+  for (const SeriesEntry& entry : read_series(directory)) {
     WrittenIncrement w;
-    w.increment = std::stoi(file.substr(underscore + 1, dot - underscore - 1));
-    w.time = time;
-    const vtkSmartPointer<vtkUnstructuredGrid> grid = read_grid(directory + "/" + file);
+    w.increment = entry.increment;
+    w.time = entry.time;
+    const vtkSmartPointer<vtkUnstructuredGrid> grid = read_grid(directory + "/" + entry.parts.front());
     for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
       vtkIdType count = 0;
       const vtkIdType* ids = nullptr;

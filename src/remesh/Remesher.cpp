@@ -147,15 +147,16 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       if (const auto& body_thermal = scene.bodies[b].thermal) {
         const double before = stored_heat(part, *body_thermal, {part_temperature, std::size_t(range.node_count)});
         const double by_volume = before * relative(volume_after, volume_before);
-        const double interpolated = stored_heat(fresh, *body_thermal, {fresh_temperature.data(), fresh.nodes.size()});
         const thermal::NodalMass m =
             thermal::nodal_mass(fresh, std::vector<const thermal::ThermalMaterial*>(fresh.tets.size(), &*body_thermal));
+        const mesh::MeshRange all = mesh::whole_range(fresh);
+        const double interpolated = thermal::enthalpy(m, all, {fresh_temperature.data(), fresh.nodes.size()});
         double capacity = 0.0; // mJ/K of the body at its temperatures
         for (int i = 0; i < fresh.node_count(); ++i)
           capacity += m.mass[i] * body_thermal->specific_heat.at(fresh_temperature[i]);
         const double shift = (before + by_volume - interpolated) / capacity;
         fresh_temperature.array() += shift;
-        const double after = stored_heat(fresh, *body_thermal, {fresh_temperature.data(), fresh.nodes.size()});
+        const double after = thermal::enthalpy(m, all, {fresh_temperature.data(), fresh.nodes.size()});
         state.heat.remeshing += after - before;
         log::info("    temperature interpolated (stored heat %+.4g mJ) and shifted by %+.3g C to keep it; stored heat "
                   "%+.4g mJ (%+.3f%%) with the change of volume",

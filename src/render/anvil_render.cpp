@@ -31,42 +31,16 @@
 #include <vtkWindowToImageFilter.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
-#include <map>
-#include <regex>
 #include <string>
 #include <vector>
 
 namespace {
-
-/// One increment of the series: its time and the files of its parts (part 0: the bodies).
-struct Frame {
-  double time = 0.0;
-  std::map<int, std::string> parts;
-};
-
-std::vector<Frame> read_series(const std::string& directory) {
-  std::ifstream in(directory + "/anvil.pvd");
-  if (!in) throw std::runtime_error(directory + "/anvil.pvd: no VTK series here (was output.vtk off?)");
-  const std::regex entry(R"re(timestep="([^"]+)"[^>]*part="(\d+)"[^>]*file="([^"]+)")re");
-  std::vector<Frame> frames;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::smatch m;
-    if (!std::regex_search(line, m, entry)) continue;
-    const double time = std::stod(m[1]);
-    const int part = std::stoi(m[2]);
-    if (part == 0 || frames.empty()) frames.push_back({time, {}});
-    frames.back().parts[part] = directory + "/" + m[3].str();
-  }
-  if (frames.empty()) throw std::runtime_error(directory + "/anvil.pvd: the series is empty");
-  return frames;
-}
 
 vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& file) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -89,6 +63,20 @@ std::string choose_field(vtkUnstructuredGrid* grid, const std::string& asked) {
   for (const char* name : {"temperature", "equivalent_strain", "von_mises_stress"})
     if (has(name)) return name;
   throw std::runtime_error("the series has none of temperature, equivalent_strain, von_mises_stress");
+}
+
+/// The values of `field` on `grid`, on its points or its cells.
+vtkDataArray* field_values(vtkUnstructuredGrid* grid, const std::string& field) {
+  vtkDataArray* points = grid->GetPointData()->GetArray(field.c_str());
+  return points ? points : grid->GetCellData()->GetArray(field.c_str());
+}
+
+/// [low, high] of `field` on `grid` (the magnitude of a vector field).
+std::array<double, 2> field_range(vtkUnstructuredGrid* grid, const std::string& field) {
+  vtkDataArray* values = field_values(grid, field);
+  std::array<double, 2> range{};
+  values->GetRange(range.data(), values->GetNumberOfComponents() > 1 ? -1 : 0);
+  return range;
 }
 
 struct Options {
@@ -121,25 +109,23 @@ vtkSmartPointer<vtkPolyData> surface_of(vtkUnstructuredGrid* grid, bool mirror) 
 }
 
 /// The picture of one frame.
-vtkSmartPointer<vtkImageData> render(const Options& o, const Frame& frame, int increment,
+/// The picture of one written increment, its bodies read into `bodies`.
+vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEntry& frame, vtkUnstructuredGrid* bodies,
                                      const std::vector<anvil::io::LoadRow>& loads, const std::string& load_surface) {
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(1.0, 1.0, 1.0);
-  const auto bodies = read_grid(frame.parts.at(0));
   const std::string field = choose_field(bodies, o.field);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(surface_of(bodies, o.mirror));
   const bool on_points = bodies->GetPointData()->HasArray(field.c_str());
-  vtkDataArray* values =
-      on_points ? bodies->GetPointData()->GetArray(field.c_str()) : bodies->GetCellData()->GetArray(field.c_str());
-  double range[2] = {o.range[0], o.range[1]};
-  if (!(range[1] > range[0])) values->GetRange(range, values->GetNumberOfComponents() > 1 ? -1 : 0);
+  std::array<double, 2> range{o.range[0], o.range[1]};
+  if (!(range[1] > range[0])) range = field_range(bodies, field);
   if (range[1] <= range[0]) range[1] = range[0] + 1.0;
   vtkNew<vtkLookupTable> colours;
   colours->SetHueRange(0.667, 0.0); // blue (low) to red (high)
   colours->Build();
   mapper->SetLookupTable(colours);
-  mapper->SetScalarRange(range);
+  mapper->SetScalarRange(range.data());
   if (on_points)
     mapper->SetScalarModeToUsePointFieldData();
   else
@@ -150,8 +136,8 @@ vtkSmartPointer<vtkImageData> render(const Options& o, const Frame& frame, int i
   part->SetMapper(mapper);
   renderer->AddActor(part);
   // The dies: grey, semi-transparent, so the part shows through them.
-  for (const auto& [index, file] : frame.parts) {
-    if (index == 0) continue;
+  for (std::size_t p = 1; p < frame.parts.size(); ++p) {
+    const std::string file = o.directory + "/" + frame.parts[p];
     vtkNew<vtkPolyDataMapper> die_mapper;
     die_mapper->SetInputData(surface_of(read_grid(file), o.mirror));
     die_mapper->ScalarVisibilityOff();
@@ -172,10 +158,10 @@ vtkSmartPointer<vtkImageData> render(const Options& o, const Frame& frame, int i
   bar->SetPosition(0.88, 0.2);
   renderer->AddViewProp(bar);
   char caption[256];
-  std::snprintf(caption, sizeof caption, "increment %d   t %.4g s", increment, frame.time);
+  std::snprintf(caption, sizeof caption, "increment %d   t %.4g s", frame.increment, frame.time);
   std::string text = caption;
   for (const anvil::io::LoadRow& row : loads)
-    if (row.increment == increment) {
+    if (row.increment == frame.increment) {
       std::snprintf(caption, sizeof caption, "   stroke %.4g mm   load(%s) %.4g kN", row.stroke, load_surface.c_str(),
                     std::abs(row.force.z()) / 1e3);
       text += caption;
@@ -292,61 +278,45 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const std::vector<Frame> frames = read_series(o.directory);
-    std::vector<anvil::io::LoadRow> loads;
-    std::string load_surface;
-    if (std::ifstream csv(o.directory + "/loads.csv"); csv) {
-      std::string header, first;
-      std::getline(csv, header);
-      if (std::getline(csv, first)) {
-        load_surface = first.substr(first.find(',', first.find(',') + 1) + 1);
-        load_surface = load_surface.substr(0, load_surface.find(','));
-        loads = anvil::io::read_loads(o.directory, load_surface);
-      }
-    }
+    const std::vector<anvil::io::SeriesEntry> frames = anvil::io::read_series(o.directory);
+    const std::vector<std::string> surfaces = anvil::io::read_load_surfaces(o.directory);
+    const std::string load_surface = surfaces.empty() ? "" : surfaces.front();
+    const std::vector<anvil::io::LoadRow> loads =
+        surfaces.empty() ? std::vector<anvil::io::LoadRow>{} : anvil::io::read_loads(o.directory, load_surface);
+    auto bodies_of = [&](const anvil::io::SeriesEntry& frame) {
+      return read_grid(o.directory + "/" + frame.parts.front());
+    };
     if (!o.out.empty()) {
-      const int increment = loads.empty() ? int(frames.size()) : loads.back().increment;
-      write_png(render(o, frames.back(), increment, loads, load_surface), o.out);
+      write_png(render(o, frames.back(), bodies_of(frames.back()), loads, load_surface), o.out);
       std::printf("%s\n", o.out.c_str());
       return 0;
     }
     const std::filesystem::path folder = std::filesystem::path(o.directory) / "render";
     std::filesystem::create_directories(folder);
     const int count = std::min<int>(o.frames, int(frames.size()));
-    std::vector<vtkSmartPointer<vtkImageData>> pictures;
-    std::vector<std::string> files;
-    std::vector<std::size_t> chosen;
-    for (int k = 0; k < count; ++k) // evenly spread over the series, the last one always included
-      chosen.push_back(count == 1 ? frames.size() - 1 : k * (frames.size() - 1) / (count - 1));
+    std::vector<const anvil::io::SeriesEntry*> chosen;
+    std::vector<vtkSmartPointer<vtkUnstructuredGrid>> bodies;
+    for (int k = 0; k < count; ++k) { // evenly spread over the series, the last one always included
+      chosen.push_back(&frames[count == 1 ? frames.size() - 1 : k * (frames.size() - 1) / (count - 1)]);
+      bodies.push_back(bodies_of(*chosen.back()));
+    }
     if (count > 1) {
       // One colour bar for every frame, so the animation and the sheet compare.
-      Options shared = o;
-      shared.range[0] = std::numeric_limits<double>::infinity();
-      shared.range[1] = -shared.range[0];
-      for (std::size_t index : chosen) {
-        const auto grid = read_grid(frames[index].parts.at(0));
-        const std::string field = choose_field(grid, o.field);
-        vtkDataArray* values = grid->GetPointData()->HasArray(field.c_str())
-                                   ? grid->GetPointData()->GetArray(field.c_str())
-                                   : grid->GetCellData()->GetArray(field.c_str());
-        double r[2];
-        values->GetRange(r, values->GetNumberOfComponents() > 1 ? -1 : 0);
-        shared.range[0] = std::min(shared.range[0], r[0]);
-        shared.range[1] = std::max(shared.range[1], r[1]);
+      o.range[0] = std::numeric_limits<double>::infinity();
+      o.range[1] = -o.range[0];
+      for (const auto& grid : bodies) {
+        const std::array<double, 2> r = field_range(grid, choose_field(grid, o.field));
+        o.range[0] = std::min(o.range[0], r[0]);
+        o.range[1] = std::max(o.range[1], r[1]);
       }
-      o = shared;
     }
-    for (const std::size_t index : chosen) {
-      const std::string file = frames[index].parts.at(0);
-      const std::smatch m = [&] {
-        std::smatch s;
-        std::regex_search(file, s, std::regex(R"(_(\d+)\.vtu$)"));
-        return s;
-      }();
-      const int increment = m.empty() ? int(index) : std::stoi(m[1]);
+    std::vector<vtkSmartPointer<vtkImageData>> pictures;
+    std::vector<std::string> files;
+    for (std::size_t k = 0; k < chosen.size(); ++k) {
       char name[64];
-      std::snprintf(name, sizeof name, "%s_%06d.png", o.field.empty() ? "default" : o.field.c_str(), increment);
-      pictures.push_back(render(o, frames[index], increment, loads, load_surface));
+      std::snprintf(name, sizeof name, "%s_%06d.png", o.field.empty() ? "default" : o.field.c_str(),
+                    chosen[k]->increment);
+      pictures.push_back(render(o, *chosen[k], bodies[k], loads, load_surface));
       files.push_back((folder / name).string());
       write_png(pictures.back(), files.back());
       std::printf("%s\n", files.back().c_str());

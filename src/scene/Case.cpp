@@ -35,6 +35,11 @@ std::pair<mesh::Point, Eigen::Vector3d> read_plane(const CheckedYaml& doc, const
   return {point, normal};
 }
 
+/// The map `key` of `parent`, or an empty map when it is absent (its keys then take their defaults).
+YAML::Node section(const YAML::Node& parent, const char* key) {
+  return parent[key] ? parent[key] : YAML::Node(YAML::NodeType::Map);
+}
+
 /// Calls `read(entry, shown)` for each entry of the list `list` (absent: none),
 /// `shown` being "key[i]", the entry as error messages name it.
 template <class Read> void for_each_entry(const YAML::Node& list, const std::string& key, Read read) {
@@ -245,7 +250,7 @@ void read_thermal(const CheckedYaml& doc, Case& c) {
     s.enabled = true;
     s.source = doc.at(t);
     s.taylor_quinney = doc.number(t, "taylor_quinney", "thermal.taylor_quinney");
-    const YAML::Node air = t["environment"] ? t["environment"] : YAML::Node(YAML::NodeType::Map);
+    const YAML::Node air = section(t, "environment");
     s.environment_temperature = doc.number(air, "temperature", "thermal.environment.temperature");
     s.convection = doc.number(air, "convection", "thermal.environment.convection");
     s.transfer_time = doc.number(t, "transfer_time", "thermal.transfer_time");
@@ -305,13 +310,13 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.overrides = overrides;
   c.settings = flatten(root);
   c.title = doc.text(root, "title", "title");
-  const YAML::Node output = root["output"] ? root["output"] : YAML::Node(YAML::NodeType::Map);
+  const YAML::Node output = section(root, "output");
   c.output_directory = doc.text(output, "directory", "output.directory");
   c.write_vtk = doc.boolean(output, "vtk", "output.vtk");
   c.write_picture = doc.boolean(output, "picture", "output.picture");
   c.vtk_every = doc.integer(output, "vtk_every", "output.vtk_every");
   c.checkpoint_every = doc.integer(output, "checkpoint_every", "output.checkpoint_every");
-  const YAML::Node solver = root["solver"] ? root["solver"] : YAML::Node(YAML::NodeType::Map);
+  const YAML::Node solver = section(root, "solver");
   c.newton.tolerance = doc.number(solver, "tolerance", "solver.tolerance");
   c.newton.increment_tolerance = doc.number(solver, "increment_tolerance", "solver.increment_tolerance");
   c.newton.max_iterations = doc.integer(solver, "max_iterations", "solver.max_iterations");
@@ -416,7 +421,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   });
   read_dies(doc, c);
   read_contact_pairs(doc, c);
-  const YAML::Node contact = root["contact"] ? root["contact"] : YAML::Node(YAML::NodeType::Map);
+  const YAML::Node contact = section(root, "contact");
   c.contact.penalty = doc.number(contact, "penalty", "contact.penalty");
   c.contact.regularisation = doc.number(contact, "regularisation", "contact.regularisation");
   read_time(doc, c);

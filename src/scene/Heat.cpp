@@ -16,10 +16,8 @@ constexpr double kStefanBoltzmann = 5.670374419e-11;
 
 void element_temperatures(const mesh::TetMesh& mesh, std::span<const double> temperature,
                           std::span<material::PointState> states) {
-  for (int e = 0; e < mesh.tet_count(); ++e) {
-    const mesh::Tet& t = mesh.tets[e];
-    states[e].temperature = 0.25 * (temperature[t[0]] + temperature[t[1]] + temperature[t[2]] + temperature[t[3]]);
-  }
+  for (int e = 0; e < mesh.tet_count(); ++e)
+    states[e].temperature = thermal::element_mean(mesh.tets[e], temperature);
 }
 
 Heat::Heat(const Scene& scene, const RunState& state)
@@ -40,14 +38,8 @@ void Heat::exchanges(const Scene& scene, const RunState& state, const HeatContac
   node_power_.assign(n, 0.0);
   in_contact_.assign(n, 0);
   friction_generated_ = friction_to_dies_ = 0.0;
-  // The exchanging area of each node: a third of its boundary faces off the symmetry planes.
-  area_.assign(n, 0.0);
-  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
-    if (!contacts.symmetry_faces.empty() && contacts.symmetry_faces[f]) continue;
-    const double third = mesh::area_vector(mesh, mesh.boundary_faces[f]).norm() / 3.0;
-    for (int node : mesh.boundary_faces[f])
-      area_[node] += third;
-  }
+  // The exchanging area of each node: its boundary faces off the symmetry planes.
+  area_ = contact::boundary_node_areas(mesh, contacts.symmetry_faces);
   auto solved = [&](int node) { return scene.bodies[body_of_node_[node]].thermal.has_value(); };
   // Without a solution (transfer), what lies within this distance touches, at zero pressure.
   const double touching = 1e-3 * scene.reference_length;
@@ -140,11 +132,10 @@ void Heat::friction_between_bodies(const Scene& scene, const RunState& state, co
 }
 
 thermal::HeatFlows Heat::step(const Scene& scene, const RunState& state, const HeatContacts& contacts,
-                              const fem::ElementFields* fields, double dt, std::vector<double>& temperature,
-                              double& plastic) {
+                              const fem::ElementFields* fields, double dt, std::vector<double>& temperature) {
   exchanges(scene, state, contacts);
   element_power_.assign(state.mesh.tets.size(), 0.0);
-  plastic = 0.0;
+  plastic_ = 0.0;
   if (fields)
     for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
       if (!scene.bodies[b].thermal || scene.bodies[b].law->is_elastic()) continue;
@@ -153,7 +144,7 @@ thermal::HeatFlows Heat::step(const Scene& scene, const RunState& state, const H
         // σ:ε̇ = σ̄ ε̄̇ for a J2 flow law; the mesh has moved by Δt v since, at constant volume.
         element_power_[e] = scene.input.thermal.taylor_quinney * material::von_mises(fields->stress[e]) *
                             fields->rate[e] * mesh::signed_volume(state.mesh, e);
-        plastic += element_power_[e] * dt;
+        plastic_ += element_power_[e] * dt;
       }
     }
   temperature = state.temperature;
@@ -163,12 +154,11 @@ thermal::HeatFlows Heat::step(const Scene& scene, const RunState& state, const H
 
 thermal::HeatFlows Heat::advance(const Scene& scene, RunState& state, const HeatContacts& contacts,
                                  const fem::ElementFields* fields, double dt) {
-  double plastic = 0.0;
   std::vector<double> next;
-  const thermal::HeatFlows flows = step(scene, state, contacts, fields, dt, next, plastic);
+  const thermal::HeatFlows flows = step(scene, state, contacts, fields, dt, next);
   state.temperature = std::move(next);
   HeatBudget& budget = state.heat;
-  budget.plastic += plastic;
+  budget.plastic += plastic_;
   budget.friction += friction_generated_ * dt;
   budget.to_dies += flows.to_dies + friction_to_dies_ * dt;
   budget.to_environment += flows.to_environment;
@@ -178,9 +168,8 @@ thermal::HeatFlows Heat::advance(const Scene& scene, RunState& state, const Heat
 
 std::vector<double> Heat::predict(const Scene& scene, const RunState& state, const HeatContacts& contacts,
                                   const fem::ElementFields& fields, double dt) {
-  double plastic = 0.0;
   std::vector<double> next;
-  step(scene, state, contacts, &fields, dt, next, plastic);
+  step(scene, state, contacts, &fields, dt, next);
   return next;
 }
 

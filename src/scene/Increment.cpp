@@ -187,8 +187,7 @@ IncrementOutcome solve_coupled(const Scene& scene, Discretisation& disc, const R
     }
     double change = 0.0;
     for (int e = 0; e < state.mesh.tet_count(); ++e) {
-      const mesh::Tet& t = state.mesh.tets[e];
-      const double mean = 0.25 * (end[t[0]] + end[t[1]] + end[t[2]] + end[t[3]]);
+      const double mean = thermal::element_mean(state.mesh.tets[e], end);
       change = std::max(change, std::abs(mean - disc.point_states[e].temperature));
       disc.point_states[e].temperature = mean;
     }

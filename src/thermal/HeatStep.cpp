@@ -8,14 +8,6 @@
 #include <string>
 
 namespace anvil::thermal {
-namespace {
-
-double element_temperature(const mesh::Tet& t, std::span<const double> temperature) {
-  return 0.25 * (temperature[t[0]] + temperature[t[1]] + temperature[t[2]] + temperature[t[3]]);
-}
-
-} // namespace
-
 // The capacity term keeps the matrix well conditioned at forging time steps
 // (C/Δt is of the order of the conduction of an element): conjugate
 // gradients with a diagonal preconditioner need a few tens of iterations,
@@ -49,24 +41,22 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
   const int n = mesh.node_count();
   const double dt = in.time_step;
   const NodalMass m = nodal_mass(mesh, materials);
-  solved_.assign(n, 0);
-  for (int i = 0; i < n; ++i)
-    solved_[i] = m.material[i] != nullptr;
+  auto solved = [&](int node) { return m.material[node] != nullptr; };
 
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
   entries_.clear();
   // Entry (row, col) of the matrix; a column of a fixed node goes to the
   // right-hand side with its known temperature. Lower triangle only.
   auto add = [&](int row, int col, double value) {
-    if (!solved_[row]) return;
-    if (!solved_[col]) {
+    if (!solved(row)) return;
+    if (!solved(col)) {
       rhs[row] -= value * temperature[col];
       return;
     }
     if (row >= col) entries_.emplace_back(row, col, value);
   };
   for (int i = 0; i < n; ++i)
-    if (!solved_[i]) {
+    if (!solved(i)) {
       entries_.emplace_back(i, i, 1.0);
       rhs[i] = temperature[i];
     }
@@ -75,7 +65,7 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
     const mesh::Tet& t = mesh.tets[e];
     const mesh::P1Gradients g =
         mesh::p1_gradients(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]);
-    const double k = materials[e]->conductivity.at(element_temperature(t, temperature));
+    const double k = materials[e]->conductivity.at(element_mean(t, temperature));
     const Eigen::Matrix4d ke = k * g.volume * g.grad * g.grad.transpose();
     for (int a = 0; a < 4; ++a)
       for (int b = 0; b < 4; ++b)
@@ -89,14 +79,14 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
     sources += in.element_power[e] * dt;
   }
   for (int i = 0; i < static_cast<int>(in.node_power.size()); ++i)
-    if (solved_[i]) {
+    if (solved(i)) {
       rhs[i] += in.node_power[i];
       sources += in.node_power[i] * dt;
     }
   for (const NodeExchange& x : in.exchanges) {
     const double ha = x.coefficient * x.area;
     add(x.node, x.node, ha);
-    if (solved_[x.node]) rhs[x.node] += ha * x.far_temperature;
+    if (solved(x.node)) rhs[x.node] += ha * x.far_temperature;
   }
   // q = hA cᵀT with c = (1, −N): the matrix takes hA c cᵀ.
   for (const FacetExchange& x : in.facet_contacts) {
@@ -113,27 +103,27 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
   // change of enthalpy exactly. One solve when c is constant (r is linear).
   Solver& s = *solver_;
   for (int i = 0; i < n; ++i) // every solved node's diagonal in the pattern: the capacity goes there
-    if (solved_[i]) entries_.emplace_back(i, i, 0.0);
+    if (solved(i)) entries_.emplace_back(i, i, 0.0);
   s.exchange.resize(n, n);
   s.exchange.setFromTriplets(entries_.begin(), entries_.end());
   bool linear = true;
   for (int i = 0; i < n; ++i)
-    if (solved_[i]) linear = linear && m.material[i]->specific_heat.constant();
+    if (solved(i)) linear = linear && m.material[i]->specific_heat.constant();
   const Eigen::Map<const Eigen::VectorXd> start(temperature.data(), n);
   Eigen::VectorXd next = start;
   HeatFlows flows;
   constexpr int kMostSolves = 20;
+  s.cg.setTolerance(1e-13);
+  s.cg.setMaxIterations(5 * n);
   for (;;) {
     Eigen::VectorXd residual = s.exchange.selfadjointView<Eigen::Lower>() * next - rhs;
     s.matrix = s.exchange;
     for (int i = 0; i < n; ++i)
-      if (solved_[i]) {
+      if (solved(i)) {
         const auto& c = m.material[i]->specific_heat;
         residual[i] += m.mass[i] * c.mean(start[i], next[i]) * (next[i] - start[i]) / dt;
         s.matrix.coeffRef(i, i) += m.mass[i] * c.at(next[i]) / dt;
       }
-    s.cg.setTolerance(1e-13);
-    s.cg.setMaxIterations(5 * n);
     s.cg.compute(s.matrix);
     const Eigen::VectorXd change = s.cg.solve(residual);
     if (s.cg.info() != Eigen::Success)
@@ -146,15 +136,12 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
       throw RunError("heat step: Newton on the enthalpy did not converge in " + std::to_string(kMostSolves) +
                      " solves (a specific-heat table with a jump?)");
   }
-  std::vector<double> c(n, 0.0); // the secant capacities: C ΔT = m ΔH
-  for (int i = 0; i < n; ++i)
-    if (solved_[i]) c[i] = m.mass[i] * m.material[i]->specific_heat.mean(start[i], next[i]);
-
   flows.sources = sources;
-  for (int i = 0; i < n; ++i)
-    if (solved_[i]) flows.stored += c[i] * (next[i] - temperature[i]);
+  for (int i = 0; i < n; ++i) // the secant capacity times ΔT: m ΔH
+    if (solved(i))
+      flows.stored += m.mass[i] * m.material[i]->specific_heat.mean(start[i], next[i]) * (next[i] - start[i]);
   for (const NodeExchange& x : in.exchanges) {
-    if (!solved_[x.node]) continue;
+    if (!solved(x.node)) continue;
     const double heat = x.coefficient * x.area * (next[x.node] - x.far_temperature) * dt;
     (x.sink == Sink::environment ? flows.to_environment : flows.to_dies) += heat;
   }
@@ -163,12 +150,12 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
     const double q =
         x.coefficient * x.area * dt *
         (next[x.node] - x.shape[0] * next[x.facet[0]] - x.shape[1] * next[x.facet[1]] - x.shape[2] * next[x.facet[2]]);
-    if (solved_[x.node]) {
+    if (solved(x.node)) {
       for (int j = 0; j < 3; ++j)
-        if (!solved_[x.facet[j]]) flows.to_dies += q * x.shape[j];
+        if (!solved(x.facet[j])) flows.to_dies += q * x.shape[j];
     } else {
       for (int j = 0; j < 3; ++j)
-        if (solved_[x.facet[j]]) flows.to_dies -= q * x.shape[j];
+        if (solved(x.facet[j])) flows.to_dies -= q * x.shape[j];
     }
   }
   for (int i = 0; i < n; ++i)
@@ -178,7 +165,10 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
 
 double stored_heat(const mesh::TetMesh& mesh, const mesh::MeshRange& range,
                    std::span<const ThermalMaterial* const> materials, std::span<const double> temperature) {
-  const NodalMass m = nodal_mass(mesh, materials);
+  return enthalpy(nodal_mass(mesh, materials), range, temperature);
+}
+
+double enthalpy(const NodalMass& m, const mesh::MeshRange& range, std::span<const double> temperature) {
   double heat = 0.0;
   for (int i = range.first_node; i < range.first_node + range.node_count; ++i)
     if (m.material[i]) heat += m.mass[i] * m.material[i]->specific_heat.integral(temperature[i]);

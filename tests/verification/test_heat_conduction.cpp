@@ -8,6 +8,7 @@
 // under half their length).
 #include "test_common.h"
 
+#include "anvil/contact/RigidContact.h"
 #include "anvil/mesh/generators.h"
 #include "anvil/scene/Case.h"
 #include "anvil/thermal/HeatStep.h"
@@ -172,10 +173,7 @@ TEST_CASE("a small billet cooling in air follows the lumped-capacity curve", "[v
   std::vector<const thermal::ThermalMaterial*> materials(cube.tets.size(), &steel);
   std::vector<double> temperature(cube.nodes.size(), T0);
   std::vector<thermal::NodeExchange> air;
-  std::vector<double> area(cube.nodes.size(), 0.0);
-  for (const mesh::Triangle& f : cube.boundary_faces)
-    for (int node : f)
-      area[node] += mesh::area_vector(cube, f).norm() / 3.0;
+  const std::vector<double> area = contact::boundary_node_areas(cube);
   for (int i = 0; i < cube.node_count(); ++i)
     if (area[i] > 0.0) air.push_back({i, area[i], h, Tf, thermal::Sink::environment});
   const double tau = steel.capacity(T0) * 8.0 / (h * 24.0), dt = 2.0;
@@ -206,10 +204,7 @@ TEST_CASE("a step across the steel's transformation peak of c conserves enthalpy
   mesh::TetMesh cube = mesh::make_box(mesh::Point::Zero(), {2.0, 2.0, 2.0}, {2, 2, 2});
   std::vector<const thermal::ThermalMaterial*> materials(cube.tets.size(), &steel);
   std::vector<double> temperature(cube.nodes.size(), 800.0);
-  std::vector<double> area(cube.nodes.size(), 0.0);
-  for (const mesh::Triangle& f : cube.boundary_faces)
-    for (int node : f)
-      area[node] += mesh::area_vector(cube, f).norm() / 3.0;
+  const std::vector<double> area = contact::boundary_node_areas(cube);
   std::vector<thermal::NodeExchange> quench;
   for (int i = 0; i < cube.node_count(); ++i)
     if (area[i] > 0.0) quench.push_back({i, area[i], 2.0, 20.0, thermal::Sink::environment});

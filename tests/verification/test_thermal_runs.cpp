@@ -15,6 +15,13 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
+/// The heat budget's lines, for a failing check's message.
+std::string budget_text(const scene::HeatBudget& h) {
+  return "plastic " + std::to_string(h.plastic) + " mJ, friction " + std::to_string(h.friction) + ", to dies " +
+         std::to_string(h.to_dies) + ", to air " + std::to_string(h.to_environment) + ", stored " +
+         std::to_string(h.stored);
+}
+
 } // namespace
 
 TEST_CASE("adiabatic homogeneous compression heats the body by beta times the plastic work over rho c",
@@ -92,8 +99,7 @@ TEST_CASE("hot upsetting: the heat budget closes and the dies chill the billet",
   const RunOutputs out = run_case(c, "anvil_hot_upsetting_budget");
   const scene::RunState state = out.final_state();
   const scene::HeatBudget& h = state.heat;
-  INFO("plastic " << h.plastic << " mJ, friction " << h.friction << ", to dies " << h.to_dies << ", to air "
-                  << h.to_environment << ", stored " << h.stored);
+  INFO(budget_text(h));
   CHECK(h.plastic > 0.0);
   CHECK(h.friction > 0.0);
   CHECK(h.to_dies > 0.0);
@@ -118,8 +124,7 @@ TEST_CASE("hot forging between elastic dies: heat and friction heat cross the co
   const RunOutputs out = run_case(c, "anvil_hot_elastic_dies");
   const scene::RunState state = out.final_state();
   const scene::HeatBudget& h = state.heat;
-  INFO("plastic " << h.plastic << " mJ, friction " << h.friction << ", to dies " << h.to_dies << ", to air "
-                  << h.to_environment << ", stored " << h.stored);
+  INFO(budget_text(h));
   CHECK(h.friction > 0.0);
   // The dies are bodies: what they receive is stored, nothing leaves to rigid dies.
   CHECK(h.to_dies == 0.0);

@@ -14,6 +14,7 @@
 #include "anvil/die/DieSurface.h"
 #include "anvil/solver/NodalTerm.h"
 
+#include <span>
 #include <vector>
 
 namespace anvil::contact {
@@ -80,7 +81,8 @@ private:
   std::vector<double> gap_; ///< per candidate, h at the last iterate asked
 };
 
-/// Tributary boundary area of each node (mm²): a third of each adjacent boundary face.
-std::vector<double> boundary_node_areas(const mesh::TetMesh& mesh);
+/// Tributary boundary area of each node (mm²): a third of each adjacent
+/// boundary face, leaving out the faces `skip` marks (empty: none).
+std::vector<double> boundary_node_areas(const mesh::TetMesh& mesh, std::span<const char> skip = {});
 
 } // namespace anvil::contact

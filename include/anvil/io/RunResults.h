@@ -20,6 +20,19 @@ struct LoadRow {
 /// InputError naming file and line when the file is missing or malformed.
 std::vector<LoadRow> read_loads(const std::string& directory, const std::string& surface);
 
+/// The load surfaces of `directory`/loads.csv, in the order of its rows.
+std::vector<std::string> read_load_surfaces(const std::string& directory);
+
+/// One written increment of `directory`/anvil.pvd.
+struct SeriesEntry {
+  int increment = 0;
+  double time = 0.0;              ///< s
+  std::vector<std::string> parts; ///< file of each part, relative to the directory: part 0 the bodies, then the dies
+};
+
+/// Every written increment of `directory`/anvil.pvd, in order. Throws InputError.
+std::vector<SeriesEntry> read_series(const std::string& directory);
+
 /// One row of interface.csv: a node on a body-pair interface.
 struct InterfaceRow {
   std::string pair, body;

@@ -60,10 +60,9 @@ private:
   void exchanges(const Scene& scene, const RunState& state, const HeatContacts& contacts);
   /// The friction heat of the contact pairs into node_power_, split between the two surfaces.
   void friction_between_bodies(const Scene& scene, const RunState& state, const HeatContacts& contacts);
-  /// The step from state.temperature into `temperature`; `plastic`: the plastic heat put in (mJ).
+  /// The step from state.temperature into `temperature`.
   thermal::HeatFlows step(const Scene& scene, const RunState& state, const HeatContacts& contacts,
-                          const fem::ElementFields* fields, double dt, std::vector<double>& temperature,
-                          double& plastic);
+                          const fem::ElementFields* fields, double dt, std::vector<double>& temperature);
 
   std::vector<const thermal::ThermalMaterial*> materials_; ///< per element; null where not solved
   std::vector<int> body_of_node_;
@@ -74,6 +73,7 @@ private:
   std::vector<double> element_power_, node_power_, area_, point_power_;
   std::vector<char> in_contact_;
   double friction_generated_ = 0.0, friction_to_dies_ = 0.0; ///< mW of the step being built
+  double plastic_ = 0.0;                                     ///< mJ of plastic heat the step puts in
 };
 
 /// Per element, the mean of its nodes' temperatures (the flow law's T).

@@ -87,7 +87,6 @@ private:
   struct Solver;
   std::unique_ptr<Solver> solver_;
   std::vector<Eigen::Triplet<double>> entries_;
-  std::vector<char> solved_; ///< per node: its temperature is an unknown
 };
 
 /// The lumped thermal mass of each node: Σ_e ρ_e V_e/4 (1e-6 kg per mm³ of
@@ -98,6 +97,14 @@ struct NodalMass {
   std::vector<const ThermalMaterial*> material;
 };
 NodalMass nodal_mass(const mesh::TetMesh& mesh, std::span<const ThermalMaterial* const> materials);
+
+/// Σ m_i H(T_i) (mJ) over the nodes of `range` with a material: their enthalpy above 0 °C.
+double enthalpy(const NodalMass& m, const mesh::MeshRange& range, std::span<const double> temperature);
+
+/// The mean of a tetrahedron's nodal values: its element's temperature.
+inline double element_mean(const mesh::Tet& t, std::span<const double> nodal) {
+  return 0.25 * (nodal[t[0]] + nodal[t[1]] + nodal[t[2]] + nodal[t[3]]);
+}
 
 /// Σ m_i H(T_i) (mJ) of the nodes of `range`: the enthalpy it stores above 0 °C.
 double stored_heat(const mesh::TetMesh& mesh, const mesh::MeshRange& range,
