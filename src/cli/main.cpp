@@ -2,6 +2,7 @@
 // clear message and exits non-zero (STYLE "Input and errors").
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/core/processes.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Simulation.h"
 #include "anvil/scene/effects.h"
@@ -15,6 +16,7 @@
 #include <exception>
 #include <fcntl.h>
 #include <filesystem>
+#include <optional>
 #include <spawn.h>
 #include <string>
 #include <sys/wait.h>
@@ -116,6 +118,25 @@ void final_picture(const std::string& directory) {
                  directory.c_str());
 }
 
+/// Says what `e` is (when `say`) and returns the exit code that goes with
+/// it: 3 input error, 4 the run stopped, 5 anything else.
+int report(const std::exception& e, bool say) {
+  if (dynamic_cast<const anvil::InputError*>(&e)) {
+    if (say) std::fprintf(stderr, "anvil: input error: %s\n", e.what());
+    return 3;
+  }
+  if (dynamic_cast<const anvil::RunError*>(&e)) {
+    if (say) std::fprintf(stderr, "anvil: run stopped: %s\n", e.what());
+    return 4;
+  }
+  if (say) std::fprintf(stderr, "anvil: internal error: %s\n", e.what());
+  return 5;
+}
+
+/// How long the processes of a run may take to reach its end one after the
+/// other (s): rank 0 writes the last output while the others wait.
+constexpr double kEndTogether = 60.0;
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -175,35 +196,54 @@ int main(int argc, char** argv) {
     }
   }
   if (case_file.empty()) return usage_error("'" + command + "' needs a case file");
-
-  try {
-    const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
-    if (command == "output-dir") {
+  if (command == "output-dir") {
+    try {
+      const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
       std::puts(anvil::scene::output_directory(c, options).c_str());
       return 0;
+    } catch (const std::exception& e) {
+      return report(e, true);
     }
-    int petsc_argc = static_cast<int>(petsc_arguments.size());
-    petsc_arguments.push_back(nullptr);
-    char** petsc_argv = petsc_arguments.data();
-    anvil::solver::PetscSession petsc(petsc_argc, petsc_argv);
-    const anvil::scene::RunEnd end = anvil::scene::run(c, options);
-    if (c.write_picture && c.write_vtk) final_picture(anvil::scene::output_directory(c, options));
-    for (const std::string& unused : anvil::solver::PetscSession::unused_options())
-      std::fprintf(stderr, "anvil: warning: PETSc option %s was not used by the solver of this run (misspelt?)\n",
-                   unused.c_str());
-    if (!end.complete) {
-      std::fprintf(stderr, "anvil: run stopped: %s\n", end.stop.c_str());
-      return 4;
-    }
-    return 0;
-  } catch (const anvil::InputError& e) {
-    std::fprintf(stderr, "anvil: input error: %s\n", e.what());
-    return 3;
-  } catch (const anvil::RunError& e) {
-    std::fprintf(stderr, "anvil: run stopped: %s\n", e.what());
-    return 4;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "anvil: internal error: %s\n", e.what());
-    return 5;
   }
+
+  int petsc_argc = static_cast<int>(petsc_arguments.size());
+  petsc_arguments.push_back(nullptr);
+  char** petsc_argv = petsc_arguments.data();
+  std::optional<anvil::solver::PetscSession> petsc;
+  try {
+    petsc.emplace(petsc_argc, petsc_argv);
+  } catch (const std::exception& e) {
+    return report(e, true);
+  }
+  if (!anvil::processes::root()) anvil::log::set_quiet(true);
+  int code = 0;
+  std::string picture_directory;
+  try {
+    // Every process reads the case and runs the same time loop (DESIGN §2).
+    const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
+    const anvil::scene::RunEnd end = anvil::scene::run(c, options);
+    if (c.write_picture && c.write_vtk) picture_directory = anvil::scene::output_directory(c, options);
+    if (anvil::processes::root())
+      for (const std::string& unused : anvil::solver::PetscSession::unused_options())
+        std::fprintf(stderr, "anvil: warning: PETSc option %s was not used by the solver of this run (misspelt?)\n",
+                     unused.c_str());
+    if (!end.complete) {
+      if (anvil::processes::root()) std::fprintf(stderr, "anvil: run stopped: %s\n", end.stop.c_str());
+      code = 4;
+    }
+  } catch (const std::exception& e) {
+    // An error every process met alike (input, a failed increment, rank 0's
+    // output) is said once; one that left a process alone is said by it,
+    // and the processes still inside the run are stopped.
+    if (!anvil::processes::all_ended(kEndTogether)) {
+      report(e, true);
+      std::fprintf(stderr, "anvil: process %d of %d failed alone; stopping the others\n", anvil::processes::rank(),
+                   anvil::processes::count());
+      anvil::processes::abort_all(report(e, false));
+    }
+    code = report(e, anvil::processes::root());
+  }
+  if (code == 0 && !anvil::processes::all_ended(kEndTogether)) anvil::processes::abort_all(5);
+  if (!picture_directory.empty() && anvil::processes::root()) final_picture(picture_directory);
+  return code;
 }

@@ -331,9 +331,10 @@ double BodyContact::node_pressure(int i, const Eigen::VectorXd& nodal) const {
   return pressure(nodes_[i], nodal);
 }
 
-void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
-                      std::vector<solver::NodeBlock>* blocks) const {
+void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, std::vector<solver::NodeBlock>* blocks,
+                      const std::vector<char>* rows) const {
   const double rho = increment_.penalty;
+  auto computed = [rows](int node) { return !rows || (*rows)[node]; };
   for (std::size_t index = 0; index < multipliers_.size(); ++index) {
     // Normal: ∂Π/∂v_i = λ (Ã/G) c_i with λ = ρ C/G (may be tensile while the set is frozen).
     stress_[index] = active_[index] ? rho * mean_gap_velocity(index, nodal) : 0.0;
@@ -349,6 +350,7 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
         tangential += support_[s].tangential * nodal.segment<3>(kDofsPerNode * support_[s].node);
     for (int s = m.first; s < m.first + m.count; ++s) {
       const Support& a = support_[s];
+      if (!computed(a.node)) continue;
       Eigen::Vector3d r = lambda * area_per_weight * a.normal;
       if (sticking) r += stiffness * a.tangential.transpose() * tangential;
       residual.segment<3>(kDofsPerNode * a.node) += r;
@@ -373,7 +375,7 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     if (!summing) return;
     for (int a = 0; a < 6; ++a)
       for (int b = 0; b < 6; ++b)
-        if (summed_nodes[a] >= 0 && summed_nodes[b] >= 0)
+        if (summed_nodes[a] >= 0 && summed_nodes[b] >= 0 && computed(summed_nodes[a]))
           blocks->push_back({summed_nodes[a], summed_nodes[b], sliding_sum[6 * a + b]});
     summing = false;
   };
@@ -396,7 +398,7 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
     }
     const Eigen::Matrix3d sliding = area * f.d_sliding * tangent_projector;
     for (int a = 0; a < 6; ++a) {
-      if (st.nodes[a] < 0) continue;
+      if (st.nodes[a] < 0 || !computed(st.nodes[a])) continue;
       residual.segment<3>(kDofsPerNode * st.nodes[a]) += st.coefficient[a] * area * f.stress;
       if (!blocks) continue;
       for (int b = 0; b < 6; ++b)

@@ -76,12 +76,12 @@ std::string RigidContact::accept(const Eigen::VectorXd& nodal) {
   return active_.accept(gaps(nodal), "contact nodes");
 }
 
-void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
-                       std::vector<solver::NodeBlock>* blocks) const {
+void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, std::vector<solver::NodeBlock>* blocks,
+                       const std::vector<char>* rows) const {
   const double rho = increment_.penalty;
   for (std::size_t i = 0; i < candidates_.size(); ++i) {
     const ContactCandidate& c = candidates_[i];
-    if (!active_[i]) continue;
+    if (!active_[i] || (rows && !(*rows)[c.node])) continue;
     const double h = gap_velocity(c, nodal);
     const Eigen::Vector3d& n = c.normal;
     const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - n * n.transpose();

@@ -1,5 +1,7 @@
 #include "anvil/core/log.h"
 
+#include "anvil/core/processes.h"
+
 #include <cstdarg>
 
 namespace anvil::log {
@@ -26,6 +28,7 @@ void write(bool to_terminal, const char* format, va_list args) {
 
 void open_file(const std::string& path, bool append) {
   close_file();
+  if (!processes::root()) return; // one log per run: rank 0's
   mirror = std::fopen(path.c_str(), append ? "a" : "w");
 }
 

@@ -1,6 +1,7 @@
 #include "anvil/fem/Assembler.h"
 
 #include "anvil/core/error.h"
+#include "anvil/core/processes.h"
 
 #include <tbb/parallel_for.h>
 
@@ -57,6 +58,14 @@ std::vector<std::vector<ElementChunk>> chunk_colouring(const std::vector<mesh::T
   return colours;
 }
 
+std::vector<mesh::Tet> part_elements(const mesh::TetMesh& mesh, const Partition& partition) {
+  std::vector<mesh::Tet> tets;
+  tets.reserve(partition.elements.size());
+  for (int e : partition.elements)
+    tets.push_back(mesh.tets[e]);
+  return tets;
+}
+
 void sort_unique(std::vector<std::vector<int>>& lists) {
   for (auto& n : lists) {
     std::sort(n.begin(), n.end());
@@ -66,12 +75,12 @@ void sort_unique(std::vector<std::vector<int>>& lists) {
 
 } // namespace
 
-Assembler::Assembler(const mesh::TetMesh& mesh, DofMap dofs)
-    : dofs_(std::move(dofs)), tets_(mesh.tets), colours_(chunk_colouring(mesh.tets, mesh.node_count())),
-      bubble_condensation_(mesh.tets.size()), bad_(mesh.tets.size(), 0), bubble_sq_(mesh.tets.size(), 0.0),
-      element_blocks_(mesh.tets.size()), element_neighbours_(mesh.nodes.size()) {
+Assembler::Assembler(const mesh::TetMesh& mesh, DofMap dofs, const Partition& partition)
+    : dofs_(std::move(dofs)), partition_(partition), tets_(part_elements(mesh, partition)),
+      colours_(chunk_colouring(tets_, mesh.node_count())), bubble_condensation_(tets_.size()), bad_(tets_.size(), 0),
+      bubble_sq_(tets_.size(), 0.0), element_blocks_(tets_.size()), element_neighbours_(mesh.nodes.size()) {
   ANVIL_ASSERT(dofs_.dof_count() == kDofsPerNode * mesh.node_count());
-  for (const mesh::Tet& t : mesh.tets)
+  for (const mesh::Tet& t : tets_)
     for (int a : t)
       for (int b : t)
         element_neighbours_[a].push_back(b);
@@ -113,9 +122,15 @@ void Assembler::build_pattern() {
   tangent_ = Eigen::Map<const SparseMatrix>(rows, rows, static_cast<int>(inner.size()), outer.data(), inner.data(),
                                             zeros.data());
   tangent_.makeCompressed();
+  // A node of no element of this process's part (another part's, coupled by
+  // contact) has no diagonal entry here.
   diagonal_.resize(static_cast<std::size_t>(rows));
-  for (int dof = 0; dof < rows; ++dof)
-    diagonal_[dof] = entry(dof / kDofsPerNode, dof % kDofsPerNode, dof / kDofsPerNode, dof % kDofsPerNode);
+  for (int dof = 0; dof < rows; ++dof) {
+    const int node = dof / kDofsPerNode;
+    diagonal_[dof] = std::binary_search(element_neighbours_[node].begin(), element_neighbours_[node].end(), node)
+                         ? entry(node, dof % kDofsPerNode, node, dof % kDofsPerNode)
+                         : -1;
+  }
   constrained_entries_.clear();
   for (int row = 0; row < rows; ++row)
     for (int k = tangent_.outerIndexPtr()[row]; k < tangent_.outerIndexPtr()[row + 1]; ++k)
@@ -147,16 +162,20 @@ void Assembler::finish_tangent() {
   double* values = tangent_.valuePtr();
   for (int k : constrained_entries_)
     values[k] = 0.0;
+  // Each part's diagonal entries of a kind have one sign (K's are positive,
+  // −C's negative), so the sum of their magnitudes over the processes is
+  // that of the summed diagonal.
   double sum[2] = {0.0, 0.0};
   int count[2] = {0, 0};
   for (int dof = 0; dof < dofs_.dof_count(); ++dof) {
     if (dofs_.prescribed(dof)) continue;
     const int kind = dof % kDofsPerNode == 3;
-    sum[kind] += std::abs(tangent_.valuePtr()[diagonal_[dof]]);
+    if (diagonal_[dof] >= 0) sum[kind] += std::abs(tangent_.valuePtr()[diagonal_[dof]]);
     ++count[kind];
   }
+  processes::sum(sum);
   for (int dof = 0; dof < dofs_.dof_count(); ++dof) {
-    if (!dofs_.prescribed(dof)) continue;
+    if (!dofs_.prescribed(dof) || !partition_.owns(dof / kDofsPerNode)) continue;
     const int kind = dof % kDofsPerNode == 3;
     tangent_.valuePtr()[diagonal_[dof]] = count[kind] > 0 && sum[kind] > 0.0 ? sum[kind] / count[kind] : 1.0;
   }
@@ -166,9 +185,12 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
                                    const std::vector<material::PointState>& states, const BodyUnknowns& unknowns,
                                    const Eigen::VectorXd& nodal_forces, const BodyForce& body_force,
                                    bool with_tangent) {
-  ANVIL_ASSERT(mesh.tets.size() == tets_.size());
+  ANVIL_ASSERT(mesh.tets.size() == partition_.number.size() || !partition_.distributed());
   AssemblyResult result;
   result.residual = -nodal_forces;
+  if (partition_.distributed()) // the external forces once: on the process owning the node
+    for (int node = 0; node < mesh.node_count(); ++node)
+      if (!partition_.owns(node)) result.residual.segment<kDofsPerNode>(kDofsPerNode * node).setZero();
   if (with_tangent) {
     std::fill(tangent_.valuePtr(), tangent_.valuePtr() + tangent_.nonZeros(), 0.0);
     pressure_mass_.setZero(mesh.node_count());
@@ -180,7 +202,8 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
       MiniElementInput in;
       MiniElementSystem system;
       for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk)
-        for (int e = colour[chunk].first; e < colour[chunk].end; ++e) {
+        for (int k = colour[chunk].first; k < colour[chunk].end; ++k) {
+          const int e = partition_.elements[k];
           const mesh::Tet& t = mesh.tets[e];
           for (int a = 0; a < 4; ++a) {
             in.vertices[a] = mesh.nodes[t[a]];
@@ -190,13 +213,13 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
           in.bubble_velocity = unknowns.bubble.segment<3>(3 * e);
           in.state = states.empty() ? material::PointState{} : states[e];
           if (!mini_element(in, *laws[e], with_tangent, body_force, system)) {
-            bad_[e] = 1;
-            bubble_sq_[e] = 0.0;
+            bad_[k] = 1;
+            bubble_sq_[k] = 0.0;
             continue;
           }
-          bubble_sq_[e] = system.bubble_residual_sq;
-          bubble_condensation_[e].leftCols<16>() = system.bubble_gain;
-          bubble_condensation_[e].col(16) = system.bubble_residual_solved;
+          bubble_sq_[k] = system.bubble_residual_sq;
+          bubble_condensation_[k].leftCols<16>() = system.bubble_gain;
+          bubble_condensation_[k].col(16) = system.bubble_residual_solved;
           for (int a = 0; a < 4; ++a)
             result.residual.segment<4>(kDofsPerNode * t[a]) += system.residual.segment<4>(4 * a);
           if (!with_tangent) continue;
@@ -204,7 +227,7 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
             for (int a = 0; a < 4; ++a)
               pressure_mass_[t[a]] += 0.25 * system.volume / system.viscosity;
           // Every entry, prescribed ones too: finish_tangent() takes those out.
-          const std::array<int, 16>& blocks = element_blocks_[e];
+          const std::array<int, 16>& blocks = element_blocks_[k];
           for (int b = 0; b < 4; ++b) {
             const int row_length = kDofsPerNode * static_cast<int>(neighbours_[t[b]].size());
             for (int a = 0; a < 4; ++a) {
@@ -217,25 +240,39 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
         }
     });
   }
-  for (std::size_t e = 0; e < bad_.size(); ++e) {
-    if (bad_[e] && result.bad_element < 0) result.bad_element = static_cast<int>(e);
-    result.bubble_residual_sq += bubble_sq_[e];
+  for (std::size_t k = 0; k < bad_.size(); ++k) {
+    if (bad_[k] && result.bad_element < 0) result.bad_element = partition_.elements[k];
+    result.bubble_residual_sq += bubble_sq_[k];
+  }
+  if (partition_.distributed()) {
+    const int none = mesh.tet_count();
+    const int bad = processes::minimum(result.bad_element < 0 ? none : result.bad_element);
+    result.bad_element = bad == none ? -1 : bad;
+    processes::sum(std::span(&result.bubble_residual_sq, 1));
+    processes::sum({result.residual.data(), static_cast<std::size_t>(result.residual.size())});
+    if (with_tangent) processes::sum({pressure_mass_.data(), static_cast<std::size_t>(pressure_mass_.size())});
   }
   return result;
 }
 
 void Assembler::bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorXd& delta,
                                  Eigen::VectorXd& bubble_delta) const {
-  bubble_delta.resize(3 * mesh.tet_count());
-  tbb::parallel_for(tbb::blocked_range<int>(0, mesh.tet_count(), 256), [&](const auto& range) {
+  if (partition_.distributed())
+    bubble_delta.setZero(3 * mesh.tet_count()); // other parts' elements: summed in below
+  else
+    bubble_delta.resize(3 * mesh.tet_count());
+  tbb::parallel_for(tbb::blocked_range<int>(0, static_cast<int>(tets_.size()), 256), [&](const auto& range) {
     Vec16 local;
-    for (int e = range.begin(); e != range.end(); ++e) {
+    for (int k = range.begin(); k != range.end(); ++k) {
+      const int e = partition_.elements[k];
       for (int a = 0; a < 4; ++a)
         local.segment<4>(4 * a) = delta.segment<4>(kDofsPerNode * mesh.tets[e][a]);
-      const auto& c = bubble_condensation_[e];
+      const auto& c = bubble_condensation_[k];
       bubble_delta.segment<3>(3 * e) = -(c.col(16) + c.leftCols<16>() * local);
     }
   });
+  if (partition_.distributed())
+    processes::sum({bubble_delta.data(), static_cast<std::size_t>(bubble_delta.size())});
 }
 
 } // namespace anvil::fem

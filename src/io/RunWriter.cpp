@@ -2,6 +2,7 @@
 
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/core/processes.h"
 #include "anvil/fem/element_fields.h"
 #include "anvil/io/JsonWriter.h"
 #include "anvil/io/atomic_file.h"
@@ -33,12 +34,17 @@ void put_load_rows(std::ostream& out, const scene::Scene& scene, const std::vect
 RunWriter::RunWriter(std::string directory, const scene::RunState& state, bool resume)
     : directory_(std::move(directory)), series_(directory_, "anvil") {
   if (!resume) return;
-  series_.resume(state.outputs, state.time);
+  processes::on_root([&] { series_.resume(state.outputs, state.time); });
   last_vtk_ = last_checkpoint_ = state.increment;
 }
 
 bool RunWriter::write(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state, bool force,
                       Timers& timers) {
+  return processes::on_root_answer([&] { return write_due(scene, disc, state, force, timers); });
+}
+
+bool RunWriter::write_due(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state,
+                          bool force, Timers& timers) {
   {
     Timers::Scope scope(timers, "output");
     write_loads(scene, state);

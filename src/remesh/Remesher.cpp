@@ -1,6 +1,7 @@
 #include "anvil/remesh/Remesher.h"
 
 #include "anvil/core/log.h"
+#include "anvil/core/processes.h"
 #include "anvil/mesh/TetMesh.h"
 #include "anvil/remesh/die_feature_depth.h"
 #include "anvil/remesh/field_transfer.h"
@@ -272,7 +273,9 @@ void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const R
   const bool check = scene.input.remeshing.check_load && !scene.surfaces.empty();
   const double old_mesh = check ? next_increment_load(scene, state, next, 1, timers) : 0.0;
   const std::size_t first_record = state.remeshes.size();
-  remesh_bodies(scene, state, due, touching_die, rate, timers);
+  // Several processes: rank 0 remeshes, the others take its new mesh and fields.
+  processes::on_root([&] { remesh_bodies(scene, state, due, touching_die, rate, timers); });
+  scene::share_state(state);
   if (!check) return;
   // Twice on the new mesh: friction takes σ₀ from the strain rates of the
   // solution before, at first the interpolated velocity; the second solve

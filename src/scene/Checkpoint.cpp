@@ -12,6 +12,7 @@
 // (8: the heat budget and the transfer time done; both absent before they
 // were kept), scalar attributes on the root group.
 #include "anvil/core/error.h"
+#include "anvil/core/processes.h"
 #include "anvil/io/atomic_file.h"
 #include "anvil/mesh/TetMesh.h"
 #include "anvil/scene/RunState.h"
@@ -246,11 +247,9 @@ void write_checkpoint(const std::string& path, const RunState& s, const std::vec
   io::write_file_atomically(path, checkpoint_image(s, fingerprint));
 }
 
-RunState read_checkpoint(const std::string& path) {
-  silence_hdf5();
-  if (!std::filesystem::exists(path)) throw InputError(path + ": no checkpoint to resume from");
-  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!file.valid()) throw InputError(path + ": not a readable HDF5 checkpoint (damaged, or not a checkpoint)");
+namespace {
+/// The state in the open checkpoint `file`; `path` names it in messages.
+RunState read_state(hid_t file, const std::string& path) {
   RunState s;
   int format = 0;
   read_attribute(file, path, "format", H5T_NATIVE_INT, &format);
@@ -381,6 +380,33 @@ RunState read_checkpoint(const std::string& path) {
       end.first_face != static_cast<int>(s.mesh.boundary_faces.size()))
     throw InputError(path + ": checkpoint body ranges do not cover the mesh");
   return s;
+}
+} // namespace
+
+RunState read_checkpoint(const std::string& path) {
+  silence_hdf5();
+  if (!std::filesystem::exists(path)) throw InputError(path + ": no checkpoint to resume from");
+  Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!file.valid()) throw InputError(path + ": not a readable HDF5 checkpoint (damaged, or not a checkpoint)");
+  return read_state(file, path);
+}
+
+void share_state(RunState& state) {
+  if (processes::count() == 1) return;
+  silence_hdf5();
+  std::string image = processes::root() ? checkpoint_image(state, {}) : std::string();
+  processes::broadcast(image);
+  std::vector<double> inside_dies = state.inside_dies; // measured, not in a checkpoint
+  inside_dies.resize(state.bodies.size());
+  processes::broadcast(inside_dies);
+  if (processes::root()) return;
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (H5Pset_fapl_core(access, 1 << 16, false) < 0 || H5Pset_file_image(access, image.data(), image.size()) < 0)
+    throw RunError("cannot read the state rank 0 sent (HDF5 image)");
+  Handle file(H5Fopen("state from rank 0", H5F_ACC_RDONLY, access), H5Fclose);
+  if (!file.valid()) throw RunError("cannot read the state rank 0 sent (HDF5 image)");
+  state = read_state(file, "the state rank 0 sent");
+  state.inside_dies = std::move(inside_dies);
 }
 
 std::vector<std::string> read_checkpoint_fingerprint(const std::string& path) {

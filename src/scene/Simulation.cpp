@@ -6,6 +6,7 @@
 #include "anvil/core/Timers.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/core/processes.h"
 #include "anvil/io/RunWriter.h"
 #include "anvil/io/load_plot.h"
 #include "anvil/remesh/Remesher.h"
@@ -101,10 +102,10 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
   const int free = disc.solver->free_count();
   log::info("unknowns: %d (velocity and pressure, after %d prescribed)", free,
             static_cast<int>(disc.imposed.prescribed.size()) - free);
-  log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d threads",
+  log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d process%s x %d threads",
             solver::to_string(disc.solver->linear_solver().kind()).c_str(),
             solver::to_string(c.linear_solver.kind).c_str(), c.newton.tolerance, c.newton.increment_tolerance,
-            tbb::info::default_concurrency());
+            processes::count(), processes::count() > 1 ? "es" : "", tbb::info::default_concurrency());
   if (c.time.enabled) {
     const TimeSpec& t = c.time;
     log::info(
@@ -150,16 +151,18 @@ void log_progress(const Scene& scene, const Discretisation& disc, const RunState
 void finish(const Scene& scene, const Discretisation& disc, RunState& state, io::RunWriter& writer,
             const solver::NewtonReport& last, Timers& timers, Clock::time_point start) {
   writer.write(scene, disc, state, true, timers);
-  if (scene.input.time.enabled) {
-    std::vector<std::string> surfaces;
-    for (const LoadSurface& s : scene.surfaces)
-      surfaces.push_back(s.name);
-    const std::string title = std::filesystem::path(scene.input.path).stem().string();
-    if (const std::string why = io::write_load_plot(writer.directory(), title, surfaces, state.loads); !why.empty())
-      log::info("loads.png not written: %s", why.c_str());
-  }
   const double total = seconds_since(start);
-  writer.write_summary(scene, disc, state, last, timers, total);
+  processes::on_root([&] {
+    if (scene.input.time.enabled) {
+      std::vector<std::string> surfaces;
+      for (const LoadSurface& s : scene.surfaces)
+        surfaces.push_back(s.name);
+      const std::string title = std::filesystem::path(scene.input.path).stem().string();
+      if (const std::string why = io::write_load_plot(writer.directory(), title, surfaces, state.loads); !why.empty())
+        log::info("loads.png not written: %s", why.c_str());
+    }
+    writer.write_summary(scene, disc, state, last, timers, total);
+  });
   log::info("done in %.2f s (search %.2f s, assembly %.2f s, contact %.2f s, solver setup %.2f s, solve %.2f s, "
             "update %.2f s, output %.2f s, checkpoint %.2f s); results in %s/",
             total, timers.seconds("search"), timers.seconds("assembly"), timers.seconds("contact"),
@@ -232,7 +235,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
   } else {
     state = initial_state(scene);
   }
-  prepare_output_folder(out);
+  processes::on_root([&] { prepare_output_folder(out); });
   log::open_file(out + "/anvil.log", options.resume);
   Discretisation disc = discretise(scene, state, timers);
   log_header(scene, disc, state, options);

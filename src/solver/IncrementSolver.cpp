@@ -2,6 +2,7 @@
 
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/core/processes.h"
 #include "anvil/mesh/TetMesh.h"
 
 #include <algorithm>
@@ -54,8 +55,14 @@ double max_velocity(const Eigen::VectorXd& nodal) {
 
 IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed,
                                  const LinearSolverSettings& linear, Timers& timers)
-    : assembler_(mesh, fem::DofMap(std::move(prescribed))), linear_solver_(linear, assembler_.dofs().free_count()),
-      timers_(timers) {}
+    : partition_(fem::partition_mesh(mesh, processes::count(), processes::rank())),
+      assembler_(mesh, fem::DofMap(std::move(prescribed)), partition_),
+      linear_solver_(linear, assembler_.dofs().free_count(), partition_), timers_(timers) {
+  if (!partition_.distributed()) return;
+  owned_nodes_.resize(mesh.nodes.size());
+  for (int node = 0; node < mesh.node_count(); ++node)
+    owned_nodes_[node] = partition_.owns(node);
+}
 
 IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns) {
   const fem::DofMap& dofs = assembler_.dofs();
@@ -72,8 +79,10 @@ IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem
     Timers::Scope scope(timers_, "contact");
     nodal_term_residual_.setZero(residual_.size());
     blocks_.clear();
+    const std::vector<char>* rows = owned_nodes_.empty() ? nullptr : &owned_nodes_;
     for (NodalTerm* term : problem.nodal_terms)
-      term->add(unknowns.nodal, nodal_term_residual_, &blocks_);
+      term->add(unknowns.nodal, nodal_term_residual_, &blocks_, rows);
+    processes::sum({nodal_term_residual_.data(), static_cast<std::size_t>(nodal_term_residual_.size())});
     residual_ += nodal_term_residual_;
     for (const NodeBlock& b : blocks_)
       assembler_.add_velocity_block(b.row_node, b.col_node, b.tangent);

@@ -28,7 +28,9 @@ int ml_initial_seed() {
 } // namespace
 
 struct KrylovSolver::Impl {
+  Impl(SchurApproximation s, const fem::Partition& p) : schur(s), partition(p), matrix(p), rhs(p), solution(p) {}
   SchurApproximation schur;
+  const fem::Partition& partition;
   petsc::BfbtSchur bfbt;
   petsc::MatrixView matrix;
   petsc::VectorSlot rhs, solution;
@@ -50,20 +52,23 @@ struct KrylovSolver::Impl {
     VecDestroy(&coordinates);
   }
 
-  /// KSP, splits and the vectors of a new matrix of `nodes` nodes.
-  void create(int nodes) {
+  /// KSP, splits and the vectors of a new matrix: this process's rows.
+  void create() {
     destroy();
     set_up = false;
+    const int nodes = partition.owned_count(), first = partition.first;
     std::vector<PetscInt> velocity_dofs(3 * static_cast<std::size_t>(nodes));
     for (int i = 0; i < nodes; ++i)
       for (int c = 0; c < 3; ++c)
-        velocity_dofs[3 * static_cast<std::size_t>(i) + c] = fem::kDofsPerNode * i + c;
+        velocity_dofs[3 * static_cast<std::size_t>(i) + c] = fem::kDofsPerNode * (first + i) + c;
     check(ISCreateGeneral(PETSC_COMM_WORLD, 3 * nodes, velocity_dofs.data(), PETSC_COPY_VALUES, &velocity),
           "creating the velocity split");
     check(ISSetBlockSize(velocity, 3), "creating the velocity split"); // x, y, z of a node: one AMG block
-    check(ISCreateStride(PETSC_COMM_WORLD, nodes, 3, fem::kDofsPerNode, &pressure), "creating the pressure split");
-    check(VecCreateSeq(PETSC_COMM_WORLD, nodes, &pressure_mass), "creating a vector");
-    check(VecCreateSeq(PETSC_COMM_WORLD, 3 * nodes, &coordinates), "creating a vector");
+    check(ISCreateStride(PETSC_COMM_WORLD, nodes, fem::kDofsPerNode * first + 3, fem::kDofsPerNode, &pressure),
+          "creating the pressure split");
+    const PetscInt all = static_cast<PetscInt>(partition.node.size());
+    check(VecCreateMPI(PETSC_COMM_WORLD, nodes, all, &pressure_mass), "creating a vector");
+    check(VecCreateMPI(PETSC_COMM_WORLD, 3 * nodes, 3 * all, &coordinates), "creating a vector");
     check(VecSetBlockSize(coordinates, 3), "creating a vector");
 
     // Nested solvers read their options when the preconditioner is set up:
@@ -140,9 +145,9 @@ struct KrylovSolver::Impl {
   void set_rigid_body_modes(std::span<const mesh::Point> nodes) {
     PetscScalar* x = nullptr;
     check(VecGetArray(coordinates, &x), "setting the rigid-body modes");
-    for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (int i = 0; i < partition.owned_count(); ++i)
       for (int c = 0; c < 3; ++c)
-        x[3 * i + c] = nodes[i][c];
+        x[3 * i + c] = nodes[partition.node[partition.first + i]][c];
     check(VecRestoreArray(coordinates, &x), "setting the rigid-body modes");
     MatNullSpace modes = nullptr;
     check(MatNullSpaceCreateRigidBody(coordinates, &modes), "setting the rigid-body modes");
@@ -165,15 +170,14 @@ struct KrylovSolver::Impl {
   }
 };
 
-KrylovSolver::KrylovSolver(SchurApproximation schur) : impl_(std::make_unique<Impl>()) {
-  impl_->schur = schur;
-}
+KrylovSolver::KrylovSolver(SchurApproximation schur, const fem::Partition& partition)
+    : impl_(std::make_unique<Impl>(schur, partition)) {}
 KrylovSolver::~KrylovSolver() = default;
 
 void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse) {
   Impl& s = *impl_;
   const bool fresh = s.matrix.wrap(a);
-  if (fresh) s.create(static_cast<int>(a.rows() / fem::kDofsPerNode));
+  if (fresh) s.create();
   Mat m = s.matrix.mat();
   if (reuse && !fresh) {
     check(KSPSetReusePreconditioner(s.ksp, PETSC_TRUE), "reusing the preconditioner");
@@ -188,8 +192,8 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
           "building the Schur-complement preconditioner");
     PetscScalar* mass = nullptr;
     check(VecGetArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
-    for (long i = 0; i < data.pressure_mass.size(); ++i)
-      mass[i] = -data.pressure_mass[i];
+    for (int i = 0; i < s.partition.owned_count(); ++i)
+      mass[i] = -data.pressure_mass[s.partition.node[s.partition.first + i]];
     check(VecRestoreArray(s.pressure_mass, &mass), "building the Schur-complement preconditioner");
     check(MatDiagonalSet(s.schur_preconditioner, s.pressure_mass, ADD_VALUES),
           "building the Schur-complement preconditioner");
@@ -219,8 +223,8 @@ KrylovOutcome KrylovSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, 
     check(KSPSetTolerances(s.ksp, relative_tolerance, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT),
           "setting the Krylov tolerance");
   x.setZero(b.size());
-  petsc::VectorSlot::Placed rhs(s.rhs, b), solution(s.solution, x);
-  check(KSPSolve(s.ksp, rhs.vec(), solution.vec()), "solving the linear system");
+  check(KSPSolve(s.ksp, s.rhs.in(b), s.solution.in(x)), "solving the linear system");
+  s.solution.out(x);
   KrylovOutcome out;
   PetscInt iterations = 0;
   check(KSPGetIterationNumber(s.ksp, &iterations), "reading the Krylov iterations");

@@ -75,17 +75,20 @@ LinearSolverKind resolve(LinearSolverKind kind, int unknowns) {
   return unknowns > kDirectSolverLimit ? LinearSolverKind::fgmres : LinearSolverKind::mumps;
 }
 
-LinearSolver::LinearSolver(const LinearSolverSettings& settings, int unknowns)
-    : settings_(settings), unknowns_(unknowns) {
+LinearSolver::LinearSolver(const LinearSolverSettings& settings, int unknowns, const fem::Partition& partition)
+    : settings_(settings), unknowns_(unknowns), partition_(partition) {
   restart();
+  if (partition_.distributed() && kind_ != LinearSolverKind::fgmres && kind_ != LinearSolverKind::mumps)
+    throw InputError("solver.linear_solver '" + to_string(kind_) + "' runs on one process; with " +
+                     std::to_string(partition_.processes) + " processes (mpirun) choose auto, fgmres or mumps");
 }
 LinearSolver::~LinearSolver() = default;
 
 void LinearSolver::restart() {
   kind_ = resolve(settings_.kind, unknowns_);
   backend_ = std::make_unique<Backend>();
-  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings_.schur);
-  if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace();
+  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings_.schur, partition_);
+  if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace(partition_);
   backend_->minres.setMaxIterations(20000);
   analysed_ = false;
   setup_rate_ = 0.0;
@@ -189,7 +192,7 @@ bool LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double 
               "MUMPS (direct) takes over for the rest of this mesh",
               k.iterations, k.reason.c_str(), k.reduction, relative_tolerance);
     b.krylov.reset();
-    b.mumps.emplace();
+    b.mumps.emplace(partition_);
     kind_ = LinearSolverKind::mumps;
     ++setups_;
     if (!b.mumps->factorize(*matrix_)) return false;

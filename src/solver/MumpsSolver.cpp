@@ -10,6 +10,7 @@ namespace anvil::solver {
 using petsc::check;
 
 struct MumpsSolver::Impl {
+  explicit Impl(const fem::Partition& p) : matrix(p), rhs(p), solution(p) {}
   petsc::MatrixView matrix;
   petsc::VectorSlot rhs, solution;
   KSP ksp = nullptr;
@@ -17,7 +18,7 @@ struct MumpsSolver::Impl {
   ~Impl() { KSPDestroy(&ksp); }
 };
 
-MumpsSolver::MumpsSolver() : impl_(std::make_unique<Impl>()) {}
+MumpsSolver::MumpsSolver(const fem::Partition& partition) : impl_(std::make_unique<Impl>(partition)) {}
 MumpsSolver::~MumpsSolver() = default;
 
 bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
@@ -55,8 +56,8 @@ bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
 void MumpsSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   Impl& s = *impl_;
   x.setZero(b.size());
-  petsc::VectorSlot::Placed rhs(s.rhs, b), solution(s.solution, x);
-  check(KSPSolve(s.ksp, rhs.vec(), solution.vec()), "solving with the MUMPS factors");
+  check(KSPSolve(s.ksp, s.rhs.in(b), s.solution.in(x)), "solving with the MUMPS factors");
+  s.solution.out(x);
 }
 
 } // namespace anvil::solver

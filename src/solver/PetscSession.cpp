@@ -54,14 +54,6 @@ PetscSession::PetscSession(int& argc, char**& argv) {
   PetscPushErrorHandler(keep_message, nullptr);
   PetscPopSignalHandler();                  // a crash stays a crash with its own signal, not a PETSc banner
   set_default_option("-options_left", "0"); // unused options are reported by unused_options(), in our words
-  PetscMPIInt size = 1;
-  MPI_Comm_size(PETSC_COMM_WORLD, &size);
-  if (size > 1) { // the matrices are single-process ones (MatCreateSeqAIJWithArrays) until the mesh is distributed
-    g_active = false;
-    PetscFinalize();
-    throw RunError("anvil runs on one process; started on " + std::to_string(size) +
-                   " (mpirun -n 1, or no mpirun at all)");
-  }
 }
 
 PetscSession::~PetscSession() {

@@ -124,8 +124,8 @@ public:
   void search(const mesh::TetMesh& mesh, double search_distance);
   void set_increment(const ContactIncrement& increment);
 
-  void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual,
-           std::vector<solver::NodeBlock>* blocks) const override;
+  void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, std::vector<solver::NodeBlock>* blocks,
+           const std::vector<char>* rows = nullptr) const override;
   void start(const Eigen::VectorXd& nodal) override;
   std::string accept(const Eigen::VectorXd& nodal) override;
   bool consistent(const Eigen::VectorXd& nodal) override;

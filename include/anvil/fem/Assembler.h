@@ -9,9 +9,13 @@
 // assembly write the values in place, colour by colour with TBB, each chunk
 // in element order, so the result does not depend on the thread count.
 // Prescribed dofs are decoupled rows and columns with a scaled identity on
-// the diagonal (DofMap).
+// the diagonal (DofMap). With several processes (Partition) each assembles
+// the elements of its part: its matrix holds their entries only (the
+// distributed matrix sums them), while the residual, the pressure mass and
+// the bubble data it returns are the whole system's, summed over processes.
 #pragma once
 #include "anvil/fem/DofMap.h"
+#include "anvil/fem/Partition.h"
 #include "anvil/fem/mini_element.h"
 
 #include <Eigen/Sparse>
@@ -47,9 +51,10 @@ struct AssemblyResult {
 
 class Assembler {
 public:
-  /// The pattern of `mesh`'s elements (its nodes may move, its elements not)
-  /// over the dofs of `dofs`.
-  Assembler(const mesh::TetMesh& mesh, DofMap dofs);
+  /// The pattern of `mesh`'s elements of this process's part (its nodes may
+  /// move, its elements not) over the dofs of `dofs`; `partition` must
+  /// outlive the assembler.
+  Assembler(const mesh::TetMesh& mesh, DofMap dofs, const Partition& partition);
 
   /// Residual R = internal − external (external = `nodal_forces`, 4 × nodes,
   /// e.g. tractions) and, when `with_tangent`, the condensed tangent (tangent())
@@ -65,8 +70,9 @@ public:
   /// static condensation: Δb = −K_bb⁻¹ (r_b + K_bl Δv + G_b Δp)).
   void bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorXd& delta, Eigen::VectorXd& bubble_delta) const;
 
-  /// The tangent of the last assemble() with a tangent; its storage stays in
-  /// place until the pattern changes (set_couplings() returns true).
+  /// The tangent of the last assemble() with a tangent (this process's
+  /// elements); its storage stays in place until the pattern changes
+  /// (set_couplings() returns true).
   const SparseMatrix& tangent() const { return tangent_; }
   /// Lumped pressure mass over viscosity, Σ_e V_e / (4 η_e) per node
   /// (mm³/(MPa·s)): the viscosity-scaled mass matrix that approximates the
@@ -84,9 +90,10 @@ public:
   /// Decouples the prescribed dofs (after every contribution is added): their
   /// rows and columns are cleared and their diagonal is the mean free
   /// diagonal of the velocity rows, or of the pressure rows, so the rows are
-  /// neither tiny nor huge for a solver.
+  /// neither tiny nor huge for a solver (put in by the process owning the row).
   void finish_tangent();
   const DofMap& dofs() const { return dofs_; }
+  const Partition& partition() const { return partition_; }
 
 private:
   void build_pattern();
@@ -95,11 +102,12 @@ private:
   int entry(int row_node, int d, int col_node, int c) const;
 
   DofMap dofs_;
-  std::vector<mesh::Tet> tets_; ///< the elements the pattern is built on
+  const Partition& partition_;
+  std::vector<mesh::Tet> tets_; ///< the elements the pattern is built on: partition_.elements
   SparseMatrix tangent_;
   Eigen::VectorXd pressure_mass_;
-  std::vector<std::vector<ElementChunk>> colours_; ///< the chunks of each colour
-  /// Per element: K_bb⁻¹ [K_bl G_b] (3×16) and K_bb⁻¹ r_b (3).
+  std::vector<std::vector<ElementChunk>> colours_; ///< the chunks of each colour (positions in tets_)
+  /// Per element of tets_: K_bb⁻¹ [K_bl G_b] (3×16) and K_bb⁻¹ r_b (3).
   std::vector<Eigen::Matrix<double, 3, 17>> bubble_condensation_;
   /// Per element, from the last assemble(): inverted/flat flag and |r_b|²
   /// (kept per element so the sums are in a fixed order, whatever the threads).
@@ -111,7 +119,7 @@ private:
   std::vector<std::vector<int>> element_neighbours_; ///< per node, the nodes it shares an element with (sorted)
   std::vector<std::vector<int>> neighbours_;         ///< the same with the contact couplings: the pattern
   std::vector<std::pair<int, int>> couplings_;       ///< the contact couplings in the pattern
-  std::vector<int> diagonal_;                        ///< per dof, the index of its diagonal entry
+  std::vector<int> diagonal_;                        ///< per dof, the index of its diagonal entry (−1: no entry)
   std::vector<int> constrained_entries_;             ///< entries in a prescribed row or column
 };
 

@@ -1,6 +1,7 @@
 // What a run writes to its output folder (DESIGN §7): the VTK series
 // (anvil.pvd), loads.csv (appended each increment), interface.csv (body
-// pairs), checkpoint.h5 and summary.json.
+// pairs), checkpoint.h5 and summary.json. With several processes rank 0
+// alone writes; the others take its answers and its errors.
 #pragma once
 #include "anvil/core/Timers.h"
 #include "anvil/io/VtkSeries.h"
@@ -34,6 +35,8 @@ public:
   const std::string& directory() const { return directory_; }
 
 private:
+  bool write_due(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state, bool force,
+                 Timers& timers);
   void write_loads(const scene::Scene& scene, const scene::RunState& state);
   void write_vtk(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state);
   void write_interface(const scene::Scene& scene, const scene::Discretisation& disc,

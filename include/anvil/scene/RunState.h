@@ -126,6 +126,9 @@ void write_checkpoint(const std::string& path, const RunState& state, const std:
 /// size against its mesh and every number for finiteness. Throws InputError
 /// naming the dataset and record.
 RunState read_checkpoint(const std::string& path);
+/// Several processes (mpirun): every process takes rank 0's `state`, sent
+/// as a checkpoint's bytes (after a remesh that rank 0 alone ran). Throws RunError.
+void share_state(RunState& state);
 /// The case fingerprint a checkpoint was written with; empty for checkpoints
 /// written before anvil kept it. Throws InputError.
 std::vector<std::string> read_checkpoint_fingerprint(const std::string& path);

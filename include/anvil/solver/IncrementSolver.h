@@ -61,7 +61,8 @@ class IncrementSolver {
 public:
   /// For the elements of `mesh` (the problems it solves carry the mesh, its
   /// nodes where the increment starts); `prescribed` marks dofs (4 × nodes,
-  /// see DofMap) whose values are imposed.
+  /// see DofMap) whose values are imposed. The processes of a run share the
+  /// mesh's system (fem::Partition); every one of them returns the same unknowns.
   IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed, const LinearSolverSettings& linear,
                   Timers& timers);
 
@@ -96,6 +97,8 @@ private:
   /// norm and the applied load norm.
   double force_scale(const IncrementProblem& problem) const;
 
+  fem::Partition partition_;
+  std::vector<char> owned_nodes_; ///< per node, 1 when this process owns its rows; empty on one process
   fem::Assembler assembler_;
   LinearSolver linear_solver_;
   Timers& timers_;

@@ -42,7 +42,8 @@ struct KrylovOutcome {
 
 class KrylovSolver {
 public:
-  explicit KrylovSolver(SchurApproximation schur);
+  /// On the rows of `partition` (which must outlive the solver).
+  KrylovSolver(SchurApproximation schur, const fem::Partition& partition);
   ~KrylovSolver();
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;

@@ -52,8 +52,10 @@ struct LinearSolverSettings {
 
 class LinearSolver {
 public:
-  /// `unknowns`: the problem's unknowns, for `automatic`.
-  LinearSolver(const LinearSolverSettings& settings, int unknowns);
+  /// `unknowns`: the problem's unknowns, for `automatic`; `partition`: the
+  /// rows of each process (must outlive the solver). Several processes
+  /// solve with fgmres or mumps only: InputError for the others.
+  LinearSolver(const LinearSolverSettings& settings, int unknowns, const fem::Partition& partition);
   ~LinearSolver();
   LinearSolver(const LinearSolver&) = delete;
   LinearSolver& operator=(const LinearSolver&) = delete;
@@ -86,6 +88,7 @@ private:
   struct Backend;
   LinearSolverSettings settings_;
   int unknowns_;
+  const fem::Partition& partition_;
   LinearSolverKind kind_;
   std::unique_ptr<Backend> backend_;
   const fem::SparseMatrix* matrix_ = nullptr; ///< of the last factorize(), for a fallback

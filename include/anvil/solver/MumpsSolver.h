@@ -12,7 +12,8 @@ namespace anvil::solver {
 
 class MumpsSolver {
 public:
-  MumpsSolver();
+  /// On the rows of `partition` (which must outlive the solver).
+  explicit MumpsSolver(const fem::Partition& partition);
   ~MumpsSolver();
   MumpsSolver(const MumpsSolver&) = delete;
   MumpsSolver& operator=(const MumpsSolver&) = delete;

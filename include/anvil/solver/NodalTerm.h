@@ -23,8 +23,11 @@ public:
   /// Adds the term's residual (R = internal − external convention, so minus
   /// the force on the body) to the velocity rows of `residual` (4 × nodes)
   /// at `nodal` (4 × nodes), and, when `blocks` is given, appends its tangent
-  /// blocks to it (the caller clears it).
-  virtual void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, std::vector<NodeBlock>* blocks) const = 0;
+  /// blocks to it (the caller clears it). With `rows` (per node, 1 = this
+  /// process owns the node's rows), only those rows are computed: each
+  /// process of a run adds the contact of its own nodes.
+  virtual void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, std::vector<NodeBlock>* blocks,
+                   const std::vector<char>* rows = nullptr) const = 0;
   /// Called when Newton starts, at the starting iterate.
   virtual void start(const Eigen::VectorXd& nodal) = 0;
   /// Called once per accepted Newton iterate: a short note for the log (e.g.

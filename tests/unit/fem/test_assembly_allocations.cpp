@@ -47,7 +47,8 @@ namespace {
 long allocations_of_assembly(int cells) {
   const mesh::TetMesh box = mesh::make_box({0, 0, 0}, {1, 1, 1}, std::array<int, 3>{cells, cells, cells});
   const fem::DofMap dofs(std::vector<char>(fem::kDofsPerNode * box.node_count(), 0));
-  fem::Assembler assembler(box, dofs);
+  const fem::Partition whole = fem::partition_mesh(box, 1, 0);
+  fem::Assembler assembler(box, dofs, whole);
   const material::NortonHoff law(50.0, 0.15, 1e-4);
   const fem::ElementLaws laws(box.tets.size(), &law);
   const std::vector<material::PointState> states(box.tets.size());

@@ -1,0 +1,49 @@
+// The processes of a run (`mpirun -n N anvil run`, DESIGN §2): every process
+// holds the whole mesh and runs the same time loop; the system is assembled
+// and solved by all of them (fem::Partition), and what one process decides
+// alone (rank 0's output) reaches the others through these calls, so that
+// every process takes the same branch and none waits for a partner that has
+// left. One process (no mpirun, or MPI not started) is the plain case: every
+// call is then free.
+#pragma once
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace anvil::processes {
+
+int rank();  ///< this process, 0 … count() − 1
+int count(); ///< processes of the run
+inline bool root() {
+  return rank() == 0;
+}
+
+/// values[i] ← Σ over the processes of values[i], the same sums on every
+/// process (reduced on rank 0, then broadcast: an all-reduce may round
+/// differently on different processes).
+void sum(std::span<double> values);
+/// The smallest of `value` over the processes.
+int minimum(int value);
+
+/// Runs `work` on rank 0 alone (writing a file, remeshing); an InputError or
+/// RunError it throws is thrown on every process with the same message, so
+/// all of them stop alike.
+void on_root(const std::function<void()>& work);
+/// The same for work with a yes-or-no answer: rank 0's answer on every process.
+bool on_root_answer(const std::function<bool()>& work);
+
+/// `bytes` from rank 0 to every process (resized on the others).
+void broadcast(std::string& bytes);
+/// `values` from rank 0 to every process (of the same size on each).
+void broadcast(std::vector<double>& values);
+
+/// After a run ended on this process with exit `code`: true when every
+/// process reached the same point within `seconds` (they ended together:
+/// the run finished, or failed alike on all); false when some process is
+/// still inside the run, stuck waiting for this one.
+bool all_ended(double seconds);
+/// Ends every process of the run at once with `code` (MPI_Abort).
+[[noreturn]] void abort_all(int code);
+
+} // namespace anvil::processes

@@ -1,0 +1,114 @@
+#include "anvil/core/processes.h"
+
+#include "anvil/core/error.h"
+
+#include <mpi.h>
+
+#include <chrono>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+namespace anvil::processes {
+namespace {
+bool started() {
+  int initialised = 0, finalised = 0;
+  MPI_Initialized(&initialised);
+  MPI_Finalized(&finalised);
+  return initialised && !finalised;
+}
+} // namespace
+
+int rank() {
+  int r = 0;
+  if (started()) MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+int count() {
+  int n = 1;
+  if (started()) MPI_Comm_size(MPI_COMM_WORLD, &n);
+  return n;
+}
+
+void sum(std::span<double> values) {
+  if (count() == 1 || values.empty()) return;
+  // MPI counts are int: large vectors go in pieces.
+  constexpr std::size_t kPiece = std::size_t{1} << 28;
+  std::vector<double> total(std::min(values.size(), kPiece));
+  for (std::size_t first = 0; first < values.size(); first += kPiece) {
+    const int n = static_cast<int>(std::min(kPiece, values.size() - first));
+    MPI_Reduce(values.data() + first, total.data(), n, MPI_DOUBLE, MPI_SUM, 0, MPI_COMM_WORLD);
+    if (root()) std::copy_n(total.data(), n, values.data() + first);
+    MPI_Bcast(values.data() + first, n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  }
+}
+
+int minimum(int value) {
+  if (count() == 1) return value;
+  int smallest = value;
+  MPI_Allreduce(&value, &smallest, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  return smallest;
+}
+
+void broadcast(std::string& bytes) {
+  if (count() == 1) return;
+  std::uint64_t size = bytes.size();
+  MPI_Bcast(&size, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  bytes.resize(size);
+  constexpr std::uint64_t kPiece = std::uint64_t{1} << 30;
+  for (std::uint64_t first = 0; first < size; first += kPiece)
+    MPI_Bcast(bytes.data() + first, static_cast<int>(std::min(kPiece, size - first)), MPI_CHAR, 0, MPI_COMM_WORLD);
+}
+
+void broadcast(std::vector<double>& values) {
+  if (count() == 1) return;
+  MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+}
+
+void on_root(const std::function<void()>& work) {
+  on_root_answer([&] {
+    work();
+    return true;
+  });
+}
+
+bool on_root_answer(const std::function<bool()>& work) {
+  if (count() == 1) return work();
+  // Outcome: 'y' or 'n' answered, 'i' InputError, 'r' RunError, then the message.
+  std::string outcome = "n";
+  if (root()) {
+    try {
+      outcome[0] = work() ? 'y' : 'n';
+    } catch (const InputError& e) {
+      outcome = std::string("i") + e.what();
+    } catch (const RunError& e) {
+      outcome = std::string("r") + e.what();
+    }
+  }
+  broadcast(outcome);
+  if (outcome[0] == 'i') throw InputError(outcome.substr(1));
+  if (outcome[0] == 'r') throw RunError(outcome.substr(1));
+  return outcome[0] == 'y';
+}
+
+bool all_ended(double seconds) {
+  if (count() == 1) return true;
+  MPI_Request request;
+  MPI_Ibarrier(MPI_COMM_WORLD, &request);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  for (;;) {
+    int done = 0;
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return true;
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
+void abort_all(int code) {
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::_Exit(code);
+}
+
+} // namespace anvil::processes
