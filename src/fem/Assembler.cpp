@@ -271,8 +271,7 @@ void Assembler::bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorX
       bubble_delta.segment<3>(3 * e) = -(c.col(16) + c.leftCols<16>() * local);
     }
   });
-  if (partition_.distributed())
-    processes::sum({bubble_delta.data(), static_cast<std::size_t>(bubble_delta.size())});
+  if (partition_.distributed()) processes::sum({bubble_delta.data(), static_cast<std::size_t>(bubble_delta.size())});
 }
 
 } // namespace anvil::fem

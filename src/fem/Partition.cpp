@@ -70,9 +70,9 @@ Partition partition_mesh(const mesh::TetMesh& mesh, int processes, int process) 
   p.number.resize(nodes);
   for (int k = 0; k < nodes; ++k)
     p.number[p.node[k]] = k;
-  p.first = static_cast<int>(std::lower_bound(p.node.begin(), p.node.end(), process,
-                                              [&](int n, int part) { return node_part[n] < part; }) -
-                             p.node.begin());
+  p.first = static_cast<int>(
+      std::lower_bound(p.node.begin(), p.node.end(), process, [&](int n, int part) { return node_part[n] < part; }) -
+      p.node.begin());
   p.end = static_cast<int>(std::lower_bound(p.node.begin(), p.node.end(), process + 1,
                                             [&](int n, int part) { return node_part[n] < part; }) -
                            p.node.begin());
