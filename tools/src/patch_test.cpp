@@ -20,6 +20,7 @@
 #include "anvil/contact/facet_quadrature.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/core/processes.h"
 #include "anvil/solver/PetscSession.h"
 #include "patch_test_cases.h"
 
@@ -30,6 +31,12 @@
 #include <map>
 
 namespace {
+
+/// Where a table goes: `path` on rank 0; the other processes of an mpirun
+/// solve the same cases with it and write nothing.
+std::string table_file(const std::string& path) {
+  return anvil::processes::root() ? path : "/dev/null";
+}
 
 using patch_test::CubesLoad;
 using patch_test::CubesMeshes;
@@ -43,7 +50,7 @@ std::string pair_name(const CubesMeshes& m) {
 }
 
 void paper_table(const std::string& out) {
-  std::ofstream csv(out + "/patch_test.csv");
+  std::ofstream csv(table_file(out + "/patch_test.csv"));
   csv << "case,meshes,formulation,interface_max,interface_rms,interior_max,interface_nodes,newton_iterations,wall_"
          "time_s\n";
   std::printf("| case | meshes (master/slave cells) | formulation | interface max | interface RMS | interior max | "
@@ -70,7 +77,7 @@ double support_force(const std::string& dir) {
 }
 
 void cubes_table(const std::string& out) {
-  std::ofstream csv(out + "/patch_test_cubes.csv");
+  std::ofstream csv(table_file(out + "/patch_test_cubes.csv"));
   csv << "case,lower_cells,upper_cells,master,formulation,integration,pressure_max,pressure_rms,lower_szz_max,lower_"
          "szz_rms,upper_szz_max,upper_szz_rms,master_penetration_ratio,newton_iterations,wall_time_s,support_force_N\n";
   std::printf("| case | n_l/n_u | master | formulation | integration | pressure max | pressure RMS | σzz max lower | "
@@ -148,7 +155,7 @@ void cubes_table(const std::string& out) {
 }
 
 void quadrature_table(const std::string& out) {
-  std::ofstream csv(out + "/facet_quadrature.csv");
+  std::ofstream csv(table_file(out + "/facet_quadrature.csv"));
   csv << "meshes,master,formulation,quadrature,levels,pressure_max,szz_max,contact_time_s,wall_time_"
          "s\n";
   std::printf("| n_l/n_u | master | formulation | quadrature | pressure max | σzz max | contact time | run |\n"
@@ -178,11 +185,11 @@ void quadrature_table(const std::string& out) {
 }
 
 void curved_table(const std::string& out) {
-  std::ofstream csv(out + "/hertz_cylinder.csv");
+  std::ofstream csv(table_file(out + "/hertz_cylinder.csv"));
   csv << "cylinder_size,block_size,master,formulation,integration,support_force_N,hertz_half_width_mm,hertz_peak_MPa,"
          "peak_cylinder,peak_block,profile_max,profile_rms,contact_half_width_mm,master_depth_um,newton_iterations,"
          "contact_time_s\n";
-  std::ofstream profile(out + "/hertz_cylinder_profile.csv");
+  std::ofstream profile(table_file(out + "/hertz_cylinder_profile.csv"));
   profile << "cylinder_size,block_size,master,formulation,integration,body,y_mm,z_mm,normal_stress_MPa,hertz_MPa\n";
   std::printf(
       "| h cylinder/block | master | formulation | integration | load | Hertz b, p0 | peak / p0 cylinder, block | "
@@ -249,6 +256,7 @@ int main(int argc, char** argv) {
   }
   int petsc_argc = 1; // the tool's own arguments are not PETSc's
   anvil::solver::PetscSession petsc(petsc_argc, argv);
+  if (!anvil::processes::root() && !std::freopen("/dev/null", "w", stdout)) return 1; // rank 0 prints the tables
   try {
     std::filesystem::create_directories(out);
     anvil::log::set_quiet(true);
