@@ -46,6 +46,11 @@ usage:
                                  e.g. --set time.stroke_increment=0.1
                                       --set dies[].friction.factor=0.1
                                  (dies[] = every die, dies[1] = the second)
+  mpirun -n N anvil run CASE.yaml ...
+                                 the same run on N processes (one machine
+                                 or several): the same results, rank 0
+                                 writes them; tools/anvil --np N CASE.yaml
+                                 starts it
   anvil output-dir CASE.yaml [-o DIR]
                                  print the folder a run would write to
   anvil run CASE.yaml ... -PETSC_OPTION [VALUE] ...
@@ -135,7 +140,7 @@ int report(const std::exception& e, bool say) {
 
 /// How long the processes of a run may take to reach its end one after the
 /// other (s): rank 0 writes the last output while the others wait.
-constexpr double kEndTogether = 60.0;
+constexpr double kEndTogether = 10.0;
 
 } // namespace
 

@@ -4,7 +4,9 @@
 // iteration, assembly, solver set-up (preconditioner or factorisation), solve,
 // Krylov iterations, then the peak memory of the process. One configuration
 // per process, so the peak memory is its own; tools/bench_increment runs the
-// table of the issue.
+// table of the issue. Under mpirun the processes share the increment (as
+// `anvil run` does): rank 0 prints, with the peak memory of each process;
+// tools/bench_mpi runs that table.
 //
 // Problems:
 //   newtonian    η = 1 MPa.s, squeezed between sticking plates (top at 1 mm/s);
@@ -14,19 +16,22 @@
 //                zone (viscosity contrast about 3e3 at the regularisation).
 //
 //   anvil_bench PROBLEM NODES SOLVER [--newton N] [--schur bfbt|mass]
-//               [--no-reuse] [--verbose] [PETSc options]
+//               [--no-reuse] [--threads T] [--verbose] [PETSc options]
 //   SOLVER: fgmres | mumps | umfpack | minres | cholmod_ldlt | eigen_ldlt | auto
 //   --newton N   at most N Newton iterations (default 60): per-iteration
 //                figures of a long solve without waiting for its end
 #include "anvil/core/Timers.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/core/processes.h"
 #include "anvil/mesh/generators.h"
 #include "anvil/scene/BoundaryCondition.h"
 #include "anvil/solver/IncrementSolver.h"
 #include "anvil/solver/PetscSession.h"
 
 #include <sys/resource.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
 
 #include <cmath>
 #include <cstdio>
@@ -77,7 +82,7 @@ Problem make_problem(const std::string& name, long target_nodes) {
 
 constexpr const char* kUsage =
     "usage: anvil_bench newtonian|norton_hoff NODES SOLVER [--newton N] [--schur bfbt|mass] [--no-reuse] "
-    "[--verbose] [PETSc options]\n";
+    "[--threads T] [--verbose] [PETSc options]\n";
 
 } // namespace
 
@@ -91,6 +96,7 @@ int main(int argc, char** argv) {
     solver::NewtonSettings settings;
     settings.max_iterations = 60;
     settings.verbose = false;
+    int threads = 0; // 0: TBB's choice (every core the process may use)
     std::vector<char*> petsc_arguments = {argv[0]};
     for (int i = 4; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -98,6 +104,8 @@ int main(int argc, char** argv) {
         settings.max_iterations = std::atoi(argv[++i]);
       else if (arg == "--schur" && i + 1 < argc)
         linear.schur = solver::schur_approximation(argv[++i]);
+      else if (arg == "--threads" && i + 1 < argc)
+        threads = std::atoi(argv[++i]);
       else if (arg == "--no-reuse")
         linear.reuse_preconditioner = false;
       else if (arg == "--verbose")
@@ -113,6 +121,8 @@ int main(int argc, char** argv) {
     petsc_arguments.push_back(nullptr);
     char** petsc_argv = petsc_arguments.data();
     solver::PetscSession petsc(petsc_argc, petsc_argv);
+    const tbb::global_control thread_limit(tbb::global_control::max_allowed_parallelism,
+                                           threads > 0 ? threads : tbb::info::default_concurrency());
     const Problem problem = make_problem(argv[1], std::atol(argv[2]));
     Timers timers;
     log::set_quiet(!settings.verbose);
@@ -123,18 +133,28 @@ int main(int argc, char** argv) {
 
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
+    std::vector<double> peaks(static_cast<std::size_t>(processes::count()), 0.0); // GB per process
+    peaks[processes::rank()] = static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0);
+    processes::sum(peaks);
+    std::string peak_text;
+    for (double peak : peaks) {
+      char text[16];
+      std::snprintf(text, sizeof text, "%s%.2f", peak_text.empty() ? "" : "/", peak);
+      peak_text += text;
+    }
+    if (!processes::root()) return report.converged ? 0 : 1;
     // The predictor of a nonlinear law is one more linear solve.
     const bool predictor = !problem.law->is_linear();
     const double solves = static_cast<double>(report.iterations.size()) + (predictor ? 1.0 : 0.0);
     const double total = timers.seconds("assembly") + timers.seconds("solver setup") + timers.seconds("solve");
     std::printf("%-11s nodes %7d  unknowns %8d  %-7s newton %2zu%s (%s)  per solve: assembly %6.2f s  setup %6.2f s  "
-                "solve %6.2f s  total %6.2f s  krylov %5.1f  setups %d  increment %7.2f s  peak %5.2f GB\n",
+                "solve %6.2f s  total %6.2f s  krylov %5.1f  setups %d  increment %7.2f s  peak %s GB  processes %d\n",
                 argv[1], problem.mesh.node_count(), solver.free_count(),
                 solver::to_string(solver.linear_solver().kind()).c_str(), report.iterations.size(),
                 predictor ? "+1" : "", report.converged ? "converged" : report.failure.c_str(),
                 timers.seconds("assembly") / solves, timers.seconds("solver setup") / solves,
                 timers.seconds("solve") / solves, total / solves, report.linear_iterations / solves,
-                solver.linear_solver().setups(), total, static_cast<double>(usage.ru_maxrss) / (1024.0 * 1024.0));
+                solver.linear_solver().setups(), total, peak_text.c_str(), processes::count());
     return report.converged ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "anvil_bench: %s\n", e.what());

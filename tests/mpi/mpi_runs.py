@@ -1,0 +1,178 @@
+#!/usr/bin/env python3
+"""Runs on several processes against one (ctest label `mpi`).
+
+  mpi_runs.py CHECK ANVIL DISK_BUDGET_LIBRARY SOURCE_DIR
+
+CHECK is one of:
+  upsetting   cases/upsetting.yaml to 2 mm on 2 processes: loads.csv as on 1
+  pair        cases/two_cubes.yaml (two deformable bodies, one contact pair)
+              on 2 and 3 processes: loads.csv as on 1
+  patch       cases/patch_test_cubes.yaml on 2 processes: loads.csv and the
+              interface table (interface.csv) as on 1
+  resume      stopped after 6 increments on 2 processes, resumed to 2 mm on
+              1 and on 3: loads.csv as the uninterrupted run on 1
+  input       an input error on 2 processes: said once, both exit 3
+  disk        the disk fills up on rank 0 (its writes fail): one message,
+              exit 4, every process stopped, no hang
+  alone       one process fails alone (it cannot read its case): it says so,
+              the other is stopped, no hang
+
+Agreement: the Newton tolerance of the cases is 1e-6 of the relative
+residual; each run's loads carry that error, accumulated over the geometry
+updates of up to 20 increments, so two runs may differ by up to ten times
+it: 1e-5 of the peak load."""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import compare_loads  # noqa: E402
+
+AGREEMENT = 1e-5
+TIMEOUT = 600  # s: a hang fails the test instead of the CI job
+
+
+def mpirun(processes, arguments, env=None):
+    environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    environment.update(env or {})
+    return subprocess.run(["mpirun", "--oversubscribe", "-n", str(processes)] + arguments, capture_output=True,
+                          text=True, errors="replace", env=environment, timeout=TIMEOUT)
+
+
+class Checks:
+    def __init__(self, anvil, library, source, work):
+        self.anvil, self.library, self.source, self.work = anvil, library, source, work
+        self.failures = []
+
+    def case(self, name):
+        return os.path.join(self.source, "cases", name)
+
+    def run(self, processes, case, out, *extra, code=0):
+        result = mpirun(processes, [self.anvil, "run", case, "-o", os.path.join(self.work, out)] + list(extra))
+        self.expect(result.returncode == code, f"{out}: exit {result.returncode}\n{result.stderr[-2000:]}")
+        return result
+
+    def expect(self, condition, message):
+        if not condition:
+            self.failures.append(message)
+        return condition
+
+    def agree(self, reference, other, table="loads.csv"):
+        path = lambda run: os.path.join(self.work, run, table)  # noqa: E731
+        if table == "loads.csv":
+            worst, same = compare_loads.compare(compare_loads.rows(path(reference)), compare_loads.rows(path(other)))
+        else:
+            worst, same = compare_tables(path(reference), path(other))
+        print(f"{other} against {reference}: {table} differs by {worst:.2e}" + ("" if same else ", rows differ"))
+        self.expect(same, f"{other}: {table} has other rows than {reference}")
+        self.expect(worst <= AGREEMENT, f"{other}: {table} differs from {reference} by {worst:.2e} > {AGREEMENT}")
+
+    def upsetting(self):
+        stop = ["--set", "time.stop.stroke=2"]
+        self.run(1, self.case("upsetting.yaml"), "np1", *stop)
+        self.run(2, self.case("upsetting.yaml"), "np2", *stop)
+        self.agree("np1", "np2")
+
+    def pair(self):
+        for n in (1, 2, 3):
+            self.run(n, self.case("two_cubes.yaml"), f"np{n}")
+        self.agree("np1", "np2")
+        self.agree("np1", "np3")
+
+    def patch(self):
+        for n in (1, 2):
+            self.run(n, self.case("patch_test_cubes.yaml"), f"np{n}")
+        self.agree("np1", "np2")
+        self.agree("np1", "np2", "interface.csv")
+
+    def resume(self):
+        case = self.case("upsetting.yaml")
+        self.run(1, case, "whole", "--set", "time.stop.stroke=2")
+        for n in (1, 3):  # stopped after increment 6 of about 14
+            self.run(2, case, f"to_np{n}", "--set", "time.stop.stroke=2", "--set", "time.max_increments=6",
+                     code=4)  # stopped before its stop criterion
+            self.run(n, case, f"to_np{n}", "--set", "time.stop.stroke=2", "--resume", os.path.join(self.work, f"to_np{n}"))
+            self.agree("whole", f"to_np{n}")
+
+    def input(self):
+        bad = os.path.join(self.work, "bad.yaml")
+        with open(self.case("two_cubes.yaml")) as f:
+            text = f.read()
+        with open(bad, "w") as f:
+            f.write(text.replace("contact_pairs:", "contact_pairs:\n  - {master: nowhere, slave: lower}\n", 1))
+        result = mpirun(2, [self.anvil, "run", bad, "-o", os.path.join(self.work, "bad")])
+        print(result.stderr.strip())
+        self.expect(result.returncode == 3, f"exit {result.returncode}, expected 3")
+        self.expect(result.stderr.count("input error") == 1, "the input error is not said exactly once")
+
+    def disk(self):
+        # Rank 0 with a disk that is full after 20 kB: its first VTK file fails.
+        out = os.path.join(self.work, "full")
+        environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        command = ["mpirun", "--oversubscribe", "-n", "1", "-x", f"LD_PRELOAD={self.library}", "-x",
+                   "ANVIL_TEST_DISK_BYTES=20000", self.anvil, "run", self.case("upsetting.yaml"), "-o", out, ":",
+                   "-n", "1", self.anvil, "run", self.case("upsetting.yaml"), "-o", out]
+        result = subprocess.run(command, capture_output=True, text=True, errors="replace", env=environment,
+                                timeout=TIMEOUT)
+        print(result.stderr.strip())
+        self.expect(result.returncode == 4, f"exit {result.returncode}, expected 4")
+        self.expect(result.stderr.count("anvil: run stopped") == 1, "the failure is not said exactly once")
+        self.expect("No space left" in result.stderr or "full" in result.stderr, "the message does not say the disk is full")
+
+    def alone(self):
+        out = os.path.join(self.work, "alone")
+        environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        command = ["mpirun", "--oversubscribe", "-n", "1", self.anvil, "run", self.case("upsetting.yaml"), "-o", out,
+                   ":", "-n", "1", self.anvil, "run", os.path.join(self.work, "missing.yaml"), "-o", out]
+        result = subprocess.run(command, capture_output=True, text=True, errors="replace", env=environment,
+                                timeout=TIMEOUT)
+        print(result.stderr.strip()[-3000:])
+        self.expect(result.returncode != 0, "exit 0 although a process failed")
+        self.expect("missing.yaml" in result.stderr, "the failing process does not say why")
+        self.expect("failed alone" in result.stderr, "the failing process does not say it stops the others")
+
+
+def compare_tables(reference, other):
+    """Largest difference of two CSV tables of numbers, relative to the largest magnitude in each column."""
+    def read(path):
+        with open(path) as f:
+            lines = [line.rstrip("\n").split(",") for line in f if line.strip()]
+        return lines[0], lines[1:]
+    head_a, rows_a = read(reference)
+    head_b, rows_b = read(other)
+    if head_a != head_b or len(rows_a) != len(rows_b):
+        return float("inf"), False
+    worst = 0.0
+    for column in range(len(head_a)):
+        try:
+            a = [float(r[column]) for r in rows_a]
+            b = [float(r[column]) for r in rows_b]
+        except ValueError:
+            if any(x[column] != y[column] for x, y in zip(rows_a, rows_b)):
+                return float("inf"), False
+            continue
+        scale = max((abs(x) for x in a), default=0.0) or 1.0
+        worst = max([worst] + [abs(x - y) / scale for x, y in zip(a, b)])
+    return worst, True
+
+
+def main():
+    if len(sys.argv) != 5:
+        print(__doc__)
+        return 2
+    check, anvil, library, source = sys.argv[1:]
+    work = tempfile.mkdtemp(prefix=f"anvil_mpi_{check}_")
+    try:
+        checks = Checks(anvil, library, source, work)
+        getattr(checks, check)()
+        for failure in checks.failures:
+            print("FAILED:", failure)
+        return 1 if checks.failures else 0
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
