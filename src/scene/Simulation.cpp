@@ -102,10 +102,11 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
   const int free = disc.solver->free_count();
   log::info("unknowns: %d (velocity and pressure, after %d prescribed)", free,
             static_cast<int>(disc.imposed.prescribed.size()) - free);
-  log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d process%s x %d threads",
+  log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d process%s x %d thread%s",
             solver::to_string(disc.solver->linear_solver().kind()).c_str(),
             solver::to_string(c.linear_solver.kind).c_str(), c.newton.tolerance, c.newton.increment_tolerance,
-            processes::count(), processes::count() > 1 ? "es" : "", tbb::info::default_concurrency());
+            processes::count(), processes::count() > 1 ? "es" : "", tbb::info::default_concurrency(),
+            tbb::info::default_concurrency() > 1 ? "s" : "");
   if (c.time.enabled) {
     const TimeSpec& t = c.time;
     log::info(

@@ -1,6 +1,7 @@
 // Quick-look pictures (anvil render): a hot upsetting run rendered headless
 // gives a PNG of the expected size, not one flat colour, with the part in
-// the colours of its field and the dies in grey.
+// the colours of its field and the dies in grey; an animated GIF and a
+// contact sheet of three frames.
 #include "run_outputs.h"
 
 #include "anvil/core/log.h"
@@ -10,6 +11,7 @@
 #include <vtkPNGReader.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <set>
 
 TEST_CASE("anvil render draws a run's final state: the part in its field's colours, the dies in grey", "[regression]") {
@@ -44,4 +46,19 @@ TEST_CASE("anvil render draws a run's final state: the part in its field's colou
   CHECK(colours.size() > 100);
   CHECK(grey > 0.02 * size[0] * size[1]);
   CHECK(saturated > 0.05 * size[0] * size[1]);
+
+  // Three frames: an animated GIF of them and a contact sheet, two half-size
+  // frames to a row (two rows: 1000 × 750).
+  REQUIRE(std::system((command + " --frames 3 --sheet").c_str()) == 0);
+  std::ifstream gif(out.directory + "/render/temperature.gif", std::ios::binary);
+  std::string header(6, '\0');
+  gif.read(header.data(), 6);
+  CHECK(header == "GIF89a");
+  CHECK(std::filesystem::file_size(out.directory + "/render/temperature.gif") > 10000);
+  vtkNew<vtkPNGReader> sheet;
+  sheet->SetFileName((out.directory + "/render/temperature_sheet.png").c_str());
+  sheet->Update();
+  sheet->GetOutput()->GetDimensions(size);
+  CHECK(size[0] == 1000);
+  CHECK(size[1] == 750);
 }
