@@ -220,7 +220,6 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     return report(e, true);
   }
-  if (!anvil::processes::root()) anvil::log::set_quiet(true);
   int code = 0;
   std::string picture_directory;
   try {

@@ -11,6 +11,7 @@ bool quiet_terminal = false;
 bool verbose_terminal = false;
 
 void write(bool to_terminal, const char* format, va_list args) {
+  if (!processes::root()) return; // one log per run: rank 0's
   char line[2048];
   std::vsnprintf(line, sizeof line, format, args);
   if (to_terminal && !quiet_terminal) {
@@ -28,7 +29,7 @@ void write(bool to_terminal, const char* format, va_list args) {
 
 void open_file(const std::string& path, bool append) {
   close_file();
-  if (!processes::root()) return; // one log per run: rank 0's
+  if (!processes::root()) return;
   mirror = std::fopen(path.c_str(), append ? "a" : "w");
 }
 

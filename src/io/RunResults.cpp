@@ -112,8 +112,6 @@ std::vector<InterfaceRow> read_interface(const std::string& directory) {
   return rows;
 }
 
-namespace {
-
 vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& path) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(path.c_str());
@@ -122,8 +120,6 @@ vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& path) {
   if (!grid || grid->GetNumberOfCells() == 0) throw InputError(path + ": no cells read");
   return grid;
 }
-
-} // namespace
 
 std::vector<double> read_last_cell_field(const std::string& directory, const std::string& name, int components) {
   const std::string path = directory + "/" + read_series(directory).back().parts.front();

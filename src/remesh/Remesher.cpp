@@ -75,11 +75,9 @@ Remeshed remesh_part(const scene::Scene& scene, const scene::RunState& state, in
   return best;
 }
 
-/// Σ C_i T_i (mJ) of a body `part` of one thermal material at nodal `temperature`.
-double stored_heat(const mesh::TetMesh& part, const thermal::ThermalMaterial& material,
-                   std::span<const double> temperature) {
-  const std::vector<const thermal::ThermalMaterial*> materials(part.tets.size(), &material);
-  return thermal::stored_heat(part, mesh::whole_range(part), materials, temperature);
+/// The nodal thermal mass of a body `part` of one thermal material.
+thermal::NodalMass nodal_mass(const mesh::TetMesh& part, const thermal::ThermalMaterial& material) {
+  return thermal::nodal_mass(part, std::vector<const thermal::ThermalMaterial*>(part.tets.size(), &material));
 }
 
 double relative(double after, double before) {
@@ -146,10 +144,10 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       Eigen::VectorXd fresh_temperature = interpolate_nodal(
           part, Eigen::Map<const Eigen::VectorXd>(part_temperature, range.node_count), 1, in_old.locate(fresh.nodes));
       if (const auto& body_thermal = scene.bodies[b].thermal) {
-        const double before = stored_heat(part, *body_thermal, {part_temperature, std::size_t(range.node_count)});
+        const double before = thermal::enthalpy(nodal_mass(part, *body_thermal), mesh::whole_range(part),
+                                                {part_temperature, std::size_t(range.node_count)});
         const double by_volume = before * relative(volume_after, volume_before);
-        const thermal::NodalMass m =
-            thermal::nodal_mass(fresh, std::vector<const thermal::ThermalMaterial*>(fresh.tets.size(), &*body_thermal));
+        const thermal::NodalMass m = nodal_mass(fresh, *body_thermal);
         const mesh::MeshRange all = mesh::whole_range(fresh);
         const double interpolated = thermal::enthalpy(m, all, {fresh_temperature.data(), fresh.nodes.size()});
         double capacity = 0.0; // mJ/K of the body at its temperatures

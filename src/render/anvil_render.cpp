@@ -29,7 +29,6 @@
 #include <vtkTextProperty.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkWindowToImageFilter.h>
-#include <vtkXMLUnstructuredGridReader.h>
 
 #include <array>
 #include <cmath>
@@ -41,15 +40,6 @@
 #include <vector>
 
 namespace {
-
-vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& file) {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
-  if (!grid || grid->GetNumberOfPoints() == 0) throw std::runtime_error(file + ": cannot be read");
-  return grid;
-}
 
 /// The field to colour by: `asked`, else temperature, ε̄, von Mises stress, in that order.
 std::string choose_field(vtkUnstructuredGrid* grid, const std::string& asked) {
@@ -139,7 +129,7 @@ vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEn
   for (std::size_t p = 1; p < frame.parts.size(); ++p) {
     const std::string file = o.directory + "/" + frame.parts[p];
     vtkNew<vtkPolyDataMapper> die_mapper;
-    die_mapper->SetInputData(surface_of(read_grid(file), o.mirror));
+    die_mapper->SetInputData(surface_of(anvil::io::read_grid(file), o.mirror));
     die_mapper->ScalarVisibilityOff();
     vtkNew<vtkActor> die;
     die->SetMapper(die_mapper);
@@ -284,7 +274,7 @@ int main(int argc, char** argv) {
     const std::vector<anvil::io::LoadRow> loads =
         surfaces.empty() ? std::vector<anvil::io::LoadRow>{} : anvil::io::read_loads(o.directory, load_surface);
     auto bodies_of = [&](const anvil::io::SeriesEntry& frame) {
-      return read_grid(o.directory + "/" + frame.parts.front());
+      return anvil::io::read_grid(o.directory + "/" + frame.parts.front());
     };
     if (!o.out.empty()) {
       write_png(render(o, frames.back(), bodies_of(frames.back()), loads, load_surface), o.out);

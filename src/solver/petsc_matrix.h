@@ -126,6 +126,7 @@ public:
   /// vector given to in().
   void out(Eigen::VectorXd& x) {
     if (!partition_.distributed()) return release();
+    if (!gather_) check(VecScatterCreateToAll(vec_, &gather_, &whole_), "creating a vector");
     check(VecScatterBegin(gather_, vec_, whole_, INSERT_VALUES, SCATTER_FORWARD), "gathering the solution");
     check(VecScatterEnd(gather_, vec_, whole_, INSERT_VALUES, SCATTER_FORWARD), "gathering the solution");
     const PetscScalar* y = nullptr;
@@ -153,12 +154,11 @@ private:
     check(VecCreateMPI(PETSC_COMM_WORLD, fem::kDofsPerNode * partition_.owned_count(), static_cast<PetscInt>(size),
                        &vec_),
           "creating a vector");
-    check(VecScatterCreateToAll(vec_, &gather_, &whole_), "creating a vector");
   }
 
   const fem::Partition& partition_;
   Vec vec_ = nullptr;
-  VecScatter gather_ = nullptr; ///< several processes: the whole vector to each
+  VecScatter gather_ = nullptr; ///< several processes: the whole vector to each (made at the first out())
   Vec whole_ = nullptr;
   long size_ = -1;
   bool placed_ = false;

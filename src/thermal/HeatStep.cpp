@@ -110,13 +110,14 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
   for (int i = 0; i < n; ++i)
     if (solved(i)) linear = linear && m.material[i]->specific_heat.constant();
   const Eigen::Map<const Eigen::VectorXd> start(temperature.data(), n);
-  Eigen::VectorXd next = start;
+  Eigen::VectorXd next = start, residual(n), change(n);
   HeatFlows flows;
   constexpr int kMostSolves = 20;
   s.cg.setTolerance(1e-13);
   s.cg.setMaxIterations(5 * n);
   for (;;) {
-    Eigen::VectorXd residual = s.exchange.selfadjointView<Eigen::Lower>() * next - rhs;
+    residual.noalias() = s.exchange.selfadjointView<Eigen::Lower>() * next;
+    residual -= rhs;
     s.matrix = s.exchange;
     for (int i = 0; i < n; ++i)
       if (solved(i)) {
@@ -125,7 +126,7 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
         s.matrix.coeffRef(i, i) += m.mass[i] * c.at(next[i]) / dt;
       }
     s.cg.compute(s.matrix);
-    const Eigen::VectorXd change = s.cg.solve(residual);
+    change = s.cg.solve(residual);
     if (s.cg.info() != Eigen::Success)
       throw RunError("heat step: conjugate gradients did not converge (" + std::to_string(s.cg.iterations()) +
                      " iterations; an element with a non-positive conductivity or capacity?)");

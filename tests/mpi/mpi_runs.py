@@ -34,11 +34,11 @@ AGREEMENT = 1e-5
 TIMEOUT = 600  # s: a hang fails the test instead of the CI job
 
 
-def mpirun(processes, arguments, env=None):
+def mpirun(arguments):
+    """mpirun --oversubscribe ARGUMENTS (as root, as CI runs it)."""
     environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    environment.update(env or {})
-    return subprocess.run(["mpirun", "--oversubscribe", "-n", str(processes)] + arguments, capture_output=True,
-                          text=True, errors="replace", env=environment, timeout=TIMEOUT)
+    return subprocess.run(["mpirun", "--oversubscribe"] + arguments, capture_output=True, text=True, errors="replace",
+                          env=environment, timeout=TIMEOUT)
 
 
 class Checks:
@@ -50,7 +50,7 @@ class Checks:
         return os.path.join(self.source, "cases", name)
 
     def run(self, processes, case, out, *extra, code=0):
-        result = mpirun(processes, [self.anvil, "run", case, "-o", os.path.join(self.work, out)] + list(extra))
+        result = mpirun(["-n", str(processes), self.anvil, "run", case, "-o", os.path.join(self.work, out)] + list(extra))
         self.expect(result.returncode == code, f"{out}: exit {result.returncode}\n{result.stderr[-2000:]}")
         return result
 
@@ -102,7 +102,7 @@ class Checks:
             text = f.read()
         with open(bad, "w") as f:
             f.write(text.replace("contact_pairs:", "contact_pairs:\n  - {master: nowhere, slave: lower}\n", 1))
-        result = mpirun(2, [self.anvil, "run", bad, "-o", os.path.join(self.work, "bad")])
+        result = mpirun(["-n", "2", self.anvil, "run", bad, "-o", os.path.join(self.work, "bad")])
         print(result.stderr.strip())
         self.expect(result.returncode == 3, f"exit {result.returncode}, expected 3")
         self.expect(result.stderr.count("input error") == 1, "the input error is not said exactly once")
@@ -110,12 +110,9 @@ class Checks:
     def disk(self):
         # Rank 0 with a disk that is full after 20 kB: its first VTK file fails.
         out = os.path.join(self.work, "full")
-        environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-        command = ["mpirun", "--oversubscribe", "-n", "1", "-x", f"LD_PRELOAD={self.library}", "-x",
-                   "ANVIL_TEST_DISK_BYTES=20000", self.anvil, "run", self.case("upsetting.yaml"), "-o", out, ":",
-                   "-n", "1", self.anvil, "run", self.case("upsetting.yaml"), "-o", out]
-        result = subprocess.run(command, capture_output=True, text=True, errors="replace", env=environment,
-                                timeout=TIMEOUT)
+        result = mpirun(["-n", "1", "-x", f"LD_PRELOAD={self.library}", "-x", "ANVIL_TEST_DISK_BYTES=20000", self.anvil,
+                         "run", self.case("upsetting.yaml"), "-o", out, ":",
+                         "-n", "1", self.anvil, "run", self.case("upsetting.yaml"), "-o", out])
         print(result.stderr.strip())
         self.expect(result.returncode == 4, f"exit {result.returncode}, expected 4")
         self.expect(result.stderr.count("anvil: run stopped") == 1, "the failure is not said exactly once")
@@ -123,11 +120,8 @@ class Checks:
 
     def alone(self):
         out = os.path.join(self.work, "alone")
-        environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-        command = ["mpirun", "--oversubscribe", "-n", "1", self.anvil, "run", self.case("upsetting.yaml"), "-o", out,
-                   ":", "-n", "1", self.anvil, "run", os.path.join(self.work, "missing.yaml"), "-o", out]
-        result = subprocess.run(command, capture_output=True, text=True, errors="replace", env=environment,
-                                timeout=TIMEOUT)
+        result = mpirun(["-n", "1", self.anvil, "run", self.case("upsetting.yaml"), "-o", out, ":",
+                         "-n", "1", self.anvil, "run", os.path.join(self.work, "missing.yaml"), "-o", out])
         print(result.stderr.strip()[-3000:])
         self.expect(result.returncode != 0, "exit 0 although a process failed")
         self.expect("missing.yaml" in result.stderr, "the failing process does not say why")

@@ -1,5 +1,6 @@
 // Run log: one sink (stdout, optionally mirrored to a file in the output
 // directory). Plain printf-style formatting keeps hot code free of streams.
+// With several processes (mpirun) rank 0 alone logs.
 #pragma once
 #include <cstdio>
 #include <string>

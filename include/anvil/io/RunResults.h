@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+class vtkUnstructuredGrid;
+template <class T> class vtkSmartPointer;
+
 namespace anvil::io {
 
 /// One row of loads.csv.
@@ -32,6 +35,9 @@ struct SeriesEntry {
 
 /// Every written increment of `directory`/anvil.pvd, in order. Throws InputError.
 std::vector<SeriesEntry> read_series(const std::string& directory);
+
+/// One file of the series (a body's or a die's .vtu). Throws InputError when it holds no cells.
+vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& path);
 
 /// One row of interface.csv: a node on a body-pair interface.
 struct InterfaceRow {
