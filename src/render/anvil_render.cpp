@@ -30,6 +30,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -69,6 +70,17 @@ std::array<double, 2> field_range(vtkUnstructuredGrid* grid, const std::string& 
   return range;
 }
 
+/// `range` widened to ±1 % of its value when the field is uniform to round-off
+/// (a patch test's stress): a colour bar spread over 1e-12 MPa would paint
+/// round-off as bands.
+std::array<double, 2> readable(std::array<double, 2> range) {
+  const double size = std::max(std::abs(range[0]), std::abs(range[1]));
+  if (range[1] - range[0] > 1e-6 * size) return range;
+  const double half = size > 0.0 ? 0.01 * size : 1.0;
+  const double middle = 0.5 * (range[0] + range[1]);
+  return {middle - half, middle + half};
+}
+
 struct Options {
   std::string directory, field, view = "iso";
   int frames = 1;
@@ -98,7 +110,6 @@ vtkSmartPointer<vtkPolyData> surface_of(vtkUnstructuredGrid* grid, bool mirror) 
   return surface->GetOutput();
 }
 
-/// The picture of one frame.
 /// The picture of one written increment, its bodies read into `bodies`.
 vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEntry& frame, vtkUnstructuredGrid* bodies,
                                      const std::vector<anvil::io::LoadRow>& loads, const std::string& load_surface) {
@@ -110,7 +121,7 @@ vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEn
   const bool on_points = bodies->GetPointData()->HasArray(field.c_str());
   std::array<double, 2> range{o.range[0], o.range[1]};
   if (!(range[1] > range[0])) range = field_range(bodies, field);
-  if (range[1] <= range[0]) range[1] = range[0] + 1.0;
+  range = readable(range);
   vtkNew<vtkLookupTable> colours;
   colours->SetHueRange(0.667, 0.0); // blue (low) to red (high)
   colours->Build();
