@@ -36,6 +36,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -79,6 +80,49 @@ std::array<double, 2> readable(std::array<double, 2> range) {
   const double half = size > 0.0 ? 0.01 * size : 1.0;
   const double middle = 0.5 * (range[0] + range[1]);
   return {middle - half, middle + half};
+}
+
+/// Runs `command` (a shell line) that writes `temporary`, and renames that
+/// to `file` when it succeeds: an animation is there whole or not at all.
+bool run_into(const std::string& command, const std::string& temporary, const std::string& file) {
+  std::error_code ignored;
+  if (std::system(command.c_str()) == 0 && std::filesystem::exists(temporary, ignored)) {
+    std::filesystem::rename(temporary, file);
+    std::printf("%s\n", file.c_str());
+    return true;
+  }
+  std::filesystem::remove(temporary, ignored);
+  return false;
+}
+
+/// The frames as an animated GIF, 0.3 s a frame, by ImageMagick (Debian's
+/// imagemagick: tools/setup).
+void animate_gif(const std::vector<std::string>& frames, const std::string& file) {
+  std::string command = "convert -delay 30 -loop 0";
+  for (const std::string& f : frames)
+    command += " '" + f + "'";
+  command += " 'GIF:" + file + ".part'";
+  if (!run_into(command, file + ".part", file))
+    std::fprintf(stderr, "anvil render: no GIF written (ImageMagick's convert failed or is missing)\n");
+}
+
+/// The frames as an H.264 MP4, 0.3 s a frame, by ffmpeg when it is installed
+/// (tools/setup does not install it: the GIF is what every machine gets).
+void animate_mp4(const std::vector<std::string>& frames, const std::string& file) {
+  const std::string list = file + ".frames";
+  {
+    std::ofstream out(list);
+    // Absolute names: the concat demuxer reads them relative to the list.
+    for (const std::string& f : frames)
+      out << "file '" << std::filesystem::absolute(f).string() << "'\nduration 0.3\n";
+    out << "file '" << std::filesystem::absolute(frames.back()).string()
+        << "'\n"; // the concat demuxer holds the last frame only when named again
+  }
+  const std::string command = "ffmpeg -nostdin -loglevel error -y -f concat -safe 0 -i '" + list +
+                              "' -vf 'fps=10,format=yuv420p' -c:v libx264 -f mp4 '" + file + ".part'";
+  if (!run_into(command, file + ".part", file)) std::fprintf(stderr, "anvil render: no MP4 written (ffmpeg failed)\n");
+  std::error_code ignored;
+  std::filesystem::remove(list, ignored);
 }
 
 struct Options {
@@ -328,15 +372,8 @@ int main(int argc, char** argv) {
       std::printf("%s\n", (stem + "_sheet.png").c_str());
     }
     if (pictures.size() > 1) {
-      // The animation by ImageMagick (Debian's imagemagick: tools/setup), 0.3 s a frame.
-      std::string command = "convert -delay 30 -loop 0";
-      for (const std::string& f : files)
-        command += " '" + f + "'";
-      command += " '" + stem + ".gif'";
-      if (std::system(command.c_str()) == 0)
-        std::printf("%s.gif\n", stem.c_str());
-      else
-        std::fprintf(stderr, "anvil render: no animation written (ImageMagick's convert failed or is missing)\n");
+      animate_gif(files, stem + ".gif");
+      if (std::system("command -v ffmpeg >/dev/null 2>&1") == 0) animate_mp4(files, stem + ".mp4");
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "anvil render: %s\n", e.what());

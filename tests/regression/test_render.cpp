@@ -61,4 +61,15 @@ TEST_CASE("anvil render draws a run's final state: the part in its field's colou
   sheet->GetOutput()->GetDimensions(size);
   CHECK(size[0] == 1000);
   CHECK(size[1] == 750);
+  // With ffmpeg installed (tools/setup does not), an MP4 too: an ISO media
+  // file ("ftyp" box at byte 4) of some size; no partial file left behind.
+  if (std::system("command -v ffmpeg >/dev/null 2>&1") == 0) {
+    std::ifstream mp4(out.directory + "/render/temperature.mp4", std::ios::binary);
+    std::string box(8, '\0');
+    mp4.read(box.data(), 8);
+    CHECK(box.substr(4) == "ftyp");
+    CHECK(std::filesystem::file_size(out.directory + "/render/temperature.mp4") > 10000);
+  }
+  CHECK_FALSE(std::filesystem::exists(out.directory + "/render/temperature.mp4.part"));
+  CHECK_FALSE(std::filesystem::exists(out.directory + "/render/temperature.gif.part"));
 }
