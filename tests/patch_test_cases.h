@@ -2,6 +2,7 @@
 // four cases, the mesh pairs and the error measures, shared by the regression
 // test (tests/regression/test_patch.cpp) and the full table (tools/patch_test).
 #pragma once
+#include "anvil/core/processes.h"
 #include "anvil/io/RunResults.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Simulation.h"
@@ -66,13 +67,17 @@ struct Errors {
 /// `out` (emptied first) and measures the relative errors against the
 /// uniform exact stress. Newton is converged far below the errors measured
 /// (the runs' default 1e-6 would move their fourth digit).
+/// Under mpirun every process solves; rank 0 alone measures (the others get zeros).
 inline Errors run_case(const std::string& case_file, std::vector<std::string> overrides, double exact_stress,
                        const std::string& master_body, const std::string& source_dir, const std::string& out) {
   overrides.insert(overrides.end(), {"solver.tolerance=1e-10", "solver.increment_tolerance=1e-10"});
   anvil::scene::Case c = anvil::scene::read_case(source_dir + "/" + case_file, overrides);
-  std::filesystem::remove_all(out);
+  // Under mpirun rank 0 alone writes the run's files: it alone empties and
+  // reads them (the others would race it to the next case's folder).
+  if (anvil::processes::root()) std::filesystem::remove_all(out);
   anvil::scene::run(c, {out});
   Errors e;
+  if (!anvil::processes::root()) return e;
   double sum_sq = 0.0;
   for (const anvil::io::InterfaceRow& row : anvil::io::read_interface(out)) {
     const double error = std::abs(row.normal_stress - exact_stress) / exact_stress;

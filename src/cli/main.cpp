@@ -107,9 +107,12 @@ int render(int argc, char** argv) {
 }
 
 /// After a run: DIR/final.png, the last increment, beside loads.png
-/// (output.picture). A picture that cannot be made is said, not fatal.
-void final_picture(const std::string& directory) {
-  std::vector<std::string> args = renderer_command({directory, "--out", directory + "/final.png"});
+/// (output.picture), the quarter model drawn whole when `mirror`. A picture
+/// that cannot be made is said, not fatal.
+void final_picture(const std::string& directory, bool mirror) {
+  std::vector<std::string> picture = {directory, "--out", directory + "/final.png"};
+  if (mirror) picture.push_back("--mirror");
+  std::vector<std::string> args = renderer_command(picture);
   std::vector<char*> c_args = c_arguments(args);
   pid_t child = 0;
   posix_spawn_file_actions_t quiet;
@@ -222,11 +225,13 @@ int main(int argc, char** argv) {
   }
   int code = 0;
   std::string picture_directory;
+  bool picture_mirror = false;
   try {
     // Every process reads the case and runs the same time loop (DESIGN §2).
     const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
     const anvil::scene::RunEnd end = anvil::scene::run(c, options);
     if (c.write_picture && c.write_vtk) picture_directory = anvil::scene::output_directory(c, options);
+    picture_mirror = c.picture_mirror;
     if (anvil::processes::root())
       for (const std::string& unused : anvil::solver::PetscSession::unused_options())
         std::fprintf(stderr, "anvil: warning: PETSc option %s was not used by the solver of this run (misspelt?)\n",
@@ -248,6 +253,6 @@ int main(int argc, char** argv) {
     code = report(e, anvil::processes::root());
   }
   if (code == 0 && !anvil::processes::all_ended(kEndTogether)) anvil::processes::abort_all(5);
-  if (!picture_directory.empty() && anvil::processes::root()) final_picture(picture_directory);
+  if (!picture_directory.empty() && anvil::processes::root()) final_picture(picture_directory, picture_mirror);
   return code;
 }

@@ -314,6 +314,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.output_directory = doc.text(output, "directory", "output.directory");
   c.write_vtk = doc.boolean(output, "vtk", "output.vtk");
   c.write_picture = doc.boolean(output, "picture", "output.picture");
+  c.picture_mirror = doc.boolean(output, "picture_mirror", "output.picture_mirror");
   c.vtk_every = doc.integer(output, "vtk_every", "output.vtk_every");
   c.checkpoint_every = doc.integer(output, "checkpoint_every", "output.checkpoint_every");
   const YAML::Node solver = section(root, "solver");
