@@ -62,7 +62,7 @@ IncrementLaws increment_laws(const Scene& scene, const Discretisation& disc, con
 
 /// Newton on (v, p) for an increment of `dt` from `state`, with contact scales `scales`.
 IncrementOutcome solve_at(const Scene& scene, Discretisation& disc, const RunState& state, double dt, double nominal,
-                          const contact::ContactScales& scales, Timers& timers) {
+                          const contact::ContactScales& scales, const fem::BodyUnknowns& guess, Timers& timers) {
   // Candidates: boundary nodes that can reach a die or another body within the increment.
   std::vector<contact::DieView> views;
   double die_speed = 0.0, body_speed = 0.0;
@@ -99,7 +99,7 @@ IncrementOutcome solve_at(const Scene& scene, Discretisation& disc, const RunSta
   const solver::IncrementProblem problem{
       state.mesh, laws.of_element,           disc.point_states,        external,
       {},         disc.contact_terms(scene), scene.reference_velocity, scales.reference_force};
-  out.unknowns = state.unknowns;
+  out.unknowns = guess;
   Timers::Scope scope(timers, "newton");
   out.report = disc.solver->solve(problem, scene.input.newton, out.unknowns);
   out.failure = out.report.failure;
@@ -145,7 +145,7 @@ void count_iterations(const solver::NewtonReport& report, RunState& state) {
 } // namespace
 
 IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
-                                 Timers& timers, ContactEvents events) {
+                                 Timers& timers, ContactEvents events, const fem::BodyUnknowns* guess) {
   const contact::ContactScales scales = [&] {
     if (!scene.has_contact()) return contact::ContactScales{};
     std::vector<contact::ScaledBody> bodies;
@@ -154,13 +154,14 @@ IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const
     return contact::contact_scales(state.mesh, bodies, disc.element_laws, disc.point_states, state.unknowns,
                                    scene.reference_rate(), scene.body_size, scene.input.contact.penalty);
   }();
-  IncrementOutcome out = solve_at(scene, disc, state, step.length, step.nominal, scales, timers);
+  const fem::BodyUnknowns& start = guess ? *guess : state.unknowns;
+  IncrementOutcome out = solve_at(scene, disc, state, step.length, step.nominal, scales, start, timers);
   // A free node reaching a die inside the increment ends it there (contact
   // event): the overshoot left in a longer step is projected by the update.
   if (out.converged() && events == ContactEvents::end_increment && scene.input.time.enabled && !scene.dies.empty()) {
     const double touch = disc.die_contact.first_contact_time(out.unknowns.nodal, 1e-3 * scene.reference_length);
     if (TimeStepControl(scene).ends_at_contact(step, touch))
-      out = solve_at(scene, disc, state, touch, step.nominal, scales, timers);
+      out = solve_at(scene, disc, state, touch, step.nominal, scales, start, timers);
   }
   if (out.converged()) {
     out.forces = surface_forces(scene, disc, out);
@@ -171,12 +172,12 @@ IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const
 }
 
 IncrementOutcome solve_coupled(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
-                               Timers& timers) {
+                               Timers& timers, const fem::BodyUnknowns* guess) {
   const double tolerance = scene.input.thermal.coupling_tolerance;
   const bool iterated = disc.heat && tolerance > 0.0;
   // The flow starts from T_n, also when retrying a cut step.
   if (iterated) element_temperatures(state.mesh, state.temperature, disc.point_states);
-  IncrementOutcome inc = solve_increment(scene, disc, state, step, timers);
+  IncrementOutcome inc = solve_increment(scene, disc, state, step, timers, ContactEvents::end_increment, guess);
   if (!iterated) return inc;
   constexpr int kMostCouplings = 5;
   for (; inc.converged(); ++inc.couplings) {

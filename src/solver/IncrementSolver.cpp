@@ -305,6 +305,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     }
   }
   report.failure = "no convergence in " + std::to_string(settings.max_iterations) + " Newton iterations";
+  report.out_of_iterations = true;
   return report;
 }
 

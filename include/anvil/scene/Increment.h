@@ -38,10 +38,12 @@ enum class ContactEvents {
 };
 
 /// Solves the increment `step` from `state` (its unknowns are the Newton
-/// guess): contact search, contact scales, volume compensation, Newton on
-/// (v, p). Uses `disc`'s contact terms and solver; `state` is not changed.
+/// guess, or `guess` when given): contact search, contact scales, volume
+/// compensation, Newton on (v, p). Uses `disc`'s contact terms and solver;
+/// `state` is not changed.
 IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
-                                 Timers& timers, ContactEvents events = ContactEvents::end_increment);
+                                 Timers& timers, ContactEvents events = ContactEvents::end_increment,
+                                 const fem::BodyUnknowns* guess = nullptr);
 
 /// solve_increment in the time loop. In a thermal scene with
 /// thermal.coupling_tolerance > 0 (iterated coupling) the flow is solved
@@ -49,7 +51,7 @@ IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const
 /// until they change by less than the tolerance (°C), 5 times at most (then
 /// the increment fails and is cut); otherwise (staggered) the flow sees T_n.
 IncrementOutcome solve_coupled(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
-                               Timers& timers);
+                               Timers& timers, const fem::BodyUnknowns* guess = nullptr);
 
 /// Accepts a converged increment into `state`: x ← x + Δt v, the dies
 /// moved, contact nodes projected onto them, the loads recorded, ε̄ and the
