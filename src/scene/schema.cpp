@@ -108,9 +108,10 @@ const std::vector<KeySpec>& case_schema() {
         with_default(key("output.picture", T::boolean,
                          "anvil run: final.png, the last increment drawn by anvil render (needs output.vtk)"),
                      "true"),
-        with_default(key("output.picture_mirror", T::boolean,
-                         "final.png draws a quarter model (symmetry planes x = 0 and y = 0) whole: anvil render --mirror"),
-                     "false"),
+        with_default(
+            key("output.picture_mirror", T::boolean,
+                "final.png draws a quarter model (symmetry planes x = 0 and y = 0) whole: anvil render --mirror"),
+            "false"),
         key("solver", T::map, "Newton and linear solver settings"),
         with_default(
             range(key("solver.tolerance", T::number, "Newton: relative tolerance on the force and div residuals"),

@@ -60,6 +60,7 @@ TEST_CASE("a run killed with SIGKILL and resumed gives the uninterrupted loads a
   {
     std::string text = read_text(source_path("cases/upsetting_frictionless.yaml"));
     text = std::regex_replace(text, std::regex("\\.\\./materials"), source_path("materials"));
+    text = std::regex_replace(text, std::regex("\noutput: \\{[^\n]*"), ""); // its own output map replaces the case's
     std::ofstream(case_file) << text << "output: {checkpoint_every: 4}\n";
   }
   const auto whole = std::filesystem::temp_directory_path() / "anvil_resume_whole";

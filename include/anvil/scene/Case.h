@@ -128,7 +128,7 @@ struct Case {
   std::string title;
   std::string output_directory; ///< empty = out/<case name>
   bool write_vtk = true;
-  bool write_picture = true; ///< anvil run: final.png of the last increment (anvil render)
+  bool write_picture = true;   ///< anvil run: final.png of the last increment (anvil render)
   bool picture_mirror = false; ///< final.png: a quarter model drawn whole (anvil render --mirror)
   solver::NewtonSettings newton;
   solver::LinearSolverSettings linear_solver;

@@ -41,8 +41,8 @@ struct NewtonIteration {
 struct NewtonReport {
   bool converged = false;
   std::vector<NewtonIteration> iterations;
-  int linear_iterations = 0; ///< Krylov iterations of all the solves (0 for a direct solver)
-  std::string failure;       ///< why it stopped, when not converged
+  int linear_iterations = 0;      ///< Krylov iterations of all the solves (0 for a direct solver)
+  std::string failure;            ///< why it stopped, when not converged
   bool out_of_iterations = false; ///< stopped at the iteration budget (not a failed solve or a non-finite residual)
 };
 
