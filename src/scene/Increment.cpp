@@ -60,7 +60,7 @@ IncrementLaws increment_laws(const Scene& scene, const Discretisation& disc, con
   return laws;
 }
 
-/// Newton on (v, p) for an increment of `dt` from `state`, with contact scales `scales`.
+/// Newton on (v, p) from `guess` for an increment of `dt` from `state`, with contact scales `scales`.
 IncrementOutcome solve_at(const Scene& scene, Discretisation& disc, const RunState& state, double dt, double nominal,
                           const contact::ContactScales& scales, const fem::BodyUnknowns& guess, Timers& timers) {
   // Candidates: boundary nodes that can reach a die or another body within the increment.
