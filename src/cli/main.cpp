@@ -107,8 +107,8 @@ int render(int argc, char** argv) {
 }
 
 /// After a run: DIR/final.png, the last increment, beside loads.png
-/// (output.picture), the quarter model drawn whole when `mirror`. A picture
-/// that cannot be made is said, not fatal.
+/// (output.picture), the quarter model drawn whole when `mirror`
+/// (output.picture_mirror). A picture that cannot be made is said, not fatal.
 void final_picture(const std::string& directory, bool mirror) {
   std::vector<std::string> picture = {directory, "--out", directory + "/final.png"};
   if (mirror) picture.push_back("--mirror");

@@ -82,45 +82,47 @@ std::array<double, 2> readable(std::array<double, 2> range) {
   return {middle - half, middle + half};
 }
 
-/// Runs `command` (a shell line) that writes `temporary`, and renames that
-/// to `file` when it succeeds: an animation is there whole or not at all.
-bool run_into(const std::string& command, const std::string& temporary, const std::string& file) {
+constexpr int kFrameCentiseconds = 30; ///< how long an animation shows each frame
+
+/// Runs `command` (a shell line) that writes `file`.part, and renames that to
+/// `file` when it succeeds: an animation is there whole or not at all.
+bool run_into(const std::string& command, const std::string& file) {
+  const std::string part = file + ".part";
   std::error_code ignored;
-  if (std::system(command.c_str()) == 0 && std::filesystem::exists(temporary, ignored)) {
-    std::filesystem::rename(temporary, file);
+  if (std::system(command.c_str()) == 0 && std::filesystem::exists(part, ignored)) {
+    std::filesystem::rename(part, file);
     std::printf("%s\n", file.c_str());
     return true;
   }
-  std::filesystem::remove(temporary, ignored);
+  std::filesystem::remove(part, ignored);
   return false;
 }
 
-/// The frames as an animated GIF, 0.3 s a frame, by ImageMagick (Debian's
-/// imagemagick: tools/setup).
+/// The frames as an animated GIF by ImageMagick (Debian's imagemagick: tools/setup).
 void animate_gif(const std::vector<std::string>& frames, const std::string& file) {
-  std::string command = "convert -delay 30 -loop 0";
+  std::string command = "convert -delay " + std::to_string(kFrameCentiseconds) + " -loop 0";
   for (const std::string& f : frames)
     command += " '" + f + "'";
   command += " 'GIF:" + file + ".part'";
-  if (!run_into(command, file + ".part", file))
+  if (!run_into(command, file))
     std::fprintf(stderr, "anvil render: no GIF written (ImageMagick's convert failed or is missing)\n");
 }
 
-/// The frames as an H.264 MP4, 0.3 s a frame, by ffmpeg when it is installed
-/// (tools/setup does not install it: the GIF is what every machine gets).
+/// The frames as an H.264 MP4 by ffmpeg when it is installed (tools/setup
+/// does not install it: the GIF is what every machine gets).
 void animate_mp4(const std::vector<std::string>& frames, const std::string& file) {
   const std::string list = file + ".frames";
   {
     std::ofstream out(list);
     // Absolute names: the concat demuxer reads them relative to the list.
     for (const std::string& f : frames)
-      out << "file '" << std::filesystem::absolute(f).string() << "'\nduration 0.3\n";
+      out << "file '" << std::filesystem::absolute(f).string() << "'\nduration " << 0.01 * kFrameCentiseconds << "\n";
     out << "file '" << std::filesystem::absolute(frames.back()).string()
         << "'\n"; // the concat demuxer holds the last frame only when named again
   }
   const std::string command = "ffmpeg -nostdin -loglevel error -y -f concat -safe 0 -i '" + list +
                               "' -vf 'fps=10,format=yuv420p' -c:v libx264 -f mp4 '" + file + ".part'";
-  if (!run_into(command, file + ".part", file)) std::fprintf(stderr, "anvil render: no MP4 written (ffmpeg failed)\n");
+  if (!run_into(command, file)) std::fprintf(stderr, "anvil render: no MP4 written (ffmpeg failed)\n");
   std::error_code ignored;
   std::filesystem::remove(list, ignored);
 }

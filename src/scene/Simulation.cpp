@@ -291,9 +291,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
       // Newton that ran out of iterations while its residual fell goes on
       // from where it stopped: the flow hardly depends on Δt (from rest, not
       // at all), so starting again from the state would walk the same path.
-      const solver::NewtonReport& tried = inc.report;
-      const bool on_its_way = tried.out_of_iterations && tried.iterations.size() >= 2 &&
-                              tried.iterations.back().force_residual < tried.iterations.front().force_residual;
+      const bool on_its_way = inc.report.on_its_way();
       const fem::BodyUnknowns last = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};
       inc = solve_coupled(scene, disc, state, step, timers, on_its_way ? &last : nullptr);
     }

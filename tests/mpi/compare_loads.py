@@ -44,9 +44,10 @@ def main():
     reference = rows(sys.argv[1])
     status = 0
     for path in sys.argv[2:]:
-        worst, where, same = largest_difference(reference, rows(path))
+        other = rows(path)
+        worst, where, same = largest_difference(reference, other)
         at = f" ({where[0]}, increment {where[1]}, {where[2]})" if where else ""
-        press = largest_difference(reference, rows(path), ("Fz_N",))[0]
+        press = largest_difference(reference, other, ("Fz_N",))[0]
         print(f"{path}: {len(reference)} rows, largest difference {worst:.2e} of the peak load{at};"
               f" press load Fz {press:.2e}" + ("" if same else " (the rows differ)"))
         status |= not same

@@ -44,6 +44,13 @@ struct NewtonReport {
   int linear_iterations = 0;      ///< Krylov iterations of all the solves (0 for a direct solver)
   std::string failure;            ///< why it stopped, when not converged
   bool out_of_iterations = false; ///< stopped at the iteration budget (not a failed solve or a non-finite residual)
+
+  /// Stopped at the budget while its force residual fell: its last iterate
+  /// is a better start than its first.
+  bool on_its_way() const {
+    return out_of_iterations && !iterations.empty() &&
+           iterations.back().force_residual < iterations.front().force_residual;
+  }
 };
 
 /// What one increment solves for, besides the unknowns.
