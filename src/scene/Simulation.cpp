@@ -275,9 +275,25 @@ RunEnd run(const Case& c, const RunOptions& options) {
     const Clock::time_point increment_start = Clock::now();
     TimeStep step = clock.next_step(state);
     IncrementOutcome inc = solve_coupled(scene, disc, state, step, timers);
-    // A failed try leaves the state as it was: try again with half the Δt tried.
-    for (int cuts = 0; !inc.converged() || !accept_increment(scene, disc, inc, state, timers); ++cuts) {
-      const std::optional<double> shorter = clock.cut(inc.time_step, cuts);
+    // A failed try leaves the state as it was. Newton that ran out of
+    // iterations while its residual fell goes on from where it stopped: once
+    // with the same Δt (a cut would put this run's increments at other
+    // strokes than a run whose round-off let Newton finish in its budget),
+    // then with half the Δt tried (the flow hardly depends on Δt: from rest,
+    // not at all; starting again from the state would walk the same path).
+    bool second_budget = true;
+    for (int cuts = 0; !inc.converged() || !accept_increment(scene, disc, inc, state, timers);) {
+      const bool on_its_way = inc.report.on_its_way();
+      const fem::BodyUnknowns stopped_at = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};
+      if (on_its_way && second_budget) {
+        second_budget = false;
+        log::info("  increment %d: %s, the residual falling (%.3g to %.3g); going on from there with the same dt",
+                  state.increment + 1, inc.failure.c_str(), inc.report.iterations.front().force_residual,
+                  inc.report.iterations.back().force_residual);
+        inc = solve_coupled(scene, disc, state, step, timers, &stopped_at);
+        continue;
+      }
+      const std::optional<double> shorter = clock.cut(inc.time_step, cuts++);
       if (!shorter) {
         finish(scene, disc, state, writer, last, timers, start);
         throw RunError("increment " + std::to_string(state.increment + 1) + " at t = " + std::to_string(state.time) +
@@ -287,13 +303,8 @@ RunEnd run(const Case& c, const RunOptions& options) {
       }
       step.length = *shorter;
       log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1,
-                inc.failure.c_str(), step.length, cuts + 1, c.time.max_cuts);
-      // Newton that ran out of iterations while its residual fell goes on
-      // from where it stopped: the flow hardly depends on Δt (from rest, not
-      // at all), so starting again from the state would walk the same path.
-      const bool on_its_way = inc.report.on_its_way();
-      const fem::BodyUnknowns last = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};
-      inc = solve_coupled(scene, disc, state, step, timers, on_its_way ? &last : nullptr);
+                inc.failure.c_str(), step.length, cuts, c.time.max_cuts);
+      inc = solve_coupled(scene, disc, state, step, timers, on_its_way ? &stopped_at : nullptr);
     }
     last = inc.report;
     const double heat_before = timers.seconds("effect heat");

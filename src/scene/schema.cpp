@@ -122,7 +122,11 @@ const std::vector<KeySpec>& case_schema() {
                                "after a full step)"),
                            1e-14, 1),
                      "1e-4"),
-        with_default(range(key("solver.max_iterations", T::integer, "Newton iterations per increment"), 1, 500), "30"),
+        with_default(range(key("solver.max_iterations", T::integer,
+                               "Newton iterations per increment and active set; a second budget at the same time step "
+                               "when the residual still falls"),
+                           1, 500),
+                     "30"),
         with_default(
             choices(key("solver.linear_solver", T::string,
                         "fgmres: PETSc FGMRES with algebraic multigrid on the velocities and a Schur-complement "

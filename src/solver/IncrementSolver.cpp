@@ -282,6 +282,13 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       report.failure = "the residual is not finite";
       return report;
     }
+    // The residual, tangent and merit above are those of the set before
+    // accept(): with a changed set the next direction and its line search
+    // would see two problems (a step of 2^-10 and a lost iteration).
+    if (set_changed) {
+      merit = evaluate(problem, unknowns);
+      scale = force_scale(problem);
+    }
     // A full step of a linear problem is its solution: no further step to measure.
     const bool increment_small =
         record.increment <= settings.increment_tolerance || (linear_problem && step == 1.0 && !set_changed);

@@ -45,11 +45,13 @@ struct NewtonReport {
   std::string failure;            ///< why it stopped, when not converged
   bool out_of_iterations = false; ///< stopped at the iteration budget (not a failed solve or a non-finite residual)
 
-  /// Stopped at the budget while its force residual fell: its last iterate
-  /// is a better start than its first.
+  /// Stopped at the budget while its force residual fell, overall and over
+  /// the second half of its iterations: its last iterate is a better start
+  /// than its first, and more iterations may finish the increment.
   bool on_its_way() const {
-    return out_of_iterations && !iterations.empty() &&
-           iterations.back().force_residual < iterations.front().force_residual;
+    if (!out_of_iterations || iterations.size() < 2) return false;
+    const double last = iterations.back().force_residual;
+    return last < iterations.front().force_residual && last < iterations[iterations.size() / 2].force_residual;
   }
 };
 
