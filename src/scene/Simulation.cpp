@@ -290,20 +290,19 @@ RunEnd run(const Case& c, const RunOptions& options) {
         log::info("  increment %d: %s, the residual falling (%.3g to %.3g); going on from there with the same dt",
                   state.increment + 1, inc.failure.c_str(), inc.report.iterations.front().force_residual,
                   inc.report.iterations.back().force_residual);
-        inc = solve_coupled(scene, disc, state, step, timers, &stopped_at);
-        continue;
+      } else {
+        const std::optional<double> shorter = clock.cut(inc.time_step, cuts++);
+        if (!shorter) {
+          finish(scene, disc, state, writer, last, timers, start);
+          throw RunError("increment " + std::to_string(state.increment + 1) + " at t = " + std::to_string(state.time) +
+                         " s: " + inc.failure + " after " + std::to_string(c.time.max_cuts) +
+                         " time-step cuts; the last good increment (" + std::to_string(state.increment) +
+                         ") is written and checkpointed in " + out);
+        }
+        step.length = *shorter;
+        log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1,
+                  inc.failure.c_str(), step.length, cuts, c.time.max_cuts);
       }
-      const std::optional<double> shorter = clock.cut(inc.time_step, cuts++);
-      if (!shorter) {
-        finish(scene, disc, state, writer, last, timers, start);
-        throw RunError("increment " + std::to_string(state.increment + 1) + " at t = " + std::to_string(state.time) +
-                       " s: " + inc.failure + " after " + std::to_string(c.time.max_cuts) +
-                       " time-step cuts; the last good increment (" + std::to_string(state.increment) +
-                       ") is written and checkpointed in " + out);
-      }
-      step.length = *shorter;
-      log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1,
-                inc.failure.c_str(), step.length, cuts, c.time.max_cuts);
       inc = solve_coupled(scene, disc, state, step, timers, on_its_way ? &stopped_at : nullptr);
     }
     last = inc.report;

@@ -194,6 +194,12 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
                                                         [](const NodalTerm* term) { return term->linear(); });
   Merit merit = evaluate(problem, unknowns);
   double scale = force_scale(problem);
+  // After a change of the active set: residual, tangent, merit and force
+  // scale of the current iterate under the new set.
+  auto evaluate_with_new_set = [&] {
+    merit = evaluate(problem, unknowns);
+    scale = force_scale(problem);
+  };
   Eigen::VectorXd rhs(n), delta(n), bubble_delta;
   double previous_residual = -1.0, forcing = settings.krylov_tolerance_max;
   fem::BodyUnknowns trial;
@@ -285,10 +291,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     // The residual, tangent and merit above are those of the set before
     // accept(): with a changed set the next direction and its line search
     // would see two problems (a step of 2^-10 and a lost iteration).
-    if (set_changed) {
-      merit = evaluate(problem, unknowns);
-      scale = force_scale(problem);
-    }
+    if (set_changed) evaluate_with_new_set();
     // A full step of a linear problem is its solution: no further step to measure.
     const bool increment_small =
         record.increment <= settings.increment_tolerance || (linear_problem && step == 1.0 && !set_changed);
@@ -302,8 +305,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
         ++set_changes;
         // The active set changed: the converged field belongs to another
         // problem; go on from it with the new set.
-        merit = evaluate(problem, unknowns);
-        scale = force_scale(problem);
+        evaluate_with_new_set();
         if (settings.verbose) log::detail("    active set changed at convergence: Newton goes on");
         continue;
       }
