@@ -285,8 +285,10 @@ RunEnd run(const Case& c, const RunOptions& options) {
     for (int cuts = 0; !inc.converged() || !accept_increment(scene, disc, inc, state, timers);) {
       const bool on_its_way = inc.report.on_its_way();
       const fem::BodyUnknowns stopped_at = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};
+      solver::NewtonReport first_budget;
       if (on_its_way && second_budget) {
         second_budget = false;
+        first_budget = inc.report;
         log::info("  increment %d: %s, the residual falling (%.3g to %.3g); going on from there with the same dt",
                   state.increment + 1, inc.failure.c_str(), inc.report.iterations.front().force_residual,
                   inc.report.iterations.back().force_residual);
@@ -304,6 +306,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
                   inc.failure.c_str(), step.length, cuts, c.time.max_cuts);
       }
       inc = solve_coupled(scene, disc, state, step, timers, on_its_way ? &stopped_at : nullptr);
+      inc.report.continues(first_budget);
     }
     last = inc.report;
     const double heat_before = timers.seconds("effect heat");

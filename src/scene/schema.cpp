@@ -138,7 +138,8 @@ const std::vector<KeySpec>& case_schema() {
         with_default(
             range(key("solver.krylov_tolerance", T::number,
                       "fgmres: loosest relative tolerance of a Krylov solve; inexact Newton tightens it as the "
-                      "residual falls (Eisenstat-Walker)"),
+                      "residual falls (Eisenstat-Walker); at most 1e-3 while a contact active set follows the "
+                      "iterates"),
                   1e-12, 0.5),
             "1e-2"),
         with_default(choices(key("solver.schur", T::string,

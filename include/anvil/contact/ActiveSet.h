@@ -55,6 +55,8 @@ public:
 
   /// Constraints the last accept() activated or released.
   int last_changes() const { return last_changes_; }
+  /// True while accept() still moves the set with the iterates (not yet frozen).
+  bool following() const { return !frozen_; }
   bool operator[](std::size_t i) const { return active_[i] != 0; }
   std::size_t size() const { return active_.size(); }
   int count() const {

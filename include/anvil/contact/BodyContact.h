@@ -130,6 +130,7 @@ public:
   std::string accept(const Eigen::VectorXd& nodal) override;
   bool consistent(const Eigen::VectorXd& nodal) override;
   bool set_changed() const override { return active_.last_changes() > 0; }
+  bool set_follows_iterates() const override { return active_.following(); }
   bool linear() const override;
   std::vector<std::pair<int, int>> couplings() const override;
 

@@ -49,6 +49,7 @@ public:
   std::string accept(const Eigen::VectorXd& nodal) override;
   bool consistent(const Eigen::VectorXd& nodal) override;
   bool set_changed() const override { return active_.last_changes() > 0; }
+  bool set_follows_iterates() const override { return active_.following(); }
   bool linear() const override;
 
   /// Force each die receives from the body (N), at `nodal`.

@@ -53,6 +53,12 @@ struct NewtonReport {
     const double last = iterations.back().force_residual;
     return last < iterations.front().force_residual && last < iterations[iterations.size() / 2].force_residual;
   }
+  /// This Newton went on from the last iterate of `earlier` at the same Δt:
+  /// one report of both, so the increment counts all its iterations.
+  void continues(const NewtonReport& earlier) {
+    iterations.insert(iterations.begin(), earlier.iterations.begin(), earlier.iterations.end());
+    linear_iterations += earlier.linear_iterations;
+  }
 };
 
 /// What one increment solves for, besides the unknowns.

@@ -39,6 +39,9 @@ public:
   virtual bool consistent(const Eigen::VectorXd& nodal) = 0;
   /// True when the last accept() changed the term's active set.
   virtual bool set_changed() const = 0;
+  /// True while the next accept() may change the active set (the set follows
+  /// the iterates, before it is frozen).
+  virtual bool set_follows_iterates() const = 0;
   /// True when the term is linear in the velocities while its active set
   /// holds (frictionless or sticking contact): with a linear law, one full
   /// Newton step then solves the increment.
