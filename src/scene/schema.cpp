@@ -139,7 +139,7 @@ const std::vector<KeySpec>& case_schema() {
             range(key("solver.krylov_tolerance", T::number,
                       "fgmres: loosest relative tolerance of a Krylov solve; inexact Newton tightens it as the "
                       "residual falls (Eisenstat-Walker); at most 1e-3 while a contact active set follows the "
-                      "iterates"),
+                      "iterates, 1e-5 for the predictor from rest"),
                   1e-12, 0.5),
             "1e-2"),
         with_default(choices(key("solver.schur", T::string,
