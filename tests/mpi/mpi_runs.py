@@ -5,6 +5,9 @@
 
 CHECK is one of:
   upsetting   cases/upsetting.yaml to 2 mm on 2 processes: loads.csv as on 1
+  landing     cases/hot_upsetting.yaml to 1.5 mm on 2 processes (its top
+              die lands on the chilled end face: the same contact set as
+              on 1 process); loads.csv as on 1
   pair        cases/two_cubes.yaml (two deformable bodies, one contact pair)
               on 2 and 3 processes: loads.csv as on 1
   patch       cases/patch_test_cubes.yaml on 2 processes: loads.csv and the
@@ -73,6 +76,12 @@ class Checks:
         stop = ["--set", "time.stop.stroke=2"]
         self.run(1, self.case("upsetting.yaml"), "np1", *stop)
         self.run(2, self.case("upsetting.yaml"), "np2", *stop)
+        self.agree("np1", "np2")
+
+    def landing(self):
+        stop = ["--set", "time.stop.stroke=1.5"]
+        self.run(1, self.case("hot_upsetting.yaml"), "np1", *stop)
+        self.run(2, self.case("hot_upsetting.yaml"), "np2", *stop)
         self.agree("np1", "np2")
 
     def pair(self):
