@@ -166,7 +166,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     // preconditioner, so the number of processes, choose which
     // (closed_die_flash on 3 processes found another at 1e-3). It is made
     // once, from rest.
-    predictor.krylov_tolerance_max = 1e-5;
+    predictor.krylov_tolerance_max = std::min(settings.krylov_tolerance_max, 1e-5);
     Timers::Scope scope(timers_, "effect nonlinear_law (predictor)");
     const IncrementProblem newtonian_problem{mesh,
                                              newtonian_laws,
