@@ -288,10 +288,10 @@ RunEnd run(const Case& c, const RunOptions& options) {
       solver::NewtonReport first_budget;
       if (on_its_way && second_budget) {
         second_budget = false;
-        first_budget = inc.report;
         log::info("  increment %d: %s, the residual falling (%.3g to %.3g); going on from there with the same dt",
                   state.increment + 1, inc.failure.c_str(), inc.report.iterations.front().force_residual,
                   inc.report.iterations.back().force_residual);
+        first_budget = std::move(inc.report);
       } else {
         const std::optional<double> shorter = clock.cut(inc.time_step, cuts++);
         if (!shorter) {

@@ -72,28 +72,24 @@ class Checks:
         self.expect(same, f"{other}: {table} has other rows than {reference}")
         self.expect(worst <= AGREEMENT, f"{other}: {table} differs from {reference} by {worst:.2e} > {AGREEMENT}")
 
+    def same_as_one(self, case, counts, *extra):
+        """CASE on 1 process and on each of COUNTS: loads.csv as on 1."""
+        for n in (1,) + counts:
+            self.run(n, self.case(case), f"np{n}", *extra)
+        for n in counts:
+            self.agree("np1", f"np{n}")
+
     def upsetting(self):
-        stop = ["--set", "time.stop.stroke=2"]
-        self.run(1, self.case("upsetting.yaml"), "np1", *stop)
-        self.run(2, self.case("upsetting.yaml"), "np2", *stop)
-        self.agree("np1", "np2")
+        self.same_as_one("upsetting.yaml", (2,), "--set", "time.stop.stroke=2")
 
     def landing(self):
-        stop = ["--set", "time.stop.stroke=1.5"]
-        self.run(1, self.case("hot_upsetting.yaml"), "np1", *stop)
-        self.run(2, self.case("hot_upsetting.yaml"), "np2", *stop)
-        self.agree("np1", "np2")
+        self.same_as_one("hot_upsetting.yaml", (2,), "--set", "time.stop.stroke=1.5")
 
     def pair(self):
-        for n in (1, 2, 3):
-            self.run(n, self.case("two_cubes.yaml"), f"np{n}")
-        self.agree("np1", "np2")
-        self.agree("np1", "np3")
+        self.same_as_one("two_cubes.yaml", (2, 3))
 
     def patch(self):
-        for n in (1, 2):
-            self.run(n, self.case("patch_test_cubes.yaml"), f"np{n}")
-        self.agree("np1", "np2")
+        self.same_as_one("patch_test_cubes.yaml", (2,))
         self.agree("np1", "np2", "interface.csv")
 
     def resume(self):
