@@ -65,7 +65,7 @@ IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> pr
                                  const LinearSolverSettings& linear, Timers& timers)
     : partition_(fem::partition_mesh(mesh, processes::count(), processes::rank())),
       assembler_(mesh, fem::DofMap(std::move(prescribed)), partition_),
-      linear_solver_(linear, assembler_.dofs().free_count(), partition_), timers_(timers) {
+      linear_solver_(linear, assembler_.dofs().free_count(), partition_, timers), timers_(timers) {
   if (!partition_.distributed()) return;
   owned_nodes_.resize(mesh.nodes.size());
   for (int node = 0; node < mesh.node_count(); ++node)

@@ -28,7 +28,8 @@ int ml_initial_seed() {
 } // namespace
 
 struct KrylovSolver::Impl {
-  Impl(SchurApproximation s, const fem::Partition& p) : schur(s), partition(p), matrix(p), rhs(p), solution(p) {}
+  Impl(SchurApproximation s, const fem::Partition& p, Timers& timers)
+      : schur(s), partition(p), matrix(p, timers), rhs(p), solution(p) {}
   SchurApproximation schur;
   const fem::Partition& partition;
   petsc::BfbtSchur bfbt;
@@ -170,8 +171,8 @@ struct KrylovSolver::Impl {
   }
 };
 
-KrylovSolver::KrylovSolver(SchurApproximation schur, const fem::Partition& partition)
-    : impl_(std::make_unique<Impl>(schur, partition)) {}
+KrylovSolver::KrylovSolver(SchurApproximation schur, const fem::Partition& partition, Timers& timers)
+    : impl_(std::make_unique<Impl>(schur, partition, timers)) {}
 KrylovSolver::~KrylovSolver() = default;
 
 void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse) {

@@ -75,8 +75,9 @@ LinearSolverKind resolve(LinearSolverKind kind, int unknowns) {
   return unknowns > kDirectSolverLimit ? LinearSolverKind::fgmres : LinearSolverKind::mumps;
 }
 
-LinearSolver::LinearSolver(const LinearSolverSettings& settings, int unknowns, const fem::Partition& partition)
-    : settings_(settings), unknowns_(unknowns), partition_(partition) {
+LinearSolver::LinearSolver(const LinearSolverSettings& settings, int unknowns, const fem::Partition& partition,
+                           Timers& timers)
+    : settings_(settings), unknowns_(unknowns), partition_(partition), timers_(timers) {
   restart();
   if (partition_.distributed() && kind_ != LinearSolverKind::fgmres && kind_ != LinearSolverKind::mumps)
     throw InputError("solver.linear_solver '" + to_string(kind_) + "' runs on one process; with " +
@@ -87,8 +88,8 @@ LinearSolver::~LinearSolver() = default;
 void LinearSolver::restart() {
   kind_ = resolve(settings_.kind, unknowns_);
   backend_ = std::make_unique<Backend>();
-  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings_.schur, partition_);
-  if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace(partition_);
+  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings_.schur, partition_, timers_);
+  if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace(partition_, timers_);
   backend_->minres.setMaxIterations(20000);
   analysed_ = false;
   setup_rate_ = 0.0;
@@ -192,7 +193,7 @@ bool LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double 
               "MUMPS (direct) takes over for the rest of this mesh",
               k.iterations, k.reason.c_str(), k.reduction, relative_tolerance);
     b.krylov.reset();
-    b.mumps.emplace(partition_);
+    b.mumps.emplace(partition_, timers_);
     kind_ = LinearSolverKind::mumps;
     ++setups_;
     if (!b.mumps->factorize(*matrix_)) return false;

@@ -10,7 +10,7 @@ namespace anvil::solver {
 using petsc::check;
 
 struct MumpsSolver::Impl {
-  explicit Impl(const fem::Partition& p) : matrix(p), rhs(p), solution(p) {}
+  Impl(const fem::Partition& p, Timers& timers) : matrix(p, timers), rhs(p), solution(p) {}
   petsc::MatrixView matrix;
   petsc::VectorSlot rhs, solution;
   KSP ksp = nullptr;
@@ -18,7 +18,8 @@ struct MumpsSolver::Impl {
   ~Impl() { KSPDestroy(&ksp); }
 };
 
-MumpsSolver::MumpsSolver(const fem::Partition& partition) : impl_(std::make_unique<Impl>(partition)) {}
+MumpsSolver::MumpsSolver(const fem::Partition& partition, Timers& timers)
+    : impl_(std::make_unique<Impl>(partition, timers)) {}
 MumpsSolver::~MumpsSolver() = default;
 
 bool MumpsSolver::factorize(const fem::SparseMatrix& a) {

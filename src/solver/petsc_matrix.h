@@ -7,6 +7,7 @@
 // (MatSetValuesCOO sums what several processes give one entry); a Vec holds
 // this process's rows, copied in from and gathered back into the whole vector.
 #pragma once
+#include "anvil/core/Timers.h"
 #include "anvil/fem/Assembler.h"
 #include "anvil/fem/Partition.h"
 #include "petsc_check.h"
@@ -27,7 +28,9 @@ inline PetscInt system_index(const fem::Partition& p, int dof) {
 
 class MatrixView {
 public:
-  explicit MatrixView(const fem::Partition& partition) : partition_(partition) {}
+  /// The creation of a Mat (a new pattern: once per mesh while the solver
+  /// lives) is timed as `timers`' "matrix pattern".
+  MatrixView(const fem::Partition& partition, Timers& timers) : partition_(partition), timers_(timers) {}
   ~MatrixView() { MatDestroy(&mat_); }
   MatrixView(const MatrixView&) = delete;
   MatrixView& operator=(const MatrixView&) = delete;
@@ -38,6 +41,7 @@ public:
     const bool moved = !mat_ || a.outerIndexPtr() != outer_ || a.innerIndexPtr() != inner_ || a.valuePtr() != values_ ||
                        a.rows() != rows_ || a.nonZeros() != entries_;
     if (moved) {
+      Timers::Scope scope(timers_, "matrix pattern");
       MatDestroy(&mat_);
       outer_ = a.outerIndexPtr(), inner_ = a.innerIndexPtr(), values_ = a.valuePtr(),
       rows_ = static_cast<PetscInt>(a.rows()), entries_ = a.nonZeros();
@@ -80,6 +84,7 @@ private:
   }
 
   const fem::Partition& partition_;
+  Timers& timers_;
   Mat mat_ = nullptr;
   const int* outer_ = nullptr;
   const int* inner_ = nullptr;

@@ -13,6 +13,7 @@
 // -fieldsplit_1_* options on the command line or in solver.petsc_options
 // override it.
 #pragma once
+#include "anvil/core/Timers.h"
 #include "anvil/fem/Assembler.h"
 
 #include <memory>
@@ -42,8 +43,9 @@ struct KrylovOutcome {
 
 class KrylovSolver {
 public:
-  /// On the rows of `partition` (which must outlive the solver).
-  KrylovSolver(SchurApproximation schur, const fem::Partition& partition);
+  /// On the rows of `partition`; the matrix's creation timed in `timers`
+  /// (both must outlive the solver).
+  KrylovSolver(SchurApproximation schur, const fem::Partition& partition, Timers& timers);
   ~KrylovSolver();
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;

@@ -5,6 +5,7 @@
 // fallback when the Krylov method stagnates; SuiteSparse and Eigen solvers
 // stay selectable for comparison.
 #pragma once
+#include "anvil/core/Timers.h"
 #include "anvil/fem/Assembler.h"
 #include "anvil/solver/KrylovSolver.h"
 
@@ -53,9 +54,11 @@ struct LinearSolverSettings {
 class LinearSolver {
 public:
   /// `unknowns`: the problem's unknowns, for `automatic`; `partition`: the
-  /// rows of each process (must outlive the solver). Several processes
-  /// solve with fgmres or mumps only: InputError for the others.
-  LinearSolver(const LinearSolverSettings& settings, int unknowns, const fem::Partition& partition);
+  /// rows of each process; `timers`: where the PETSc solvers time the
+  /// creation of their matrix, "matrix pattern" (both must outlive the
+  /// solver). Several processes solve with fgmres or mumps only: InputError
+  /// for the others.
+  LinearSolver(const LinearSolverSettings& settings, int unknowns, const fem::Partition& partition, Timers& timers);
   ~LinearSolver();
   LinearSolver(const LinearSolver&) = delete;
   LinearSolver& operator=(const LinearSolver&) = delete;
@@ -89,6 +92,7 @@ private:
   LinearSolverSettings settings_;
   int unknowns_;
   const fem::Partition& partition_;
+  Timers& timers_;
   LinearSolverKind kind_;
   std::unique_ptr<Backend> backend_;
   const fem::SparseMatrix* matrix_ = nullptr; ///< of the last factorize(), for a fallback

@@ -4,6 +4,7 @@
 // quasi-symmetric pairs). The symbolic analysis is kept while the pattern is.
 // PETSc options with the prefix direct_ reach it (-direct_mat_mumps_icntl_14 50).
 #pragma once
+#include "anvil/core/Timers.h"
 #include "anvil/fem/Assembler.h"
 
 #include <memory>
@@ -12,8 +13,9 @@ namespace anvil::solver {
 
 class MumpsSolver {
 public:
-  /// On the rows of `partition` (which must outlive the solver).
-  explicit MumpsSolver(const fem::Partition& partition);
+  /// On the rows of `partition`; the matrix's creation timed in `timers`
+  /// (both must outlive the solver).
+  MumpsSolver(const fem::Partition& partition, Timers& timers);
   ~MumpsSolver();
   MumpsSolver(const MumpsSolver&) = delete;
   MumpsSolver& operator=(const MumpsSolver&) = delete;
