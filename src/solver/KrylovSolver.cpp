@@ -8,6 +8,7 @@
 #include <ml_utils.h>
 #include <petscksp.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,7 @@ struct KrylovSolver::Impl {
       : schur(s), partition(p), matrix(p, timers), rhs(p), solution(p) {}
   SchurApproximation schur;
   const fem::Partition& partition;
-  petsc::BfbtSchur bfbt;
+  std::optional<petsc::BfbtSchur> bfbt; ///< of the KSP in place (its Schur PC's context)
   petsc::MatrixView matrix;
   petsc::VectorSlot rhs, solution;
   KSP ksp = nullptr;
@@ -46,6 +47,7 @@ struct KrylovSolver::Impl {
   ~Impl() { destroy(); }
   void destroy() {
     KSPDestroy(&ksp);
+    bfbt.reset();
     ISDestroy(&velocity);
     ISDestroy(&pressure);
     MatDestroy(&schur_preconditioner);
@@ -136,7 +138,7 @@ struct KrylovSolver::Impl {
     check(KSPGetPC(sub[1], &schur_pc), "setting up the Schur preconditioner");
     PetscFree(sub);
     if (schur == SchurApproximation::bfbt)
-      bfbt.attach(schur_pc);
+      bfbt.emplace().attach(schur_pc);
     else
       check(PCSetType(schur_pc, PCJACOBI), "setting up the Schur preconditioner");
   }
@@ -174,6 +176,10 @@ struct KrylovSolver::Impl {
 KrylovSolver::KrylovSolver(SchurApproximation schur, const fem::Partition& partition, Timers& timers)
     : impl_(std::make_unique<Impl>(schur, partition, timers)) {}
 KrylovSolver::~KrylovSolver() = default;
+
+void KrylovSolver::restart() {
+  impl_->create();
+}
 
 void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse) {
   Impl& s = *impl_;

@@ -87,10 +87,14 @@ LinearSolver::~LinearSolver() = default;
 
 void LinearSolver::restart() {
   kind_ = resolve(settings_.kind, unknowns_);
-  backend_ = std::make_unique<Backend>();
-  if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings_.schur, partition_, timers_);
-  if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace(partition_, timers_);
-  backend_->minres.setMaxIterations(20000);
+  if (kind_ == LinearSolverKind::fgmres && backend_ && backend_->krylov) {
+    backend_->krylov->restart(); // the pattern stays: PETSc's distributed one is dear to make
+  } else {
+    backend_ = std::make_unique<Backend>();
+    if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings_.schur, partition_, timers_);
+    if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace(partition_, timers_);
+    backend_->minres.setMaxIterations(20000);
+  }
   analysed_ = false;
   setup_rate_ = 0.0;
   refresh_ = true;

@@ -54,6 +54,10 @@ public:
   /// the next call). With `reuse`, the preconditioner of an earlier call is
   /// kept (the same pattern is required); otherwise it is set up again.
   void set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse);
+  /// Back to a new solver's state on the same matrix: the Krylov solver and
+  /// its preconditioner are made anew at the next set_operator; the matrix
+  /// and its pattern are kept.
+  void restart();
   /// x = A⁻¹ b to `relative_tolerance` of |b| (x's start value is ignored).
   KrylovOutcome solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance);
   /// Preconditioner set-ups so far.

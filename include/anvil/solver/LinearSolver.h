@@ -76,6 +76,7 @@ public:
   /// fallback. A run resumed from a checkpoint starts with a new solver; the
   /// uninterrupted run restarts its own at each checkpoint, so both solve the
   /// next increment alike (a kept preconditioner changes an inexact solve).
+  /// The Krylov solver keeps its matrix: the pattern holds no numbers.
   void restart();
 
   /// The solver in use (mumps after a fallback).
