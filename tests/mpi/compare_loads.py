@@ -7,8 +7,17 @@ For each OTHER: the rows it shares with REFERENCE (same increment and
 surface), the largest difference of a force component relative to the
 largest press load of REFERENCE (stroke and time: relative to their value),
 where it is, and whether both have the same rows. Prints one line per OTHER;
-exits 1 when the rows differ."""
+exits 1 when the rows differ.
+
+When REFERENCE remeshed (summary.json beside its loads.csv), the rows are
+compared up to its first remesh; after it the runs have other meshes (a
+remesh is not a continuous function of the nodes' round-off) and often rows
+at other times, so the forces of OTHER are interpolated linearly in time at
+REFERENCE's rows: the largest and the mean difference."""
+import bisect
 import csv
+import json
+import os
 import sys
 
 
@@ -37,19 +46,70 @@ def largest_difference(reference, other, columns=("Fx_N", "Fy_N", "Fz_N", "strok
     return worst, where, shared == reference.keys() == other.keys()
 
 
+def first_remesh(loads):
+    """Increment of the first remesh of the run that wrote `loads`, or None."""
+    try:
+        with open(os.path.join(os.path.dirname(loads), "summary.json")) as f:
+            remeshes = json.load(f).get("remeshing", {}).get("remeshes", [])
+    except (OSError, ValueError):
+        return None
+    return min((r["increment"] for r in remeshes), default=None)
+
+
+def up_to(table, increment):
+    return {key: r for key, r in table.items() if int(key[0]) <= increment}
+
+
+def at_equal_time(reference, other, after, columns=("Fx_N", "Fy_N", "Fz_N")):
+    """(largest, mean) difference of the forces `columns` past increment `after`,
+    `other` interpolated linearly in time at `reference`'s rows, relative to
+    the peak load."""
+    peak = max(max(abs(float(r[k])) for k in ("Fx_N", "Fy_N", "Fz_N")) for r in reference.values()) or 1.0
+    series = {}
+    for r in sorted(other.values(), key=lambda r: float(r["time_s"])):
+        series.setdefault(r["surface"], []).append(r)
+    differences = []
+    for (increment, surface), r in reference.items():
+        rows_of = series.get(surface, [])
+        times = [float(o["time_s"]) for o in rows_of]
+        t = float(r["time_s"])
+        if int(increment) <= after or not times or not times[0] <= t <= times[-1]:
+            continue
+        i = max(1, bisect.bisect_left(times, t))
+        a, b = rows_of[i - 1], rows_of[min(i, len(rows_of) - 1)]
+        w = (t - times[i - 1]) / (times[i] - times[i - 1]) if b is not a and times[i] > times[i - 1] else 0.0
+        for k in columns:
+            value = (1 - w) * float(a[k]) + w * float(b[k])
+            differences.append(abs(value - float(r[k])) / peak)
+    return max(differences, default=0.0), sum(differences) / max(len(differences), 1)
+
+
 def main():
     if len(sys.argv) < 3:
         print(__doc__)
         return 2
-    reference = rows(sys.argv[1])
+    everything = rows(sys.argv[1])
+    remesh = first_remesh(sys.argv[1])
+    reference = everything if remesh is None else up_to(everything, remesh)
     status = 0
     for path in sys.argv[2:]:
-        other = rows(path)
+        other_everything = rows(path)
+        other = other_everything if remesh is None else up_to(other_everything, remesh)
         worst, where, same = largest_difference(reference, other)
         at = f" ({where[0]}, increment {where[1]}, {where[2]})" if where else ""
         press = largest_difference(reference, other, ("Fz_N",))[0]
-        print(f"{path}: {len(reference)} rows, largest difference {worst:.2e} of the peak load{at};"
-              f" press load Fz {press:.2e}" + ("" if same else " (the rows differ)"))
+        line = f"{path}: {len(reference)} rows"
+        if remesh is not None:
+            line += f" up to the first remesh (increment {remesh})"
+        line += f", largest difference {worst:.2e} of the peak load{at}; press load Fz {press:.2e}"
+        line += "" if same else " (the rows differ)"
+        if remesh is not None:
+            largest = at_equal_time(everything, other_everything, remesh)[0]
+            press, mean = at_equal_time(everything, other_everything, remesh, ("Fz_N",))
+            line += (f"; after it, at equal time ({len(everything) - len(reference)} / "
+                     f"{len(other_everything) - len(other)} rows): largest {largest:.2e}, press load Fz {press:.2e}"
+                     f" (mean {mean:.2e})")
+        print(line)
         status |= not same
     return status
 
