@@ -26,6 +26,11 @@ def rows(path):
         return {(r["increment"], r["surface"]): r for r in csv.DictReader(f)}
 
 
+def peak_load(table):
+    """The largest force component of a run: the scale of its differences."""
+    return max(max(abs(float(r[k])) for k in ("Fx_N", "Fy_N", "Fz_N")) for r in table.values()) or 1.0
+
+
 def compare(reference, other):
     """(largest relative difference, same rows) of `other` against `reference`."""
     worst, _, same = largest_difference(reference, other)
@@ -34,7 +39,7 @@ def compare(reference, other):
 
 def largest_difference(reference, other, columns=("Fx_N", "Fy_N", "Fz_N", "stroke_mm", "time_s")):
     """(largest relative difference, (column, increment, surface) of it, same rows)."""
-    peak = max(max(abs(float(r[k])) for k in ("Fx_N", "Fy_N", "Fz_N")) for r in reference.values()) or 1.0
+    peak = peak_load(reference)
     shared = reference.keys() & other.keys()
     worst, where = 0.0, None
     for key in sorted(shared):
@@ -64,7 +69,7 @@ def at_equal_time(reference, other, after, columns=("Fx_N", "Fy_N", "Fz_N")):
     """(largest, mean) difference of the forces `columns` past increment `after`,
     `other` interpolated linearly in time at `reference`'s rows, relative to
     the peak load."""
-    peak = max(max(abs(float(r[k])) for k in ("Fx_N", "Fy_N", "Fz_N")) for r in reference.values()) or 1.0
+    peak = peak_load(reference)
     series = {}
     for r in sorted(other.values(), key=lambda r: float(r["time_s"])):
         series.setdefault(r["surface"], []).append(r)
