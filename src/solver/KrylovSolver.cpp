@@ -178,15 +178,15 @@ KrylovSolver::KrylovSolver(SchurApproximation schur, const fem::Partition& parti
 KrylovSolver::~KrylovSolver() = default;
 
 void KrylovSolver::restart() {
-  impl_->create();
+  impl_->destroy();
 }
 
 void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse) {
   Impl& s = *impl_;
-  const bool fresh = s.matrix.wrap(a);
-  if (fresh) s.create();
+  const bool made = s.matrix.wrap(a) || !s.ksp; // a new matrix, or a restart: a new KSP
+  if (made) s.create();
   Mat m = s.matrix.mat();
-  if (reuse && !fresh) {
+  if (reuse && !made) {
     check(KSPSetReusePreconditioner(s.ksp, PETSC_TRUE), "reusing the preconditioner");
     return;
   }

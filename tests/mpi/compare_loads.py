@@ -66,27 +66,26 @@ def up_to(table, increment):
 
 
 def at_equal_time(reference, other, after, columns=("Fx_N", "Fy_N", "Fz_N")):
-    """(largest, mean) difference of the forces `columns` past increment `after`,
-    `other` interpolated linearly in time at `reference`'s rows, relative to
-    the peak load."""
+    """{column: differences} of the forces past increment `after`, `other`
+    interpolated linearly in time at `reference`'s rows, relative to the
+    peak load."""
     peak = peak_load(reference)
     series = {}
     for r in sorted(other.values(), key=lambda r: float(r["time_s"])):
         series.setdefault(r["surface"], []).append(r)
-    differences = []
+    times = {surface: [float(r["time_s"]) for r in rows_of] for surface, rows_of in series.items()}
+    differences = {k: [] for k in columns}
     for (increment, surface), r in reference.items():
-        rows_of = series.get(surface, [])
-        times = [float(o["time_s"]) for o in rows_of]
-        t = float(r["time_s"])
-        if int(increment) <= after or not times or not times[0] <= t <= times[-1]:
+        t, ts = float(r["time_s"]), times.get(surface, [])
+        if int(increment) <= after or not ts or not ts[0] <= t <= ts[-1]:
             continue
-        i = max(1, bisect.bisect_left(times, t))
-        a, b = rows_of[i - 1], rows_of[min(i, len(rows_of) - 1)]
-        w = (t - times[i - 1]) / (times[i] - times[i - 1]) if b is not a and times[i] > times[i - 1] else 0.0
+        i = bisect.bisect_left(ts, t)
+        a, b = series[surface][max(i - 1, 0)], series[surface][i]
+        w = (t - ts[i - 1]) / (ts[i] - ts[i - 1]) if i > 0 and ts[i] > ts[i - 1] else 1.0
         for k in columns:
             value = (1 - w) * float(a[k]) + w * float(b[k])
-            differences.append(abs(value - float(r[k])) / peak)
-    return max(differences, default=0.0), sum(differences) / max(len(differences), 1)
+            differences[k].append(abs(value - float(r[k])) / peak)
+    return differences
 
 
 def main():
@@ -109,11 +108,12 @@ def main():
         line += f", largest difference {worst:.2e} of the peak load{at}; press load Fz {press:.2e}"
         line += "" if same else " (the rows differ)"
         if remesh is not None:
-            largest = at_equal_time(everything, other_everything, remesh)[0]
-            press, mean = at_equal_time(everything, other_everything, remesh, ("Fz_N",))
+            differences = at_equal_time(everything, other_everything, remesh)
+            press = differences["Fz_N"]
+            largest = max((d for column in differences.values() for d in column), default=0.0)
             line += (f"; after it, at equal time ({len(everything) - len(reference)} / "
-                     f"{len(other_everything) - len(other)} rows): largest {largest:.2e}, press load Fz {press:.2e}"
-                     f" (mean {mean:.2e})")
+                     f"{len(other_everything) - len(other)} rows): largest {largest:.2e}, press load Fz"
+                     f" {max(press, default=0.0):.2e} (mean {sum(press) / max(len(press), 1):.2e})")
         print(line)
         status |= not same
     return status
