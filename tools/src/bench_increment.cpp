@@ -16,10 +16,15 @@
 //                zone (viscosity contrast about 3e3 at the regularisation).
 //
 //   anvil_bench PROBLEM NODES SOLVER [--newton N] [--schur bfbt|mass]
-//               [--no-reuse] [--threads T] [--verbose] [PETSc options]
+//               [--no-reuse] [--repeat R] [--threads T] [--verbose]
+//               [PETSc options]
 //   SOLVER: fgmres | mumps | umfpack | minres | cholmod_ldlt | eigen_ldlt | auto
 //   --newton N   at most N Newton iterations (default 60): per-iteration
 //                figures of a long solve without waiting for its end
+//   --repeat R   solve the increment R times from the same start, each with
+//                a new preconditioner, and give the figures of the last: a
+//                warm increment, as a run's later ones (the first also pays
+//                the kernel for each page of memory it touches first)
 #include "anvil/core/Timers.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
@@ -82,7 +87,7 @@ Problem make_problem(const std::string& name, long target_nodes) {
 
 constexpr const char* kUsage =
     "usage: anvil_bench newtonian|norton_hoff NODES SOLVER [--newton N] [--schur bfbt|mass] [--no-reuse] "
-    "[--threads T] [--verbose] [PETSc options]\n";
+    "[--repeat R] [--threads T] [--verbose] [PETSc options]\n";
 
 } // namespace
 
@@ -97,6 +102,7 @@ int main(int argc, char** argv) {
     settings.max_iterations = 60;
     settings.verbose = false;
     int threads = 0; // 0: TBB's choice (every core the process may use)
+    int repeat = 1;
     std::vector<char*> petsc_arguments = {argv[0]};
     for (int i = 4; i < argc; ++i) {
       const std::string arg = argv[i];
@@ -106,6 +112,8 @@ int main(int argc, char** argv) {
         linear.schur = solver::schur_approximation(argv[++i]);
       else if (arg == "--threads" && i + 1 < argc)
         threads = std::atoi(argv[++i]);
+      else if (arg == "--repeat" && i + 1 < argc)
+        repeat = std::max(1, std::atoi(argv[++i]));
       else if (arg == "--no-reuse")
         linear.reuse_preconditioner = false;
       else if (arg == "--verbose")
@@ -127,9 +135,17 @@ int main(int argc, char** argv) {
     Timers timers;
     log::set_quiet(!settings.verbose);
     solver::IncrementSolver solver(problem.mesh, problem.imposed.prescribed, linear, timers);
-    fem::BodyUnknowns unknowns{problem.imposed.values, Eigen::VectorXd::Zero(3 * problem.mesh.tet_count())};
-    const auto report =
-        solver.solve(problem.mesh, *problem.law, {}, problem.imposed.nodal_forces, {}, settings, unknowns);
+    Timers before; // the timers before the last increment
+    int setups_before = 0;
+    solver::NewtonReport report;
+    for (int r = 0; r < repeat; ++r) {
+      if (r > 0) solver.restart_linear_solver();
+      before = timers;
+      setups_before = solver.linear_solver().setups();
+      fem::BodyUnknowns unknowns{problem.imposed.values, Eigen::VectorXd::Zero(3 * problem.mesh.tet_count())};
+      report = solver.solve(problem.mesh, *problem.law, {}, problem.imposed.nodal_forces, {}, settings, unknowns);
+    }
+    const auto seconds = [&](const char* phase) { return timers.seconds(phase) - before.seconds(phase); };
 
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
@@ -148,18 +164,18 @@ int main(int argc, char** argv) {
     // once per mesh in a run: shown apart, not in the per-solve set-up.
     const bool predictor = !problem.law->is_linear();
     const double solves = static_cast<double>(report.iterations.size()) + (predictor ? 1.0 : 0.0);
-    const double pattern = timers.seconds("matrix pattern");
-    const double setup = timers.seconds("solver setup") - pattern;
-    const double total = timers.seconds("assembly") + setup + timers.seconds("solve");
+    const double pattern = timers.seconds("matrix pattern"); // the first increment's
+    const double setup = seconds("solver setup") - seconds("matrix pattern");
+    const double total = seconds("assembly") + setup + seconds("solve");
     std::printf("%-11s nodes %7d  unknowns %8d  %-7s newton %2zu%s (%s)  per solve: assembly %6.2f s  setup %6.2f s  "
                 "solve %6.2f s  total %6.2f s  krylov %5.1f  setups %d  increment %7.2f s  pattern %5.2f s  "
                 "peak %s GB  processes %d\n",
                 argv[1], problem.mesh.node_count(), solver.free_count(),
                 solver::to_string(solver.linear_solver().kind()).c_str(), report.iterations.size(),
                 predictor ? "+1" : "", report.converged ? "converged" : report.failure.c_str(),
-                timers.seconds("assembly") / solves, setup / solves, timers.seconds("solve") / solves, total / solves,
-                report.linear_iterations / solves, solver.linear_solver().setups(), total + pattern, pattern,
-                peak_text.c_str(), processes::count());
+                seconds("assembly") / solves, setup / solves, seconds("solve") / solves, total / solves,
+                report.linear_iterations / solves, solver.linear_solver().setups() - setups_before,
+                total + seconds("matrix pattern"), pattern, peak_text.c_str(), processes::count());
     return report.converged ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "anvil_bench: %s\n", e.what());
