@@ -1,8 +1,10 @@
 // anvil: command-line entry point. Catches every error once, prints one
 // clear message and exits non-zero (STYLE "Input and errors").
 #include "anvil/core/error.h"
+#include "anvil/core/interrupt.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
+#include "anvil/core/subprocess.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Simulation.h"
 #include "anvil/scene/effects.h"
@@ -14,15 +16,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <fcntl.h>
 #include <filesystem>
 #include <optional>
-#include <spawn.h>
 #include <string>
-#include <sys/wait.h>
 #include <unistd.h>
-
-extern char** environ;
 #include <vector>
 
 namespace {
@@ -112,16 +109,10 @@ int render(int argc, char** argv) {
 void final_picture(const std::string& directory, bool mirror) {
   std::vector<std::string> picture = {directory, "--out", directory + "/final.png"};
   if (mirror) picture.push_back("--mirror");
-  std::vector<std::string> args = renderer_command(picture);
-  std::vector<char*> c_args = c_arguments(args);
-  pid_t child = 0;
-  posix_spawn_file_actions_t quiet;
-  posix_spawn_file_actions_init(&quiet);
-  posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
-  int status = -1;
-  if (posix_spawnp(&child, c_args[0], &quiet, nullptr, c_args.data(), environ) == 0) waitpid(child, &status, 0);
-  posix_spawn_file_actions_destroy(&quiet);
-  if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0))
+  anvil::subprocess::Options options;
+  options.quiet_errors = false; // anvil render says why it failed
+  const int status = anvil::subprocess::run(renderer_command(picture), options);
+  if (status != 0)
     std::fprintf(stderr, "anvil: final.png not written (anvil render %s failed; output.picture: false skips it)\n",
                  directory.c_str());
 }
@@ -141,9 +132,43 @@ int report(const std::exception& e, bool say) {
   return 5;
 }
 
+/// `text` as one word for a POSIX shell: as it is when it holds only safe
+/// characters, else in single quotes.
+std::string shell_word(const std::string& text) {
+  const bool safe = !text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                            "0123456789_-./=:,+[]") == std::string::npos;
+  if (safe) return text;
+  std::string quoted = "'";
+  for (const char c : text)
+    quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+/// What a run stopped by SIGINT or SIGTERM says: where its last accepted
+/// increment is and the command that resumes it.
+void say_interrupted(const anvil::scene::RunEnd& end, const std::string& program, const std::string& case_file,
+                     const std::vector<std::string>& overrides, const std::string& directory) {
+  if (!end.checkpointed) {
+    std::fprintf(stderr,
+                 "anvil: %s; the results so far are in %s/, but no checkpoint was written (output.checkpoint_every: "
+                 "0): the run cannot be resumed\n",
+                 end.stop.c_str(), directory.c_str());
+    return;
+  }
+  std::string command = shell_word(program) + " run " + shell_word(case_file);
+  for (const std::string& o : overrides)
+    command += " --set " + shell_word(o);
+  command += " --resume " + shell_word(directory);
+  std::fprintf(stderr,
+               "anvil: %s; the last accepted increment is checkpointed in %s/checkpoint.h5; resume with:\n  %s\n",
+               end.stop.c_str(), directory.c_str(), command.c_str());
+}
+
 /// How long the processes of a run may take to reach its end one after the
 /// other (s): rank 0 writes the last output while the others wait.
 constexpr double kEndTogether = 10.0;
+/// How long the others wait for rank 0's final picture (s).
+constexpr double kPictureTime = 120.0;
 
 } // namespace
 
@@ -223,6 +248,7 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     return report(e, true);
   }
+  anvil::interrupt::install(); // after PETSc, whose own handlers it replaces
   int code = 0;
   std::string picture_directory;
   bool picture_mirror = false;
@@ -230,13 +256,18 @@ int main(int argc, char** argv) {
     // Every process reads the case and runs the same time loop (DESIGN §2).
     const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
     const anvil::scene::RunEnd end = anvil::scene::run(c, options);
-    if (c.write_picture && c.write_vtk) picture_directory = anvil::scene::output_directory(c, options);
+    // An interrupted run ends as soon as it can: no picture.
+    if (c.write_picture && c.write_vtk && !end.signal) picture_directory = anvil::scene::output_directory(c, options);
     picture_mirror = c.picture_mirror;
     if (anvil::processes::root())
       for (const std::string& unused : anvil::solver::PetscSession::unused_options())
         std::fprintf(stderr, "anvil: warning: PETSc option %s was not used by the solver of this run (misspelt?)\n",
                      unused.c_str());
-    if (!end.complete) {
+    if (end.signal) {
+      if (anvil::processes::root())
+        say_interrupted(end, argv[0], case_file, overrides, anvil::scene::output_directory(c, options));
+      code = 128 + end.signal;
+    } else if (!end.complete) {
       if (anvil::processes::root()) std::fprintf(stderr, "anvil: run stopped: %s\n", end.stop.c_str());
       code = 4;
     }
@@ -253,6 +284,11 @@ int main(int argc, char** argv) {
     code = report(e, anvil::processes::root());
   }
   if (code == 0 && !anvil::processes::all_ended(kEndTogether)) anvil::processes::abort_all(5);
-  if (!picture_directory.empty() && anvil::processes::root()) final_picture(picture_directory, picture_mirror);
+  if (!picture_directory.empty()) {
+    if (anvil::processes::root()) final_picture(picture_directory, picture_mirror);
+    // The others wait for it: mpirun stops every process when one ends with
+    // a non-zero code, rank 0 too, in the middle of its picture.
+    anvil::processes::all_ended(kPictureTime);
+  }
   return code;
 }

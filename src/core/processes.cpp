@@ -51,6 +51,13 @@ int minimum(int value) {
   return smallest;
 }
 
+int maximum(int value) {
+  if (count() == 1) return value;
+  int largest = value;
+  MPI_Allreduce(&value, &largest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  return largest;
+}
+
 void broadcast(std::string& bytes) {
   if (count() == 1) return;
   std::uint64_t size = bytes.size();

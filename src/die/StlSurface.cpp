@@ -4,6 +4,7 @@
 #include "anvil/die/StlSurface.h"
 
 #include "anvil/core/error.h"
+#include "anvil/core/input_file.h"
 #include "anvil/core/log.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -132,7 +133,8 @@ void check_finite_vertices(const std::string& path, const std::string& at) {
 std::unique_ptr<DieSurface> read_stl_surface(const std::string& path, const std::string& source,
                                              const Eigen::Vector3d& offset) {
   const std::string at = source + ": STL die '" + path + "'";
-  if (!std::filesystem::exists(path)) throw InputError(at + ": file not found");
+  if (const std::string problem = input_file_problem(path, kMaxStlBytes); !problem.empty())
+    throw InputError(at + ": " + problem);
   check_finite_vertices(path, at);
   std::vector<Point3> points;
   std::vector<std::array<std::size_t, 3>> triangles;

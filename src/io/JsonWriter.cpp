@@ -92,9 +92,48 @@ JsonWriter& JsonWriter::value(std::string_view text) {
   return *this;
 }
 
+namespace {
+
+/// Length of the well-formed UTF-8 sequence that starts `text` (1-4), or 0
+/// when it is not one (a stray or overlong byte, a surrogate, a cut sequence).
+std::size_t utf8_sequence(std::string_view text) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const unsigned char lead = byte(0);
+  if (lead < 0x80) return 1;
+  std::size_t length = 0;
+  unsigned low = 0x80, high = 0xbf; // allowed range of the second byte
+  if (lead >= 0xc2 && lead <= 0xdf)
+    length = 2;
+  else if (lead >= 0xe0 && lead <= 0xef) {
+    length = 3;
+    if (lead == 0xe0) low = 0xa0;  // overlong
+    if (lead == 0xed) high = 0x9f; // surrogates
+  } else if (lead >= 0xf0 && lead <= 0xf4) {
+    length = 4;
+    if (lead == 0xf0) low = 0x90;  // overlong
+    if (lead == 0xf4) high = 0x8f; // beyond U+10FFFF
+  } else
+    return 0;
+  if (text.size() < length || byte(1) < low || byte(1) > high) return 0;
+  for (std::size_t i = 2; i < length; ++i)
+    if (byte(i) < 0x80 || byte(i) > 0xbf) return 0;
+  return length;
+}
+
+} // namespace
+
 void JsonWriter::write_string(std::string_view text) {
+  // JSON text is UTF-8: a byte that does not begin a well-formed sequence
+  // (a case file in Latin-1, say) is written as U+FFFD.
   out_ << '"';
-  for (const char ch : text) {
+  while (!text.empty()) {
+    const char ch = text.front();
+    const std::size_t length = utf8_sequence(text);
+    if (length == 0) {
+      out_ << "\\ufffd";
+      text.remove_prefix(1);
+      continue;
+    }
     if (ch == '"' || ch == '\\')
       out_ << '\\' << ch;
     else if (static_cast<unsigned char>(ch) < 0x20) {
@@ -102,7 +141,8 @@ void JsonWriter::write_string(std::string_view text) {
       std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(ch));
       out_ << escaped;
     } else
-      out_ << ch;
+      out_ << text.substr(0, length);
+    text.remove_prefix(length);
   }
   out_ << '"';
 }

@@ -1,5 +1,7 @@
 #include "anvil/io/load_plot.h"
 
+#include "anvil/core/subprocess.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -7,6 +9,21 @@
 #include <sstream>
 
 namespace anvil::io {
+namespace {
+
+/// `text` as a single-quoted gnuplot string: a quote doubled, control
+/// characters (a newline would end the command) as spaces.
+std::string gnuplot_quoted(const std::string& text) {
+  std::string quoted = "'";
+  for (const char c : text)
+    if (c == '\'')
+      quoted += "''";
+    else
+      quoted += static_cast<unsigned char>(c) < 0x20 ? ' ' : c;
+  return quoted + "'";
+}
+
+} // namespace
 
 std::string write_load_plot(const std::string& directory, const std::string& title,
                             const std::vector<std::string>& surfaces, const std::vector<scene::LoadRecord>& loads) {
@@ -15,7 +32,10 @@ std::string write_load_plot(const std::string& directory, const std::string& tit
   for (const scene::LoadRecord& r : loads)
     press[r.increment] = std::max(press[r.increment], r.stroke);
   // One data block per surface (gnuplot's "index"), stroke and press load in kN.
-  const std::string data = directory + "/loads.png.dat", png = directory + "/loads.png";
+  // gnuplot runs in `directory` and reads and writes bare file names there: no
+  // folder name enters its script.
+  const std::string data_name = "loads.png.dat", png_name = "loads.png";
+  const std::string data = directory + "/" + data_name, png = directory + "/" + png_name;
   {
     std::ofstream out(data);
     out.precision(10);
@@ -27,18 +47,20 @@ std::string write_load_plot(const std::string& directory, const std::string& tit
     if (!out) return "cannot write " + data;
   }
   std::ostringstream script;
-  script << "set terminal pngcairo size 900,600 noenhanced\nset output '" << png << ".tmp'\n"
-         << "set title 'Press load against stroke: " << title << "'\nset xlabel 'press stroke (mm)'\n"
+  script << "set terminal pngcairo size 900,600 noenhanced\nset output '" << png_name << ".tmp'\n"
+         << "set title " << gnuplot_quoted("Press load against stroke: " + title)
+         << "\nset xlabel 'press stroke (mm)'\n"
          << "set ylabel 'press load Fz (kN)'\nset grid\nset key top left\nplot ";
   for (std::size_t s = 0; s < surfaces.size(); ++s)
-    script << (s ? ", " : "") << "'" << data << "' index " << s << " using 1:2 with linespoints pointsize 0.5 title '"
-           << surfaces[s] << "'";
+    script << (s ? ", " : "") << "'" << data_name << "' index " << s
+           << " using 1:2 with linespoints pointsize 0.5 title " << gnuplot_quoted(surfaces[s]);
   script << "\n";
-  std::FILE* gnuplot = popen("gnuplot 2>/dev/null", "w");
-  const bool sent = gnuplot && std::fputs(script.str().c_str(), gnuplot) >= 0;
-  const int status = gnuplot ? pclose(gnuplot) : -1;
+  subprocess::Options options;
+  options.directory = directory;
+  options.input = script.str();
+  const int status = subprocess::run({"gnuplot"}, options);
   std::filesystem::remove(data);
-  if (!sent || status != 0) {
+  if (status != 0) {
     std::filesystem::remove(png + ".tmp");
     return "gnuplot is not installed or failed (tools/setup installs gnuplot-nox)";
   }

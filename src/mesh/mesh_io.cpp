@@ -1,6 +1,7 @@
 #include "anvil/mesh/mesh_io.h"
 
 #include "anvil/core/error.h"
+#include "anvil/core/input_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -14,11 +15,19 @@
 namespace anvil::mesh {
 namespace {
 
+/// `path` when it is a mesh file that may be opened (a regular file of at
+/// most kMaxMeshBytes); throws InputError otherwise.
+const std::string& readable(const std::string& path) {
+  if (const std::string problem = input_file_problem(path, kMaxMeshBytes); !problem.empty())
+    throw InputError(path + ": cannot open the mesh file: " + problem);
+  return path;
+}
+
 /// Whitespace-separated tokens of a text file with the line each came from,
 /// so that every error names file and line.
 class Tokens {
 public:
-  explicit Tokens(const std::string& path) : path_(path), in_(path) {
+  explicit Tokens(const std::string& path) : path_(path), in_(readable(path)) {
     if (!in_) throw InputError(path + ": cannot open the mesh file");
     std::error_code error;
     bytes_ = static_cast<long>(std::filesystem::file_size(path, error));

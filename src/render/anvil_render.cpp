@@ -5,6 +5,7 @@
 // VTK renders through X only (TECH-NOTES "Off-screen PNG"): `anvil render`
 // starts this program under xvfb-run when there is no display. Kept apart
 // from the solver: only this program links VTK's rendering.
+#include "anvil/core/subprocess.h"
 #include "anvil/io/RunResults.h"
 
 #include <vtkActor.h>
@@ -32,6 +33,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -84,12 +86,15 @@ std::array<double, 2> readable(std::array<double, 2> range) {
 
 constexpr int kFrameCentiseconds = 30; ///< how long an animation shows each frame
 
-/// Runs `command` (a shell line) that writes `file`.part, and renames that to
-/// `file` when it succeeds: an animation is there whole or not at all.
-bool run_into(const std::string& command, const std::string& file) {
-  const std::string part = file + ".part";
+/// Runs `arguments` in `folder` (never through a shell), the program writing
+/// `name`.part there, and renames that to `name` when it succeeds: an
+/// animation is there whole or not at all.
+bool run_into(const std::vector<std::string>& arguments, const std::filesystem::path& folder, const std::string& name) {
+  const std::filesystem::path part = folder / (name + ".part"), file = folder / name;
   std::error_code ignored;
-  if (std::system(command.c_str()) == 0 && std::filesystem::exists(part, ignored)) {
+  anvil::subprocess::Options in_folder;
+  in_folder.directory = folder.string();
+  if (anvil::subprocess::run(arguments, in_folder) == 0 && std::filesystem::exists(part, ignored)) {
     std::filesystem::rename(part, file);
     std::printf("%s\n", file.c_str());
     return true;
@@ -98,33 +103,46 @@ bool run_into(const std::string& command, const std::string& file) {
   return false;
 }
 
-/// The frames as an animated GIF by ImageMagick (Debian's imagemagick: tools/setup).
-void animate_gif(const std::vector<std::string>& frames, const std::string& file) {
-  std::string command = "convert -delay " + std::to_string(kFrameCentiseconds) + " -loop 0";
-  for (const std::string& f : frames)
-    command += " '" + f + "'";
-  command += " 'GIF:" + file + ".part'";
-  if (!run_into(command, file))
-    std::fprintf(stderr, "anvil render: no GIF written (ImageMagick's convert failed or is missing)\n");
+/// The frames (file names in `folder`) as an animated GIF by ImageMagick
+/// (Debian's imagemagick: tools/setup). False when it could not be made.
+bool animate_gif(const std::vector<std::string>& frames, const std::filesystem::path& folder, const std::string& name) {
+  std::vector<std::string> arguments = {"convert", "-delay", std::to_string(kFrameCentiseconds), "-loop", "0"};
+  arguments.insert(arguments.end(), frames.begin(), frames.end());
+  arguments.push_back("GIF:" + name + ".part");
+  if (run_into(arguments, folder, name)) return true;
+  std::fprintf(stderr, "anvil render: %s not written (ImageMagick's convert failed or is missing)\n",
+               (folder / name).c_str());
+  return false;
 }
 
 /// The frames as an H.264 MP4 by ffmpeg when it is installed (tools/setup
-/// does not install it: the GIF is what every machine gets).
-void animate_mp4(const std::vector<std::string>& frames, const std::string& file) {
-  const std::string list = file + ".frames";
+/// does not install it: the GIF is what every machine gets). False when it
+/// could not be made.
+bool animate_mp4(const std::vector<std::string>& frames, const std::filesystem::path& folder, const std::string& name) {
+  const std::string list = name + ".frames";
   {
-    std::ofstream out(list);
-    // Absolute names: the concat demuxer reads them relative to the list.
+    // The concat demuxer reads the names relative to the list, in the same folder.
+    std::ofstream out(folder / list);
     for (const std::string& f : frames)
-      out << "file '" << std::filesystem::absolute(f).string() << "'\nduration " << 0.01 * kFrameCentiseconds << "\n";
-    out << "file '" << std::filesystem::absolute(frames.back()).string()
-        << "'\n"; // the concat demuxer holds the last frame only when named again
+      out << "file '" << f << "'\nduration " << 0.01 * kFrameCentiseconds << "\n";
+    out << "file '" << frames.back() << "'\n"; // the concat demuxer holds the last frame only when named again
   }
-  const std::string command = "ffmpeg -nostdin -loglevel error -y -f concat -safe 0 -i '" + list +
-                              "' -vf 'fps=10,format=yuv420p' -c:v libx264 -f mp4 '" + file + ".part'";
-  if (!run_into(command, file)) std::fprintf(stderr, "anvil render: no MP4 written (ffmpeg failed)\n");
+  const bool made = run_into({"ffmpeg", "-nostdin", "-loglevel", "error", "-y", "-f", "concat", "-safe", "0", "-i",
+                              list, "-vf", "fps=10,format=yuv420p", "-c:v", "libx264", "-f", "mp4", name + ".part"},
+                             folder, name);
+  if (!made) std::fprintf(stderr, "anvil render: %s not written (ffmpeg failed)\n", (folder / name).c_str());
   std::error_code ignored;
-  std::filesystem::remove(list, ignored);
+  std::filesystem::remove(folder / list, ignored);
+  return made;
+}
+
+/// The value of --frames: a whole number from 1 to 10000.
+int frame_count(const std::string& text) {
+  int n = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (error != std::errc() || end != text.data() + text.size() || n < 1 || n > 10000)
+    throw std::runtime_error("--frames needs a whole number from 1 to 10000, not '" + text + "'");
+  return n;
 }
 
 struct Options {
@@ -248,11 +266,19 @@ vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEn
   return picture;
 }
 
+/// Writes `picture` to `file` whole (through `file`.part) or throws naming it.
 void write_png(vtkImageData* picture, const std::string& file) {
+  const std::string part = file + ".part";
   vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(file.c_str());
+  writer->SetFileName(part.c_str());
   writer->SetInputData(picture);
   writer->Write();
+  std::error_code error;
+  if (writer->GetErrorCode() == 0 && std::filesystem::exists(part, error)) std::filesystem::rename(part, file, error);
+  if (writer->GetErrorCode() != 0 || error || !std::filesystem::exists(file)) {
+    std::filesystem::remove(part, error);
+    throw std::runtime_error("cannot write " + file);
+  }
 }
 
 /// The frames at half size, two to a row, in order (a report's page).
@@ -290,6 +316,7 @@ vtkSmartPointer<vtkImageData> contact_sheet(const std::vector<vtkSmartPointer<vt
 } // namespace
 
 int main(int argc, char** argv) {
+  vtkObject::GlobalWarningDisplayOff(); // failures are said once, by us, naming the file
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -303,7 +330,7 @@ int main(int argc, char** argv) {
       else if (arg == "--view")
         o.view = value();
       else if (arg == "--frames")
-        o.frames = std::stoi(value());
+        o.frames = frame_count(value());
       else if (arg == "--mirror")
         o.mirror = true;
       else if (arg == "--sheet")
@@ -358,15 +385,15 @@ int main(int argc, char** argv) {
       }
     }
     std::vector<vtkSmartPointer<vtkImageData>> pictures;
-    std::vector<std::string> files;
+    std::vector<std::string> files; // in `folder`
     for (std::size_t k = 0; k < chosen.size(); ++k) {
       char name[64];
       std::snprintf(name, sizeof name, "%s_%06d.png", o.field.empty() ? "default" : o.field.c_str(),
                     chosen[k]->increment);
       pictures.push_back(render(o, *chosen[k], bodies[k], loads, load_surface));
-      files.push_back((folder / name).string());
-      write_png(pictures.back(), files.back());
-      std::printf("%s\n", files.back().c_str());
+      files.push_back(name);
+      write_png(pictures.back(), (folder / name).string());
+      std::printf("%s\n", (folder / name).c_str());
     }
     const std::string stem = (folder / (o.field.empty() ? "default" : o.field)).string();
     if (o.sheet && pictures.size() > 1) {
@@ -374,8 +401,10 @@ int main(int argc, char** argv) {
       std::printf("%s\n", (stem + "_sheet.png").c_str());
     }
     if (pictures.size() > 1) {
-      animate_gif(files, stem + ".gif");
-      if (std::system("command -v ffmpeg >/dev/null 2>&1") == 0) animate_mp4(files, stem + ".mp4");
+      const std::string animation = o.field.empty() ? "default" : o.field;
+      bool made = animate_gif(files, folder, animation + ".gif");
+      if (anvil::subprocess::on_path("ffmpeg")) made = animate_mp4(files, folder, animation + ".mp4") && made;
+      if (!made) return 1;
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "anvil render: %s\n", e.what());

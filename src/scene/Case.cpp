@@ -1,5 +1,6 @@
 #include "anvil/scene/Case.h"
 
+#include "anvil/core/input_file.h"
 #include "anvil/solver/PetscSession.h"
 
 #include "checked_yaml.h"
@@ -10,12 +11,6 @@
 
 namespace anvil::scene {
 namespace {
-
-std::string relative_to(const std::string& base_file, const std::string& path) {
-  const std::filesystem::path p(path);
-  if (p.is_absolute()) return path;
-  return (std::filesystem::path(base_file).parent_path() / p).lexically_normal().string();
-}
 
 BoundaryKind boundary_kind(const std::string& type) {
   if (type == "velocity") return BoundaryKind::velocity;
@@ -132,7 +127,7 @@ void read_dies(const CheckedYaml& doc, Case& c) {
     if (static_cast<bool>(n["stl"]) == static_cast<bool>(n["plane"]))
       doc.fail(n, shown, "give exactly one surface: 'stl' (a file) or 'plane'");
     if (n["stl"]) {
-      d.stl_file = relative_to(doc.path(), n["stl"].Scalar());
+      d.stl_file = doc.input_file(n, "stl", shown, kMaxStlBytes);
       if (n["offset"]) d.stl_offset = doc.vector(n, "offset", "dies[].offset");
     } else {
       doc.forbid(n, "offset", shown, "a plane die (its 'point' places it)");
@@ -333,7 +328,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   for_each_entry(bodies, "bodies", [&](const YAML::Node& b, const std::string& shown) {
     BodySpec body;
     body.name = doc.text(b, "name", "bodies[].name");
-    body.material_file = relative_to(path, doc.text(b, "material", "bodies[].material"));
+    body.material_file = doc.input_file(b, "material", shown, kMaxYamlBytes);
     if (b["temperature"]) body.temperature = doc.number(b, "temperature", "bodies[].temperature");
     const YAML::Node m = b["mesh"];
     MeshSpec& mesh = body.mesh;
@@ -342,7 +337,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     if (has_file == has_generate)
       doc.fail(m, shown + ".mesh", "give exactly one of 'file' (a mesh file) or 'generate' (box or cylinder)");
     if (has_file)
-      mesh.file = relative_to(path, m["file"].Scalar());
+      mesh.file = doc.input_file(m, "file", shown + ".mesh", kMaxMeshBytes);
     else {
       mesh.generate = m["generate"].Scalar();
       mesh.element_size = doc.number(m, "element_size", "bodies[].mesh.element_size");

@@ -12,6 +12,7 @@
 // (8: the heat budget and the transfer time done; both absent before they
 // were kept), scalar attributes on the root group.
 #include "anvil/core/error.h"
+#include "anvil/core/input_file.h"
 #include "anvil/core/processes.h"
 #include "anvil/io/atomic_file.h"
 #include "anvil/mesh/TetMesh.h"
@@ -383,9 +384,18 @@ RunState read_state(hid_t file, const std::string& path) {
 }
 } // namespace
 
+namespace {
+/// Throws InputError unless `path` is a checkpoint file that may be opened.
+void require_checkpoint_file(const std::string& path) {
+  const std::string problem = input_file_problem(path, kMaxCheckpointBytes);
+  if (problem == "file not found") throw InputError(path + ": no checkpoint to resume from");
+  if (!problem.empty()) throw InputError(path + ": " + problem);
+}
+} // namespace
+
 RunState read_checkpoint(const std::string& path) {
   silence_hdf5();
-  if (!std::filesystem::exists(path)) throw InputError(path + ": no checkpoint to resume from");
+  require_checkpoint_file(path);
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) throw InputError(path + ": not a readable HDF5 checkpoint (damaged, or not a checkpoint)");
   return read_state(file, path);
@@ -411,6 +421,7 @@ void share_state(RunState& state) {
 
 std::vector<std::string> read_checkpoint_fingerprint(const std::string& path) {
   silence_hdf5();
+  require_checkpoint_file(path);
   Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   if (!file.valid()) throw InputError(path + ": not a readable HDF5 checkpoint (damaged, or not a checkpoint)");
   std::vector<std::string> lines;

@@ -88,6 +88,26 @@ void check_stops_reachable(const Scene& scene) {
       throw InputError(t.source + ": key 'time.stop.stroke': die '" + scene.dies[t.stroke_die].name +
                        "' does not move, its stroke stays 0 mm");
     check_count(t.final_stroke / speed, "the final stroke of " + std::to_string(t.final_stroke) + " mm");
+    // Two flat dies facing each other along the press axis meet after a
+    // known travel: a stroke at or past it can never be reached.
+    const int other = 1 - t.stroke_die;
+    const auto flat_along_z = [&](int d) {
+      return c.dies[d].stl_file.empty() && std::abs(c.dies[d].plane_normal.normalized().z()) > 1.0 - 1e-9;
+    };
+    if (scene.dies.size() == 2 && judged(other) && flat_along_z(0) && flat_along_z(1)) {
+      int upper = 0;
+      const double gap = initial_die_gap(scene.dies, upper);
+      const double closing = velocity(1 - upper).z() - velocity(upper).z();
+      if (gap > 0.0 && closing > 0.0 && t.final_stroke >= speed * gap / closing) {
+        char text[400];
+        std::snprintf(text, sizeof text,
+                      ": key 'time.stop.stroke': %g mm is never reached: die '%s' meets die '%s' after a stroke of "
+                      "%.4g mm (the dies are %.4g mm apart at the start); give a stroke below that, or a gap stop",
+                      t.final_stroke, scene.dies[t.stroke_die].name.c_str(), scene.dies[other].name.c_str(),
+                      speed * gap / closing, gap);
+        throw InputError(t.source + text);
+      }
+    }
   }
   if (t.final_gap > 0.0 && judged(scene.upper_die) && judged(1 - scene.upper_die)) {
     const double closing = velocity(1 - scene.upper_die).z() - velocity(scene.upper_die).z();

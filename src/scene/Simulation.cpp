@@ -5,6 +5,7 @@
 
 #include "anvil/core/Timers.h"
 #include "anvil/core/error.h"
+#include "anvil/core/interrupt.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
 #include "anvil/io/RunWriter.h"
@@ -173,15 +174,13 @@ void finish(const Scene& scene, const Discretisation& disc, RunState& state, io:
 }
 
 /// The changes of the case since the checkpoint at `path`: refused unless
-/// the user allowed them, then listed in the log.
-void compare_with_checkpoint(const Scene& scene, const std::string& path, bool allow_changes) {
+/// the user allowed them; the lines to log (anvil.log is not open yet).
+std::vector<std::string> compare_with_checkpoint(const Scene& scene, const std::string& path, bool allow_changes) {
   const std::vector<std::string> before = read_checkpoint_fingerprint(path);
-  if (before.empty()) {
-    log::info("checkpoint written by an older anvil: the case is not compared with the run it continues");
-    return;
-  }
+  if (before.empty())
+    return {"checkpoint written by an older anvil: the case is not compared with the run it continues"};
   const std::vector<std::string> changes = fingerprint_changes(before, scene.fingerprint);
-  if (changes.empty()) return;
+  if (changes.empty()) return {};
   if (!allow_changes) {
     std::string list;
     for (std::size_t i = 0; i < changes.size() && i < 8; ++i)
@@ -190,9 +189,11 @@ void compare_with_checkpoint(const Scene& scene, const std::string& path, bool a
     throw InputError(path + ": the case changed since this checkpoint was written (" + list +
                      "); resume anyway with --allow-changes");
   }
-  log::info("resuming with %zu change(s) since the checkpoint (--allow-changes):", changes.size());
+  std::vector<std::string> lines = {"resuming with " + std::to_string(changes.size()) +
+                                    " change(s) since the checkpoint (--allow-changes):"};
   for (const std::string& change : changes)
-    log::info("  %s", change.c_str());
+    lines.push_back("  " + change);
+  return lines;
 }
 
 /// Creates the output folder `out`, or throws InputError saying why it cannot
@@ -227,10 +228,11 @@ RunEnd run(const Case& c, const RunOptions& options) {
   const Scene scene(c, timers);
   const std::string out = output_directory(c, options);
   RunState state;
+  std::vector<std::string> changes;
   if (options.resume) {
     const std::string checkpoint = out + "/checkpoint.h5";
     state = read_checkpoint(checkpoint);
-    compare_with_checkpoint(scene, checkpoint, options.allow_changes);
+    changes = compare_with_checkpoint(scene, checkpoint, options.allow_changes);
     check_resumable(scene, state, checkpoint);
     state.inside_dies = inside_dies(scene, state);
   } else {
@@ -243,6 +245,8 @@ RunEnd run(const Case& c, const RunOptions& options) {
   io::RunWriter writer(out, state, options.resume);
   if (options.resume)
     log::info("resumed from %s/checkpoint.h5 at increment %d, t = %.6g s", out.c_str(), state.increment, state.time);
+  for (const std::string& line : changes)
+    log::info("%s", line.c_str());
 
   if (!c.time.enabled) {
     log::info("increment 1");
@@ -271,7 +275,16 @@ RunEnd run(const Case& c, const RunOptions& options) {
   time_left.update(clock.progress(state), seconds_since(start));
   solver::NewtonReport last;
   Stop stop;
+  // SIGINT or SIGTERM: the increment under way is abandoned, the last
+  // accepted one written and checkpointed (core/interrupt).
+  auto interrupted = [&](int signal) {
+    log::info("interrupted by %s during increment %d: increment %d (t = %.6g s) is the last accepted one",
+              interrupt::name(signal), state.increment + 1, state.increment, state.time);
+    finish(scene, disc, state, writer, last, timers, start);
+    return RunEnd{std::string("interrupted by ") + interrupt::name(signal), false, signal, c.checkpoint_every > 0};
+  };
   while (!(stop = clock.stop(state))) {
+    if (const int signal = interrupt::requested()) return interrupted(signal);
     const Clock::time_point increment_start = Clock::now();
     TimeStep step = clock.next_step(state);
     IncrementOutcome inc = solve_coupled(scene, disc, state, step, timers);
@@ -283,6 +296,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
     // not at all; starting again from the state would walk the same path).
     bool second_budget = true;
     for (int cuts = 0; !inc.converged() || !accept_increment(scene, disc, inc, state, timers);) {
+      if (inc.report.interrupted) return interrupted(interrupt::requested());
       const bool on_its_way = inc.report.on_its_way();
       const fem::BodyUnknowns stopped_at = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};
       solver::NewtonReport first_budget;
@@ -298,7 +312,8 @@ RunEnd run(const Case& c, const RunOptions& options) {
           finish(scene, disc, state, writer, last, timers, start);
           throw RunError("increment " + std::to_string(state.increment + 1) + " at t = " + std::to_string(state.time) +
                          " s: " + inc.failure + " after " + std::to_string(c.time.max_cuts) +
-                         " time-step cuts; the last good increment (" + std::to_string(state.increment) +
+                         " time-step cuts, heading for the stop criterion (" + clock.describe_stop(state) +
+                         "); the last good increment (" + std::to_string(state.increment) +
                          ") is written and checkpointed in " + out);
         }
         step.length = *shorter;

@@ -1,5 +1,7 @@
 #include "checked_yaml.h"
 
+#include "anvil/core/input_file.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -78,8 +80,8 @@ std::vector<std::string> flatten(const YAML::Node& node) {
 CheckedYaml::CheckedYaml(const std::string& path, const std::vector<KeySpec>& schema,
                          const std::vector<std::string>& overrides)
     : path_(path), schema_(schema) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) throw InputError(path + ": is a folder, not a YAML file");
+  if (const std::string problem = input_file_problem(path, kMaxYamlBytes); !problem.empty())
+    throw InputError(path + ": " + (problem == "file not found" ? "cannot open the file: not found" : problem));
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file");
   try {
@@ -173,6 +175,17 @@ void CheckedYaml::apply_override(const std::string& text) {
       if (step.index == PathStep::Index::every || e == step.element) assign_or_descend(list, e);
   };
   walk(walk, root_, 0);
+}
+
+std::string CheckedYaml::input_file(const YAML::Node& map, const std::string& key, const std::string& shown,
+                                    std::uintmax_t max_bytes) const {
+  const std::filesystem::path given(map[key].Scalar());
+  const std::string file = given.is_absolute()
+                               ? given.string()
+                               : (std::filesystem::path(path_).parent_path() / given).lexically_normal().string();
+  if (const std::string problem = input_file_problem(file, max_bytes); !problem.empty())
+    fail(map[key], shown + "." + key, "'" + file + "' " + problem);
+  return file;
 }
 
 std::string CheckedYaml::at(const YAML::Node& node) const {

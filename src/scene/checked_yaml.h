@@ -7,6 +7,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +43,11 @@ public:
   mesh::Point vector(const YAML::Node& map, const std::string& key, const std::string& spec_path) const;
   /// A list of numbers (checked at load); empty when absent.
   std::vector<double> numbers(const YAML::Node& map, const std::string& key) const;
+
+  /// The input file named by `key` of `map` (a path relative to this file):
+  /// fails naming the key unless it is a regular file of at most `max_bytes`.
+  std::string input_file(const YAML::Node& map, const std::string& key, const std::string& shown,
+                         std::uintmax_t max_bytes) const;
 
   /// Fails unless `map` has `key`: "key 'shown.key': missing: <why>".
   void require(const YAML::Node& map, const std::string& key, const std::string& shown, const std::string& why) const;

@@ -11,6 +11,12 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Physical ranges of the thermal keys: wide enough for every metal forged
+// and every die, narrow enough that a slip of units or sign is caught here,
+// not as a numerical failure later.
+constexpr double kAbsoluteZero = -273.15; ///< °C, excluded
+constexpr double kHottest = 3500.0;       ///< °C: above tungsten's melting point, 3422 °C
+
 KeySpec key(std::string path, KeyType type, std::string doc, std::string unit = "") {
   KeySpec k;
   k.path = std::move(path);
@@ -86,7 +92,7 @@ std::vector<KeySpec> heat_transfer_keys(const std::string& owner, const std::str
                     "thermal scenes: heat transfer coefficient h " + between +
                         "; one value, or one per heat_transfer_pressure",
                     "kW/(m2.K) = mW/(mm2.K)"),
-                0, kInf),
+                0, 10000),
           range(key(owner + ".heat_transfer_pressure", T::numbers,
                     "contact pressures of the heat_transfer table, increasing (h is held beyond its ends)", "MPa"),
                 0, kInf)};
@@ -200,7 +206,7 @@ const std::vector<KeySpec>& case_schema() {
                   "temperature of the body: held in an isothermal scene, initial in a thermal one; default the "
                   "material card's",
                   "°C"),
-              -273.15, kInf, true),
+              kAbsoluteZero, kHottest, true),
         with_default(
             range(key("output.vtk_every", T::integer, "write the VTK series every N increments (and the last)"), 1,
                   kInf),
@@ -353,12 +359,15 @@ const std::vector<KeySpec>& case_schema() {
                            0, 1),
                      "0.9"),
         key("thermal.environment", T::map, "the air around the bodies"),
-        with_default(key("thermal.environment.temperature", T::number, "air temperature", "°C"), "20"),
+        with_default(range(key("thermal.environment.temperature", T::number, "air temperature", "°C"), kAbsoluteZero,
+                           kHottest, true),
+                     "20"),
         with_default(range(key("thermal.environment.convection", T::number,
                                "heat transfer coefficient to the air (free convection in gases: 2-25 W/(m2.K), "
+                               "forced convection of liquids up to 20 kW/(m2.K), boiling up to 100 kW/(m2.K): "
                                "Incropera & DeWitt, Fundamentals of Heat and Mass Transfer, Table 1.1)",
                                "kW/(m2.K) = mW/(mm2.K)"),
-                           0, kInf),
+                           0, 100),
                      "0.01"),
         with_default(range(key("thermal.transfer_time", T::number,
                                "time before the press moves: the bodies cool in air, and on the dies where they touch "
@@ -375,7 +384,8 @@ const std::vector<KeySpec>& case_schema() {
                                "°C"),
                            0, kInf),
                      "0"),
-        key("dies[].temperature", T::number, "thermal scenes: the die's temperature, held", "°C"),
+        range(key("dies[].temperature", T::number, "thermal scenes: the die's temperature, held", "°C"), kAbsoluteZero,
+              kHottest, true),
         with_default(range(key("dies[].friction_heat_to_body", T::number,
                                "thermal scenes: share of the friction heat that enters the body, the rest the die "
                                "(0.5: the two surfaces' effusivities are within 10 % for a steel billet on a steel "
@@ -409,7 +419,8 @@ const std::vector<KeySpec>& material_schema() {
       required(key("name", T::string, "material name and condition")),
       required(choices(key("law", T::string, "constitutive law"),
                        {"newtonian", "norton_hoff", "hansel_spittel", "linear_elastic"})),
-      range(key("temperature", T::number, "temperature at which the numbers hold", "°C"), -273.15, kInf, true),
+      range(key("temperature", T::number, "temperature at which the numbers hold", "°C"), kAbsoluteZero, kHottest,
+            true),
       range(key("viscosity", T::number, "newtonian: viscosity η", "MPa.s"), 0, kInf, true),
       range(key("consistency", T::number, "norton_hoff: consistency K", "MPa.s^m"), 0, kInf, true),
       range(key("sensitivity", T::number, "norton_hoff: strain-rate sensitivity m", "-"), 0, 1, true),
@@ -432,12 +443,18 @@ const std::vector<KeySpec>& material_schema() {
           "0.01"),
       key("activation_temperature", T::number,
           "norton_hoff: β of K(T) = K exp(β (1/T − 1/T_ref)), T in kelvin, T_ref the card's temperature", "K"),
-      range(key("conductivity", T::numbers, "thermal: k, one value or one per thermal_temperatures", "W/(m.K)"), 0,
-            kInf, true),
-      range(key("specific_heat", T::numbers, "thermal: c, one value or one per thermal_temperatures", "J/(kg.K)"), 0,
-            kInf, true),
-      key("thermal_temperatures", T::numbers, "thermal: temperatures of the k and c tables, increasing", "°C"),
-      range(key("density", T::number, "thermal: ρ", "kg/m3"), 0, kInf, true),
+      range(key("conductivity", T::numbers,
+                "thermal: k, one value or one per thermal_temperatures (from insulators' 0.01 to beyond silver's 429)",
+                "W/(m.K)"),
+            0.01, 1000),
+      range(key("specific_heat", T::numbers,
+                "thermal: c, one value or one per thermal_temperatures (from below lead's 129 to beyond lithium's "
+                "3582)",
+                "J/(kg.K)"),
+            50, 10000),
+      range(key("thermal_temperatures", T::numbers, "thermal: temperatures of the k and c tables, increasing", "°C"),
+            kAbsoluteZero, kHottest, true),
+      range(key("density", T::number, "thermal: ρ (from foams' 100 to beyond osmium's 22,590)", "kg/m3"), 100, 30000),
       range(key("emissivity", T::number, "thermal: ε of the surface (radiation to the air)", "-"), 0, 1),
       range(key("young_modulus", T::number, "linear_elastic: E", "MPa"), 0, kInf, true),
       range(key("poisson_ratio", T::number, "linear_elastic: ν (0.5 allowed: u-p form)", "-"), -1, 0.5, true),

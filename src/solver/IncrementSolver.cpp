@@ -1,6 +1,7 @@
 #include "anvil/solver/IncrementSolver.h"
 
 #include "anvil/core/error.h"
+#include "anvil/core/interrupt.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
 #include "anvil/mesh/TetMesh.h"
@@ -222,6 +223,11 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   constexpr int kMaxSetChanges = 10;
   int phase_start = 0, set_changes = 0;
   for (int it = 1; it - phase_start <= settings.max_iterations; ++it) {
+    if (interrupt::requested()) { // the increment is abandoned: the run checkpoints the last accepted one
+      report.failure = "interrupted";
+      report.interrupted = true;
+      return report;
+    }
     if (bad_element_ >= 0) {
       report.failure = "element " + std::to_string(bad_element_ + 1) + " is inverted or flat";
       return report;
@@ -247,7 +253,10 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       solved = linear_solver_.solve(rhs, delta, forcing);
     }
     if (!solved) {
-      report.failure = "the linear solver (" + to_string(linear_solver_.kind()) + ") failed on the tangent";
+      report.interrupted = interrupt::requested() != 0; // a Krylov solve stops for an interrupt too
+      report.failure = report.interrupted
+                           ? "interrupted"
+                           : "the linear solver (" + to_string(linear_solver_.kind()) + ") failed on the tangent";
       return report;
     }
     report.linear_iterations += linear_solver_.iterations();

@@ -1,5 +1,6 @@
 #include "anvil/solver/KrylovSolver.h"
 
+#include "anvil/core/interrupt.h"
 #include "anvil/solver/PetscSession.h"
 #include "bfbt_schur.h"
 #include "petsc_check.h"
@@ -17,6 +18,17 @@ namespace anvil::solver {
 using petsc::check;
 
 namespace {
+
+/// PETSc's default convergence test, and a stop after a SIGINT or SIGTERM
+/// (core/interrupt): a long solve is abandoned within one Krylov iteration.
+/// The check is collective, as the residual norm before it.
+PetscErrorCode converged_unless_interrupted(KSP ksp, PetscInt it, PetscReal norm, KSPConvergedReason* reason,
+                                            void* context) {
+  PetscErrorCode error = KSPConvergedDefault(ksp, it, norm, reason, context);
+  if (error == 0 && *reason == KSP_CONVERGED_ITERATING && interrupt::requested()) *reason = KSP_DIVERGED_BREAKDOWN;
+  return error;
+}
+
 /// The seed ML gives itself at its first random vector in a process
 /// (ML_random_vec: spread over [1, 2³¹ − 2] by rank).
 int ml_initial_seed() {
@@ -107,6 +119,10 @@ struct KrylovSolver::Impl {
     if (schur == SchurApproximation::bfbt) // PETSc forms L = B D⁻¹ Bᵀ + C (as −selfp) for BfbtSchur
       check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr), "creating the preconditioner");
     check(KSPSetFromOptions(ksp), "reading the PETSc options");
+    void* converged = nullptr;
+    check(KSPConvergedDefaultCreate(&converged), "creating the Krylov solver");
+    check(KSPSetConvergenceTest(ksp, converged_unless_interrupted, converged, KSPConvergedDefaultDestroy),
+          "creating the Krylov solver");
     PetscBool given = PETSC_FALSE;
     check(PetscOptionsHasName(nullptr, nullptr, "-ksp_rtol", &given), "reading the PETSc options");
     user_tolerance = given;

@@ -8,6 +8,12 @@
 #include <string>
 
 namespace anvil::thermal {
+namespace {
+/// What a failed heat step asks the user to look at.
+constexpr const char* kThermalKeys =
+    "check thermal.environment.convection, dies[].heat_transfer, contact_pairs[].heat_transfer, the time step "
+    "(time.stroke_increment) and the material cards' conductivity, specific_heat and density";
+} // namespace
 // The capacity term keeps the matrix well conditioned at forging time steps
 // (C/Δt is of the order of the conduction of an element): conjugate
 // gradients with a diagonal preconditioner need a few tens of iterations,
@@ -128,14 +134,14 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
     s.cg.compute(s.matrix);
     change = s.cg.solve(residual);
     if (s.cg.info() != Eigen::Success)
-      throw RunError("heat step: conjugate gradients did not converge (" + std::to_string(s.cg.iterations()) +
-                     " iterations; an element with a non-positive conductivity or capacity?)");
+      throw RunError("heat step (thermal effect): conjugate gradients did not converge (" +
+                     std::to_string(s.cg.iterations()) + " iterations): " + kThermalKeys);
     next -= change;
     ++flows.solves;
     if (linear || change.lpNorm<Eigen::Infinity>() <= 1e-9 * (1.0 + next.lpNorm<Eigen::Infinity>())) break;
     if (flows.solves == kMostSolves)
-      throw RunError("heat step: Newton on the enthalpy did not converge in " + std::to_string(kMostSolves) +
-                     " solves (a specific-heat table with a jump?)");
+      throw RunError("heat step (thermal effect): Newton on the enthalpy did not converge in " +
+                     std::to_string(kMostSolves) + " solves (a specific-heat table with a jump?): " + kThermalKeys);
   }
   flows.sources = sources;
   for (int i = 0; i < n; ++i) // the secant capacity times ΔT: m ΔH
@@ -159,6 +165,10 @@ HeatFlows HeatStep::advance(const mesh::TetMesh& mesh, std::span<const ThermalMa
         if (solved(x.facet[j])) flows.to_dies -= q * x.shape[j];
     }
   }
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(next[i]) || next[i] <= -273.15)
+      throw RunError("heat step (thermal effect): the temperature of node " + std::to_string(i + 1) + " became " +
+                     std::to_string(next[i]) + " C: " + kThermalKeys);
   for (int i = 0; i < n; ++i)
     temperature[i] = next[i];
   return flows;

@@ -1,10 +1,13 @@
 // Quick-look pictures (anvil render): a hot upsetting run rendered headless
 // gives a PNG of the expected size, not one flat colour, with the part in
 // the colours of its field and the dies in grey; an animated GIF and a
-// contact sheet of three frames.
+// contact sheet of three frames. The run's folder has a hostile name (quotes,
+// a semicolon, spaces, $(), a newline): the external programs get it as one
+// argument, never through a shell, and nothing but the pictures appears.
 #include "run_outputs.h"
 
 #include "anvil/core/log.h"
+#include "anvil/core/subprocess.h"
 
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -19,9 +22,9 @@ TEST_CASE("anvil render draws a run's final state: the part in its field's colou
   const RunOutputs out = run_case(
       anvil::scene::read_case(source_path("cases/hot_upsetting.yaml"),
                               {"bodies[0].mesh.element_size=2", "time.stop.stroke=2", "thermal.transfer_time=0.5"}),
-      "anvil_render_test");
-  const std::string command = std::string(ANVIL_EXECUTABLE) + " render " + out.directory + " --field temperature";
-  REQUIRE(std::system(command.c_str()) == 0);
+      "anvil_render_test x';touch INJECTED;' $(touch INJECTED) \"q\"\nline");
+  const std::vector<std::string> command = {ANVIL_EXECUTABLE, "render", out.directory, "--field", "temperature"};
+  REQUIRE(anvil::subprocess::run(command) == 0);
   const std::string png = out.directory + "/render/temperature_000014.png";
   REQUIRE(std::filesystem::exists(png));
   vtkNew<vtkPNGReader> reader;
@@ -49,7 +52,9 @@ TEST_CASE("anvil render draws a run's final state: the part in its field's colou
 
   // Three frames: an animated GIF of them and a contact sheet, two half-size
   // frames to a row (two rows: 1000 × 750).
-  REQUIRE(std::system((command + " --frames 3 --sheet").c_str()) == 0);
+  std::vector<std::string> frames = command;
+  frames.insert(frames.end(), {"--frames", "3", "--sheet"});
+  REQUIRE(anvil::subprocess::run(frames) == 0);
   std::ifstream gif(out.directory + "/render/temperature.gif", std::ios::binary);
   std::string header(6, '\0');
   gif.read(header.data(), 6);
@@ -63,7 +68,8 @@ TEST_CASE("anvil render draws a run's final state: the part in its field's colou
   CHECK(size[1] == 750);
   // With ffmpeg installed (tools/setup does not), an MP4 too: an ISO media
   // file ("ftyp" box at byte 4) of some size; no partial file left behind.
-  if (std::system("command -v ffmpeg >/dev/null 2>&1") == 0) {
+  const bool mp4 = anvil::subprocess::on_path("ffmpeg");
+  if (mp4) {
     std::ifstream mp4(out.directory + "/render/temperature.mp4", std::ios::binary);
     std::string box(8, '\0');
     mp4.read(box.data(), 8);
@@ -72,4 +78,15 @@ TEST_CASE("anvil render draws a run's final state: the part in its field's colou
   }
   CHECK_FALSE(std::filesystem::exists(out.directory + "/render/temperature.mp4.part"));
   CHECK_FALSE(std::filesystem::exists(out.directory + "/render/temperature.gif.part"));
+
+  // Nothing but the pictures: no file a shell would have made, no leftovers.
+  std::set<std::string> made, expected = {"temperature_000001.png", "temperature_000007.png", "temperature_000014.png",
+                                          "temperature_sheet.png", "temperature.gif"};
+  if (mp4) expected.insert("temperature.mp4");
+  for (const auto& entry : std::filesystem::directory_iterator(out.directory + "/render"))
+    made.insert(entry.path().filename().string());
+  CHECK(made == expected);
+  for (const std::filesystem::path& folder :
+       {std::filesystem::current_path(), std::filesystem::temp_directory_path(), std::filesystem::path(out.directory)})
+    CHECK_FALSE(std::filesystem::exists(folder / "INJECTED"));
 }

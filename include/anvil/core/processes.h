@@ -25,6 +25,8 @@ inline bool root() {
 void sum(std::span<double> values);
 /// The smallest of `value` over the processes.
 int minimum(int value);
+/// The largest of `value` over the processes.
+int maximum(int value);
 
 /// Runs `work` on rank 0 alone (writing a file, remeshing); an InputError or
 /// RunError it throws is thrown on every process with the same message, so

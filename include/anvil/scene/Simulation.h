@@ -21,6 +21,10 @@ struct RunEnd {
   /// False when time.max_increments ended the run before its stop criterion
   /// (`anvil run` then exits with 4).
   bool complete = true;
+  /// SIGINT or SIGTERM when the run stopped for it (core/interrupt), its
+  /// last accepted increment written and checkpointed; 0 otherwise.
+  int signal = 0;
+  bool checkpointed = false; ///< with `signal`: a checkpoint to resume from was written
 };
 
 /// Returns when the run ends, its outputs written; throws InputError for bad

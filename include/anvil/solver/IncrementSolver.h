@@ -44,6 +44,7 @@ struct NewtonReport {
   int linear_iterations = 0;      ///< Krylov iterations of all the solves (0 for a direct solver)
   std::string failure;            ///< why it stopped, when not converged
   bool out_of_iterations = false; ///< stopped at the iteration budget (not a failed solve or a non-finite residual)
+  bool interrupted = false;       ///< abandoned for SIGINT or SIGTERM (core/interrupt)
 
   /// Stopped at the budget while its force residual fell, overall and over
   /// the second half of its iterations: its last iterate is a better start

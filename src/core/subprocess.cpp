@@ -1,0 +1,75 @@
+#include "anvil/core/subprocess.h"
+
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <fcntl.h>
+#include <filesystem>
+#include <spawn.h>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace anvil::subprocess {
+
+int run(const std::vector<std::string>& arguments, const Options& options) {
+  if (arguments.empty()) return -1;
+  std::vector<std::string> copy = arguments;
+  std::vector<char*> argv;
+  for (std::string& a : copy)
+    argv.push_back(a.data());
+  argv.push_back(nullptr);
+
+  int pipe_ends[2] = {-1, -1};
+  const bool feed = !options.input.empty();
+  if (feed && pipe2(pipe_ends, O_CLOEXEC) != 0) return -1;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (feed) posix_spawn_file_actions_adddup2(&actions, pipe_ends[0], 0);
+  if (options.quiet_output) posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  if (options.quiet_errors) posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  if (!options.directory.empty()) posix_spawn_file_actions_addchdir_np(&actions, options.directory.c_str());
+  pid_t child = 0;
+  const int started = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (feed) {
+    close(pipe_ends[0]);
+    if (started == 0) {
+      // A program that stops reading early must not kill us with SIGPIPE.
+      struct sigaction ignore = {}, previous = {};
+      ignore.sa_handler = SIG_IGN;
+      sigaction(SIGPIPE, &ignore, &previous);
+      const char* data = options.input.data();
+      std::size_t left = options.input.size();
+      while (left > 0) {
+        const ssize_t n = write(pipe_ends[1], data, left);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        data += n, left -= static_cast<std::size_t>(n);
+      }
+      sigaction(SIGPIPE, &previous, nullptr);
+    }
+    close(pipe_ends[1]);
+  }
+  if (started != 0) return -1;
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0)
+    if (errno != EINTR) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+bool on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (!path) return false;
+  std::istringstream folders(path);
+  for (std::string folder; std::getline(folders, folder, ':');) {
+    const std::filesystem::path candidate = std::filesystem::path(folder.empty() ? "." : folder) / program;
+    std::error_code error;
+    if (std::filesystem::is_regular_file(candidate, error) && access(candidate.c_str(), X_OK) == 0) return true;
+  }
+  return false;
+}
+
+} // namespace anvil::subprocess
