@@ -2,6 +2,7 @@
 
 #include "anvil/core/error.h"
 #include "anvil/core/input_file.h"
+#include "anvil/mesh/node_budget.h"
 
 #include <algorithm>
 #include <cctype>
@@ -59,6 +60,14 @@ public:
     const long n = number<long>(what);
     if (n < 0 || n > bytes_)
       fail(std::string("expected ") + what + " between 0 and the file's size, found " + std::to_string(n));
+    return n;
+  }
+
+  /// A count of nodes that follow: as count(), and within the nodes this
+  /// machine can solve (mesh/node_budget), before any is read.
+  long node_count(const char* what) {
+    const long n = count(what);
+    check_node_budget(static_cast<double>(n), where(path_, line_) + ": " + std::to_string(n) + " nodes");
     return n;
   }
 
@@ -138,7 +147,7 @@ void read_gmsh2(Tokens& tokens, RawMesh& raw) {
     if (tokens.at_end()) return;
     const std::string section = tokens.word();
     if (section == "$Nodes") {
-      const long n = tokens.count("a node count");
+      const long n = tokens.node_count("a node count");
       for (long i = 0; i < n; ++i) {
         const long id = tokens.number<long>("a node id");
         const double x = tokens.number<double>("x"), y = tokens.number<double>("y"), z = tokens.number<double>("z");
@@ -204,7 +213,7 @@ void read_gmsh4(Tokens& tokens, RawMesh& raw) {
       tokens.skip_to("$EndEntities");
     } else if (section == "$Nodes") {
       const long blocks = tokens.count("a block count");
-      tokens.count("a node count");
+      tokens.node_count("a node count");
       tokens.number<long>("a min node tag");
       tokens.number<long>("a max node tag");
       for (long b = 0; b < blocks; ++b) {
@@ -291,7 +300,7 @@ TetMesh read_medit(const std::string& path) {
     } else if (keyword == "dimension") {
       if (tokens.number<int>("the dimension") != 3) tokens.fail("only 3D meshes are supported (Dimension 3)");
     } else if (keyword == "vertices") {
-      const long n = tokens.count("a vertex count");
+      const long n = tokens.node_count("a vertex count");
       for (long i = 0; i < n; ++i) {
         const double x = tokens.number<double>("x"), y = tokens.number<double>("y"), z = tokens.number<double>("z");
         tokens.number<int>("a vertex reference");

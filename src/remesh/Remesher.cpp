@@ -3,6 +3,8 @@
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
 #include "anvil/mesh/TetMesh.h"
+#include "anvil/mesh/node_budget.h"
+#include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/die_feature_depth.h"
 #include "anvil/remesh/field_transfer.h"
 #include "anvil/remesh/fit_to_dies.h"
@@ -15,7 +17,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
+#include <mutex>
+#include <optional>
+#include <stop_token>
+#include <thread>
 
 namespace anvil::remesh {
 namespace {
@@ -31,24 +38,84 @@ struct Remeshed {
   double given_back = 0.0;      ///< mm, keep_material's move of the free surface
 };
 
-/// Remeshes `part`, body `b` of `state` (`in_old` locates points in it), fitted to the dies.
-Remeshed remesh_part(const scene::Scene& scene, const scene::RunState& state, int b, const mesh::TetMesh& part,
-                     const PointLocator& in_old, std::span<const int> touching_die, std::span<const double> rate,
-                     double material) {
+/// A remesh may not change the body's volume by more than this before the
+/// put-back onto the dies (CGAL's own loss; the cases lose below 0.01 %).
+constexpr double kMostVolumeChange = 0.01;
+/// Nor leave an element worse than this share of remeshing.quality.
+constexpr double kQualityFloorShare = 1.0 / 3.0;
+/// A line on the terminal every this often while CGAL works (s).
+constexpr double kProgressEvery = 5.0;
+
+/// Says every kProgressEvery seconds, while it lives, that body `name` is
+/// still being remeshed: CGAL gives no progress of its own.
+class RemeshProgress {
+public:
+  RemeshProgress(std::string name, double expected_nodes)
+      : thread_([this, name = std::move(name), expected_nodes](std::stop_token stop) {
+          const auto start = std::chrono::steady_clock::now();
+          std::unique_lock lock(mutex_);
+          while (!wake_.wait_for(lock, stop, std::chrono::duration<double>(kProgressEvery), [] { return false; })) {
+            if (stop.stop_requested()) return;
+            log::info("    remeshing '%s': %.0f s so far (about %.3g nodes expected)", name.c_str(),
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), expected_nodes);
+          }
+        }) {}
+
+private:
+  std::mutex mutex_;
+  std::condition_variable_any wake_;
+  std::jthread thread_; ///< last: stopped and joined before the mutex goes
+};
+
+/// Nodes a remesh of `part` with edge lengths `size(x)` (mm) at the centroids
+/// will have: a regular mesh of edge h has about 1.5 V/h³ nodes.
+double expected_nodes(const mesh::TetMesh& part, const std::function<double(const mesh::Point&)>& size) {
+  double nodes = 0.0;
+  for (int e = 0; e < part.tet_count(); ++e)
+    nodes += 1.5 * mesh::signed_volume(part, e) / std::pow(size(mesh::centroid(part, e)), 3);
+  return nodes;
+}
+
+/// Remeshes `part`, body `b` of `state` (`in_old` locates points in it),
+/// fitted to the dies; nothing, with `refused` saying why, when no try keeps
+/// the body's volume and an acceptable worst quality.
+std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunState& state, int b,
+                                    const mesh::TetMesh& part, const PointLocator& in_old,
+                                    std::span<const int> touching_die, std::span<const double> rate, double material,
+                                    std::string& refused) {
   const scene::RemeshSpec& spec = scene.input.remeshing;
   const scene::Body& body = scene.bodies[b];
   const double smallest = spec.smallest_size > 0.0 ? spec.smallest_size : 0.5 * body.remesh_size;
   const auto size_field =
       spec.adaptive ? adaptive_size(part, in_old, rate, scene, state.dies, body.remesh_size, smallest) : nullptr;
+  // The node budget: sizes that would make more nodes than this machine can
+  // solve are coarsened all alike until they fit.
+  const double budget =
+      spec.max_nodes > 0 ? std::min<double>(spec.max_nodes, mesh::affordable_nodes()) : mesh::affordable_nodes();
+  double coarsen = 1.0;
+  double expected =
+      expected_nodes(part, [&](const mesh::Point& x) { return size_field ? size_field(x, 1.0) : body.remesh_size; });
+  if (expected > budget) {
+    coarsen = std::cbrt(expected / budget);
+    log::info("    remesh of '%s': its sizes would make about %.3g nodes, more than the node budget of %.3g; "
+              "every size is made %.3g times larger",
+              body.name.c_str(), expected, budget, coarsen);
+    expected = budget;
+  }
+  const RemeshProgress progress(body.name, expected);
+  const auto deadline =
+      std::chrono::steady_clock::now() +
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(spec.time_limit));
   auto make = [&](double scale) {
     RemeshSettings settings;
-    settings.edge_length = scale * body.remesh_size;
+    settings.deadline = deadline;
+    settings.edge_length = coarsen * scale * body.remesh_size;
     settings.feature_angle = spec.feature_angle;
     settings.iterations = spec.iterations;
     settings.quality_floor = spec.quality;
     if (size_field) {
-      settings.smallest_edge_length = scale * smallest;
-      settings.size = [&size_field, scale](const mesh::Point& x) { return size_field(x, scale); };
+      settings.smallest_edge_length = coarsen * scale * smallest;
+      settings.size = [&size_field, s = coarsen * scale](const mesh::Point& x) { return size_field(x, s); };
     }
     Remeshed t;
     t.remeshed = remesh_body(part, settings);
@@ -60,17 +127,35 @@ Remeshed remesh_part(const scene::Scene& scene, const scene::RunState& state, in
     t.worst = worst_quality(t.mesh);
     return t;
   };
+  const double volume = mesh::volume(part), floor = kQualityFloorShare * spec.quality;
+  // Why try `t` cannot replace the body's mesh; empty when it can.
+  auto fault = [&](const Remeshed& t) {
+    char text[200] = "";
+    const double change = mesh::volume(t.remeshed) / volume - 1.0;
+    if (std::abs(change) > kMostVolumeChange)
+      std::snprintf(text, sizeof text, "the new mesh changes the volume by %+.2f%% (at most %.0f%%)", 100.0 * change,
+                    100.0 * kMostVolumeChange);
+    else if (!(t.worst >= floor))
+      std::snprintf(text, sizeof text, "its worst element has quality %.3f, below %.3g (a third of remeshing.quality)",
+                    t.worst, floor);
+    return std::string(text);
+  };
   // A result whose worst element is below the trigger would be due again at
   // once: CGAL can keep elements whose four nodes lie on patch borders. It
   // is remade with edges 5 % and then 10 % shorter, which changes where
-  // CGAL splits; the best of the tries is kept.
-  Remeshed best = make(1.0);
-  for (double scale : {0.95, 0.9}) {
-    if (best.worst >= spec.quality) break;
+  // CGAL splits; the best acceptable try is kept.
+  std::optional<Remeshed> best;
+  for (double scale : {1.0, 0.95, 0.9}) {
+    if (best && (best->worst >= spec.quality || std::chrono::steady_clock::now() > deadline)) break;
     Remeshed again = make(scale);
-    log::info("    remesh of '%s' gave worst quality %.3f (below %g); with h %.3g mm: %.3f", body.name.c_str(),
-              best.worst, spec.quality, again.edge_length, again.worst);
-    if (again.worst > best.worst) best = std::move(again);
+    const std::string why = fault(again);
+    if (scale != 1.0 || !why.empty())
+      log::info("    remesh of '%s' with h %.3g mm: worst quality %.3f%s%s", body.name.c_str(), again.edge_length,
+                again.worst, why.empty() ? "" : "; not taken: ", why.c_str());
+    if (why.empty() && (!best || again.worst > best->worst))
+      best = std::move(again);
+    else if (!best)
+      refused = why;
   }
   return best;
 }
@@ -110,18 +195,31 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
                                           state.equivalent_strain.begin() + range.first_tet + range.tet_count);
     const auto why = std::find_if(due.begin(), due.end(), [&](const RemeshDue& d) { return d.body == int(b); });
     const double* part_temperature = thermal ? state.temperature.data() + range.first_node : nullptr;
-    if (why == due.end()) {
+    auto keep_mesh = [&] {
       ranges.push_back(mesh::append(next, part));
       append_values(nodal, part_nodal, 4 * range.node_count);
       if (thermal) append_values(temperature, part_temperature, range.node_count);
       append_values(strain, part_strain.data(), part_strain.size());
       if (carries_stress) append_values(stress, &state.elastic_stress[6 * range.first_tet], 6 * range.tet_count);
+    };
+    if (why == due.end()) {
+      keep_mesh();
       continue;
     }
     const PointLocator in_old(part);
-    const Remeshed best =
+    std::string refused;
+    const std::optional<Remeshed> tried =
         remesh_part(scene, state, int(b), part, in_old, touching_die.subspan(range.first_node, range.node_count),
-                    rate.subspan(range.first_tet, range.tet_count), material_before[b]);
+                    rate.subspan(range.first_tet, range.tet_count), material_before[b], refused);
+    if (!tried) {
+      // No silent loss of material: the body goes on with its mesh, and the
+      // run with it for as long as that mesh holds.
+      log::info("  remesh '%s' (%s) refused: %s; the body keeps its mesh", scene.bodies[b].name.c_str(),
+                why->why.c_str(), refused.c_str());
+      keep_mesh();
+      continue;
+    }
+    const Remeshed& best = *tried;
     const mesh::TetMesh& fresh = best.mesh;
     const double volume_before = mesh::volume(part), volume_remeshed = mesh::volume(best.remeshed);
     const double volume_after = mesh::volume(fresh);

@@ -5,6 +5,7 @@
 
 #include "anvil/contact/SurfaceSearch.h"
 #include "anvil/core/error.h"
+#include "anvil/core/log.h"
 #include "anvil/mesh/QualityGuard.h"
 #include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/tet_geometry.h"
@@ -18,6 +19,7 @@
 #include <CGAL/tetrahedral_remeshing.h>
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <numeric>
 #include <set>
@@ -137,6 +139,12 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   // centroid is below the previous level.
   double previous_level = settings.edge_length;
   while (settings.size && previous_level > settings.smallest_edge_length * (1.0 + 1e-9)) {
+    if (std::chrono::steady_clock::now() > settings.deadline) {
+      log::info("    remeshing: the size field's finer levels stopped at %.3g mm (smallest asked %.3g mm): the "
+                "remesh ran out of remeshing.time_limit",
+                previous_level, settings.smallest_edge_length);
+      break;
+    }
     const double level = std::max(0.75 * previous_level, settings.smallest_edge_length);
     remesh_pass(tr, level, settings.iterations, [&](Triangulation::Cell_handle c) {
       if (!in_body(c)) return false;

@@ -434,6 +434,8 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     m.iterations = doc.integer(r, "iterations", "remeshing.iterations");
     m.adaptive = doc.text(r, "size", "remeshing.size") == "adaptive";
     if (r["smallest_size"]) m.smallest_size = doc.number(r, "smallest_size", "remeshing.smallest_size");
+    m.max_nodes = doc.integer(r, "max_nodes", "remeshing.max_nodes");
+    m.time_limit = doc.number(r, "time_limit", "remeshing.time_limit");
     m.check_load = doc.boolean(r, "check_load", "remeshing.check_load");
   }
   if (!c.dies.empty() && !c.time.enabled)

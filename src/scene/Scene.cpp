@@ -203,6 +203,22 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     }
     body.initial_volume = mesh::volume(part);
     body.remesh_size = c.remeshing.element_size > 0.0 ? c.remeshing.element_size : mean_boundary_edge(part);
+    if (c.remeshing.enabled && c.remeshing.element_size > 0.0) {
+      // Fewer than three elements across would remesh the body into a few
+      // tetrahedra and lose its shape.
+      Eigen::Vector3d low = part.nodes.front(), high = low;
+      for (const mesh::Point& x : part.nodes)
+        low = low.cwiseMin(x), high = high.cwiseMax(x);
+      const double thinnest = (high - low).minCoeff();
+      if (c.remeshing.element_size > thinnest / 3.0) {
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      ": key 'remeshing.element_size' %g mm: more than a third of the smallest extent of body '%s' "
+                      "(%g mm): a remesh would leave fewer than three elements across it",
+                      c.remeshing.element_size, body.name.c_str(), thinnest);
+        throw InputError(c.path + text);
+      }
+    }
     // A regular mesh of edge h has about 1.5 V/h³ nodes.
     if (c.remeshing.enabled)
       mesh::check_node_budget(1.5 * body.initial_volume / std::pow(body.remesh_size, 3),

@@ -245,7 +245,10 @@ void CheckedYaml::check(const YAML::Node& node, const std::string& spec_prefix, 
 }
 
 void CheckedYaml::check_value(const YAML::Node& value, const KeySpec& k, const std::string& shown) const {
-  auto wrong = [&] { fail(value, shown, "value " + shown_value(value) + " is not valid; expected " + expectation(k)); };
+  // The value, or the one entry of a list that is wrong, named in the message.
+  auto wrong = [&](const YAML::Node& at) {
+    fail(at, shown, "value " + shown_value(at) + " is not valid; expected " + expectation(k));
+  };
   switch (k.type) {
   case KeyType::map:
     check(value, k.path, shown);
@@ -257,32 +260,36 @@ void CheckedYaml::check_value(const YAML::Node& value, const KeySpec& k, const s
       check(value[i], k.path + "[]", shown + "[" + std::to_string(i) + "]");
     return;
   case KeyType::string:
-    if (!value.IsScalar()) wrong();
-    if (!k.choices.empty() && std::find(k.choices.begin(), k.choices.end(), value.Scalar()) == k.choices.end()) wrong();
+    if (!value.IsScalar()) wrong(value);
+    if (!k.choices.empty() && std::find(k.choices.begin(), k.choices.end(), value.Scalar()) == k.choices.end())
+      wrong(value);
     return;
   case KeyType::name: {
-    if (!value.IsScalar()) wrong();
+    if (!value.IsScalar()) wrong(value);
     const std::string& text = value.Scalar();
     const bool allowed = std::all_of(text.begin(), text.end(), [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
     });
-    if (text.empty() || text.size() > 64 || !allowed || text == "." || text == "..") wrong();
+    if (text.empty() || text.size() > 64 || !allowed || text == "." || text == "..") wrong(value);
     return;
   }
   case KeyType::boolean:
-    if (!value.IsScalar() || (value.Scalar() != "true" && value.Scalar() != "false")) wrong();
+    if (!value.IsScalar() || (value.Scalar() != "true" && value.Scalar() != "false")) wrong(value);
     return;
   case KeyType::vector3:
-    if (!value.IsSequence() || value.size() != 3) wrong();
-    for (const auto& c : value)
-      if (!c.IsNull() && !parse_number(c)) wrong();
+    if (!value.IsSequence() || value.size() != 3) wrong(value);
+    for (const auto& c : value) {
+      if (c.IsNull()) continue;
+      const auto v = parse_number(c);
+      if (!v || *v < k.min || *v > k.max) wrong(c);
+    }
     return;
   case KeyType::numbers: {
     // One number stands for a list of one.
-    if (!(value.IsScalar() || (value.IsSequence() && value.size() > 0))) wrong();
+    if (!(value.IsScalar() || (value.IsSequence() && value.size() > 0))) wrong(value);
     auto check_entry = [&](const YAML::Node& c) {
       const auto v = parse_number(c);
-      if (!v || *v < k.min || *v > k.max || (k.min_exclusive && *v == k.min)) wrong();
+      if (!v || *v < k.min || *v > k.max || (k.min_exclusive && *v == k.min)) wrong(c);
     };
     if (value.IsScalar())
       check_entry(value);
@@ -294,9 +301,9 @@ void CheckedYaml::check_value(const YAML::Node& value, const KeySpec& k, const s
   case KeyType::integer:
   case KeyType::number: {
     const auto v = parse_number(value);
-    if (!v) wrong();
-    if (k.type == KeyType::integer && *v != std::floor(*v)) wrong();
-    if (*v < k.min || *v > k.max || (k.min_exclusive && *v == k.min)) wrong();
+    if (!v) wrong(value);
+    if (k.type == KeyType::integer && *v != std::floor(*v)) wrong(value);
+    if (*v < k.min || *v > k.max || (k.min_exclusive && *v == k.min)) wrong(value);
     return;
   }
   }

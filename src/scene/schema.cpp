@@ -1,6 +1,7 @@
 #include "anvil/scene/schema.h"
 
 #include "anvil/contact/facet_quadrature.h"
+#include "anvil/core/input_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +17,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // not as a numerical failure later.
 constexpr double kAbsoluteZero = -273.15; ///< °C, excluded
 constexpr double kHottest = 3500.0;       ///< °C: above tungsten's melting point, 3422 °C
+constexpr double kFastest = 1e5;          ///< mm/s, a velocity component: ten times a forging hammer's 10 m/s
 
 KeySpec key(std::string path, KeyType type, std::string doc, std::string unit = "") {
   KeySpec k;
@@ -46,6 +48,12 @@ KeySpec range(KeySpec k, double min, double max, bool min_exclusive = false) {
 KeySpec choices(KeySpec k, std::vector<std::string> values) {
   k.choices = std::move(values);
   return k;
+}
+
+/// "a regular file of at most 2 GiB": what an input file key takes (core/input_file).
+std::string regular_file(std::uintmax_t max_bytes) {
+  const bool gib = max_bytes >= (1ull << 30);
+  return "a regular file of at most " + std::to_string(max_bytes >> (gib ? 30 : 20)) + (gib ? " GiB" : " MiB");
 }
 
 const char* type_name(KeyType t) {
@@ -165,9 +173,11 @@ const std::vector<KeySpec>& case_schema() {
             ""),
         required(key("bodies", T::list, "deformable bodies, solved together (billets, deformable dies)")),
         required(key("bodies[].name", T::name, "name used by boundary conditions and in outputs")),
-        required(key("bodies[].material", T::string, "material card (YAML), path relative to the case file")),
+        required(key("bodies[].material", T::string,
+                     "material card (YAML), path relative to the case file; " + regular_file(kMaxYamlBytes))),
         required(key("bodies[].mesh", T::map, "a mesh file or a generated shape")),
-        key("bodies[].mesh.file", T::string, "Gmsh .msh (2.2, 4.1 ASCII) or Medit .mesh, relative to the case file"),
+        key("bodies[].mesh.file", T::string,
+            "Gmsh .msh (2.2, 4.1 ASCII) or Medit .mesh, relative to the case file; " + regular_file(kMaxMeshBytes)),
         choices(
             key("bodies[].mesh.generate", T::string,
                 "generated shape instead of a file; quarter shapes (x, y >= 0) need symmetry planes x = 0 and y = 0: "
@@ -198,8 +208,11 @@ const std::vector<KeySpec>& case_schema() {
             range(key("boundary[].plane.tolerance", T::number, "distance within which a node is on the plane", "mm"), 0,
                   kInf, true),
             "1e-6"),
-        key("boundary[].velocity", T::vector3,
-            "velocity, plates: velocity; a component written ~ (null) is left free (velocity type only)", "mm/s"),
+        range(key("boundary[].velocity", T::vector3,
+                  "velocity, plates: velocity; a component written ~ (null) is left free (velocity type only); "
+                  "each within ±1e5 mm/s",
+                  "mm/s"),
+              -kFastest, kFastest),
         key("boundary[].traction", T::vector3, "traction: surface force density", "MPa"),
         key("boundary[].pressure", T::number, "pressure: positive pushes into the body", "MPa"),
         range(key("bodies[].temperature", T::number,
@@ -218,7 +231,8 @@ const std::vector<KeySpec>& case_schema() {
         key("dies", T::list, "rigid dies: a surface, a press motion, friction with the body"),
         required(key("dies[].name", T::name, "name shown in loads.csv, the log and the VTK series")),
         key("dies[].stl", T::string,
-            "die surface (STL, ASCII or binary), relative to the case file; normals out of the die"),
+            "die surface (STL, ASCII or binary), relative to the case file; normals out of the die; " +
+                regular_file(kMaxStlBytes)),
         with_default(key("dies[].offset", T::vector3,
                          "STL dies: moves the surface from the file's coordinates to the "
                          "die's start position",
@@ -237,7 +251,11 @@ const std::vector<KeySpec>& case_schema() {
                         "crank: mechanical press; hydraulic: velocity with a load limit"),
                     {"fixed", "constant", "table", "crank", "hydraulic"}),
             "fixed"),
-        key("dies[].velocity", T::vector3, "constant, hydraulic: die velocity", "mm/s"),
+        range(key("dies[].velocity", T::vector3,
+                  "constant, hydraulic: die velocity (each component within ±1e5 mm/s: 100 m/s, ten times a "
+                  "hammer's blow)",
+                  "mm/s"),
+              -kFastest, kFastest),
         with_default(key("dies[].direction", T::vector3, "table, crank: direction of travel"), "[0, 0, -1]"),
         key("dies[].time", T::numbers, "table: times, increasing", "s"),
         key("dies[].speed", T::numbers, "table: speed at each time (give speed or displacement)", "mm/s"),
@@ -325,8 +343,21 @@ const std::vector<KeySpec>& case_schema() {
                   0, kInf, true),
             "0.25"),
         range(key("remeshing.element_size", T::number,
-                  "target edge length; default each body's initial mean boundary edge", "mm"),
+                  "target edge length, at most a third of the body's smallest extent; default each body's initial "
+                  "mean boundary edge",
+                  "mm"),
               0, kInf, true),
+        with_default(range(key("remeshing.time_limit", T::number,
+                               "work limit of one remesh: the adaptive size field's finer levels are not started "
+                               "after this (the mesh is then coarser than smallest_size there), nor another try",
+                               "s"),
+                           0, kInf, true),
+                     "120"),
+        with_default(range(key("remeshing.max_nodes", T::integer,
+                               "node budget of a remesh: sizes that would make more nodes are coarsened alike; 0 = "
+                               "what this machine's memory can solve (about 20 kB a node)"),
+                           0, kInf),
+                     "0"),
         with_default(range(key("remeshing.feature_angle", T::number,
                                "boundary edges where the surface turns more than this stay sharp", "deg"),
                            0, 180, true),
@@ -339,7 +370,8 @@ const std::vector<KeySpec>& case_schema() {
                      "uniform"),
         range(key("remeshing.smallest_size", T::number,
                   "adaptive size field: the edge length at a die and where the strain rate is 4x the body's mean; "
-                  "default half the element size",
+                  "default half the element size; a remesh refuses a result that changes the body's volume by more "
+                  "than 1 % or whose worst quality is below a third of remeshing.quality (the body keeps its mesh)",
                   "mm"),
               0, kInf, true),
         with_default(key("remeshing.check_load", T::boolean,
@@ -480,8 +512,10 @@ const KeySpec* find_key(const std::vector<KeySpec>& schema, const std::string& p
 std::string expectation(const KeySpec& k) {
   std::ostringstream s;
   s << (k.type == KeyType::integer ? "an integer" : k.type == KeyType::number ? "a number" : type_name(k.type));
-  if (k.type == KeyType::integer || k.type == KeyType::number) {
+  if (k.type == KeyType::integer || k.type == KeyType::number || k.type == KeyType::numbers ||
+      k.type == KeyType::vector3) {
     const bool low = std::isfinite(k.min), high = std::isfinite(k.max);
+    if ((low || high) && (k.type == KeyType::numbers || k.type == KeyType::vector3)) s << ", each";
     if (low && high && k.min == k.max)
       s << " equal to " << k.min;
     else {

@@ -118,13 +118,13 @@ struct KrylovSolver::Impl {
     check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER), "creating the preconditioner");
     if (schur == SchurApproximation::bfbt) // PETSc forms L = B D⁻¹ Bᵀ + C (as −selfp) for BfbtSchur
       check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr), "creating the preconditioner");
-    check(KSPSetFromOptions(ksp), "reading the PETSc options");
+    petsc::check_options(KSPSetFromOptions(ksp));
     void* converged = nullptr;
     check(KSPConvergedDefaultCreate(&converged), "creating the Krylov solver");
     check(KSPSetConvergenceTest(ksp, converged_unless_interrupted, converged, KSPConvergedDefaultDestroy),
           "creating the Krylov solver");
     PetscBool given = PETSC_FALSE;
-    check(PetscOptionsHasName(nullptr, nullptr, "-ksp_rtol", &given), "reading the PETSc options");
+    petsc::check_options(PetscOptionsHasName(nullptr, nullptr, "-ksp_rtol", &given));
     user_tolerance = given;
   }
 
@@ -145,7 +145,7 @@ struct KrylovSolver::Impl {
   /// solvers of one process may approximate the Schur complement differently.
   void choose_schur_pc(PC pc) {
     PetscBool given = PETSC_FALSE;
-    check(PetscOptionsHasName(nullptr, nullptr, "-fieldsplit_1_pc_type", &given), "reading the PETSc options");
+    petsc::check_options(PetscOptionsHasName(nullptr, nullptr, "-fieldsplit_1_pc_type", &given));
     if (given) return;
     PetscInt splits = 0;
     KSP* sub = nullptr;
@@ -224,7 +224,7 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
           "building the preconditioner");
   }
   // An expert's -pc_fieldsplit_schur_precondition (a11, selfp, ...) still wins.
-  check(PCSetFromOptions(pc), "reading the PETSc options");
+  petsc::check_options(PCSetFromOptions(pc));
   s.set_rigid_body_modes(data.nodes);
   check(KSPSetOperators(s.ksp, m, m), "setting up the preconditioner");
   check(KSPSetReusePreconditioner(s.ksp, PETSC_FALSE), "setting up the preconditioner");

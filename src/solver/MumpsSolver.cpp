@@ -41,7 +41,7 @@ bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
     check(KSPGetPC(s.ksp, &pc), "creating the direct solver");
     check(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU), "creating the direct solver");
     check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "creating the direct solver");
-    check(KSPSetFromOptions(s.ksp), "reading the PETSc options");
+    petsc::check_options(KSPSetFromOptions(s.ksp));
     s.symmetric = static_cast<int>(symmetric);
     ++analyses_;
   }

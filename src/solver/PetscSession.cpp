@@ -46,6 +46,13 @@ void check(PetscErrorCode code, const char* doing) {
   throw RunError(std::string("PETSc failed while ") + doing + ": " + message);
 }
 
+void check_options(PetscErrorCode code) {
+  if (code == 0) return;
+  std::string message = g_last_error.empty() ? "error code " + std::to_string(code) : g_last_error;
+  g_last_error.clear();
+  throw InputError("a PETSc option (command line or solver.petsc_options) is not valid: " + message);
+}
+
 } // namespace petsc
 
 PetscSession::PetscSession(int& argc, char**& argv) {

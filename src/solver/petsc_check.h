@@ -14,4 +14,8 @@ std::string last_error();
 /// Throws RunError("PETSc failed while <doing>: <message>") when `code` != 0.
 void check(PetscErrorCode code, const char* doing);
 
+/// Throws InputError naming the PETSc options when `code` != 0: a call that
+/// reads them fails on a value the user gave (anvil exits 3).
+void check_options(PetscErrorCode code);
+
 } // namespace anvil::solver::petsc

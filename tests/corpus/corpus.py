@@ -132,6 +132,7 @@ class Entry:
         # Damage that may hit unused bytes: exit 0 passes too, when the run's
         # loads.csv is that of an undamaged resume ({dir}/clean, made by `before`).
         self.harmless_ok = harmless_ok
+        self.output_ok = False  # an input error found once the run has begun may leave its folder
 
 
 ENTRIES = []
@@ -538,6 +539,12 @@ resume_error("changed-mesh-size", ["changed", "bodies[0].mesh.element_size"],
              extra=["--set", "bodies[0].mesh.element_size=2"])
 
 
+resume_error("is-a-fifo", ["checkpoint.h5", "FIFO"], mode="remove",
+             after=lambda folder: os.mkfifo(os.path.join(folder, "out", "checkpoint.h5")))
+resume_error("is-a-folder", ["checkpoint.h5", "folder"], mode="remove",
+             after=lambda folder: os.mkdir(os.path.join(folder, "out", "checkpoint.h5")))
+
+
 def stiffer_card(folder):
     with open(os.path.join(folder, "card.yaml"), "w") as f:
         f.write(card_swap("consistency: 36.67", "consistency: 40"))
@@ -545,6 +552,167 @@ def stiffer_card(folder):
 
 resume_error("changed-material-card", ["changed", "card.yaml", "consistency", "36.67", "40"],
              case=swap(MATERIAL, "card.yaml"), files={"card.yaml": CARD}, after=stiffer_card)
+
+# --- special and oversized input files ---------------------------------------------------
+# A FIFO would block the first read for ever, a device never ends, a folder is
+# no file, a file past the stated size would take the machine's memory: each is
+# refused with exit 3 and the key, before anything is read.
+MESH_KEY = "mesh: {generate: quarter_cylinder, radius: 5, height: 7.5, element_size: 2.5}"
+STL_KEY = "    plane: {point: [0, 0, 0], normal: [0, 0, 1]}"
+
+
+def make_special(kind, name):
+    """A `before` hook that makes {dir}/name a FIFO, a folder, a symbolic link
+    to a FIFO, or a sparse file of `kind` bytes."""
+    def prepare(folder, anvil, helper):
+        path = os.path.join(folder, name)
+        if kind == "fifo":
+            os.mkfifo(path)
+        elif kind == "folder":
+            os.mkdir(path)
+        elif kind == "link-to-fifo":
+            os.mkfifo(path + ".fifo")
+            os.symlink(path + ".fifo", path)
+        else:
+            with open(path, "wb") as f:
+                f.truncate(kind)  # sparse: no disk taken
+    return prepare
+
+
+def special_case(name, text, file_name, kind, words, args=None):
+    add(name, {"case.yaml": text}, args or ["run", "{dir}/case.yaml", "-o", "{dir}/out"], 3, words,
+        before=make_special(kind, file_name))
+
+
+special_case("special-case-fifo", base(), "fifo.yaml", "fifo", ["fifo.yaml", "FIFO"],
+             ["run", "{dir}/fifo.yaml", "-o", "{dir}/out"])
+special_case("special-case-too-large", base(), "big.yaml", 2 << 20, ["big.yaml", "MB"],
+             ["run", "{dir}/big.yaml", "-o", "{dir}/out"])
+special_case("special-case-link-to-fifo", base(), "link.yaml", "link-to-fifo", ["link.yaml", "FIFO"],
+             ["run", "{dir}/link.yaml", "-o", "{dir}/out"])
+add("special-case-dev-zero", {}, ["run", "/dev/zero", "-o", "{dir}/out"], 3, ["/dev/zero", "character device"])
+add("special-case-dev-urandom", {}, ["run", "/dev/urandom", "-o", "{dir}/out"], 3, ["/dev/urandom", "device"])
+for key, kind, what in [("fifo", "fifo", "FIFO"), ("folder", "folder", "folder"),
+                        ("link-to-fifo", "link-to-fifo", "FIFO"), ("too-large", "large", "MB")]:
+    special_case("special-card-" + key, swap(MATERIAL, "card.yaml"), "card.yaml",
+                 2 << 20 if kind == "large" else kind, ["case.yaml:", "bodies[0].material", "card.yaml", what])
+    special_case("special-mesh-" + key, swap(MESH_KEY, "mesh: {file: body.msh}"), "body.msh",
+                 3 << 30 if kind == "large" else kind, ["case.yaml:", "bodies[0].mesh.file", "body.msh", what])
+    special_case("special-stl-" + key, swap(STL_KEY, "    stl: die.stl"), "die.stl",
+                 2 << 30 if kind == "large" else kind, ["case.yaml:", "dies[1].stl", "die.stl", what])
+for device in ["/dev/zero", "/dev/urandom", "/dev/null"]:
+    case_error("special-stl-" + device[5:], swap(STL_KEY, "    stl: " + device), ["dies[1].stl", device, "device"])
+    case_error("special-mesh-" + device[5:], swap(MESH_KEY, "mesh: {file: %s}" % device),
+               ["bodies[0].mesh.file", device, "device"])
+case_error("special-card-dev-zero", swap(MATERIAL, "/dev/zero"), ["bodies[0].material", "/dev/zero", "device"])
+
+
+
+def huge_count_mesh(name, header, file_name, words):
+    """A mesh whose node count is past this machine's memory, in a sparse file
+    large enough for the count to pass the file-size check."""
+    def prepare(folder, anvil, helper):
+        with open(os.path.join(folder, file_name), "wb") as f:
+            f.write(header.encode())
+            f.truncate(1 << 30)
+    add(name, {"case.yaml": swap(MESH_KEY, "mesh: {file: %s}" % file_name)},
+        ["run", "{dir}/case.yaml", "-o", "{dir}/out"], 3, words, before=prepare)
+
+
+huge_count_mesh("special-gmsh-nodes-past-memory", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n900000000\n",
+                "body.msh", ["body.msh:5", "900000000 nodes", "memory"])
+huge_count_mesh("special-medit-nodes-past-memory", "MeshVersionFormatted 2\nDimension 3\nVertices\n900000000\n",
+                "body.mesh", ["body.mesh:4", "900000000 nodes", "memory"])
+special_case("special-output-is-fifo", base(), "out", "fifo", ["out", "not a folder"])
+
+# --- physical ranges of the thermal keys --------------------------------------------------
+THERMAL = swap("    friction: {law: tresca, factor: 0.3}\n  - name: bottom",
+               "    friction: {law: tresca, factor: 0.3}\n    temperature: 250\n    heat_transfer: 10\n  - name: bottom",
+               swap("    friction: {law: tresca, factor: 0.3}\ntime:",
+                    "    friction: {law: tresca, factor: 0.3}\n    temperature: 250\n    heat_transfer: 10\n"
+                    "thermal:\n  environment: {temperature: 20, convection: 0.01}\ntime:"))
+
+
+def thermal_error(name, old, new, words, *extra):
+    case_error("thermal-" + name, swap(old, new, THERMAL), words, *extra)
+
+
+DIE_0 = "    temperature: 250\n    heat_transfer: 10\n  - name: bottom"
+BODY = "    material: " + MATERIAL
+thermal_error("die-below-absolute-zero", DIE_0, DIE_0.replace("250", "-500"),
+              ["dies[0].temperature", "'-500'", "-273.15"])
+thermal_error("air-below-absolute-zero", "temperature: 20, convection", "temperature: -300, convection",
+              ["thermal.environment.temperature", "'-300'"])
+thermal_error("air-at-1e6", "temperature: 20, convection", "temperature: 1e6, convection",
+              ["thermal.environment.temperature", "3500"])
+thermal_error("body-at-1e6", BODY, "    temperature: 1e6\n" + BODY, ["bodies[0].temperature", "'1e6'", "3500"])
+thermal_error("body-at-absolute-zero", BODY, "    temperature: -273.15\n" + BODY,
+              ["bodies[0].temperature", "> -273.15"])
+thermal_error("convection-huge", "convection: 0.01", "convection: 1e6", ["thermal.environment.convection", "'1e6'"])
+thermal_error("convection-negative", "convection: 0.01", "convection: -1", ["thermal.environment.convection"])
+thermal_error("heat-transfer-huge", DIE_0, DIE_0.replace("heat_transfer: 10", "heat_transfer: 1e9"),
+              ["dies[0].heat_transfer", "'1e9'"])
+thermal_error("taylor-quinney-above-one", "thermal:\n", "thermal:\n  taylor_quinney: 1.5\n",
+              ["thermal.taylor_quinney", "'1.5'"])
+case_error("set-body-below-absolute-zero", THERMAL, ["--set 'bodies[0].temperature=-300'", "-273.15"],
+           "--set", "bodies[0].temperature=-300")
+THERMAL_CARD = CARD.replace("sources:", "conductivity: 30\nspecific_heat: 460\ndensity: 7800\nsources:") + \
+    '  conductivity: "corpus"\n  specific_heat: "corpus"\n  density: "corpus"\n'
+for name, old, new, words in [
+    ("density-1e-300", "density: 7800", "density: 1e-300", ["card.yaml:", "density", "'1e-300'", ">= 100"]),
+    ("density-1e6", "density: 7800", "density: 1e6", ["card.yaml:", "density", "30000"]),
+    ("conductivity-1e9", "conductivity: 30", "conductivity: 1e9", ["card.yaml:", "conductivity", "'1e9'"]),
+    ("conductivity-zero", "conductivity: 30", "conductivity: 0", ["card.yaml:", "conductivity"]),
+    ("specific-heat-tiny", "specific_heat: 460", "specific_heat: 0.001", ["card.yaml:", "specific_heat"]),
+    ("table-below-absolute-zero", "conductivity: 30\nspecific_heat: 460",
+     "conductivity: [30, 31]\nspecific_heat: 460\nthermal_temperatures: [-400, 20]",
+     ["card.yaml:", "thermal_temperatures", "'-400'"]),
+    ("emissivity-above-one", "density: 7800", "density: 7800\nemissivity: 1.5", ["card.yaml:", "emissivity"]),
+    ("temperature-5000", "law: norton_hoff", "law: norton_hoff\ntemperature: 5000", ["card.yaml:", "temperature"]),
+]:
+    card = THERMAL_CARD.replace(old, new, 1)
+    for key in ["emissivity", "temperature", "thermal_temperatures"]:
+        if "\n" + key + ":" in "\n" + new and '  %s: "corpus"' % key not in card:
+            card += '  %s: "corpus"\n' % key
+    assert card != THERMAL_CARD, name
+    case_error("thermal-card-" + name, swap(MATERIAL, "card.yaml", THERMAL), words, files={"card.yaml": card})
+
+# --- velocities beyond any press ------------------------------------------------------------
+case_error("velocity-1e300", swap("velocity: [0, 0, -10]", "velocity: [0, 0, -1e300]"),
+           ["dies[0].velocity", "100000"])
+case_error("velocity-1e6", swap("velocity: [0, 0, -10]", "velocity: [1e6, 0, -10]"), ["dies[0].velocity", "each"])
+case_error("boundary-velocity-huge", swap("{name: symmetry_y, type: symmetry, tag: 3}",
+                                          "{name: symmetry_y, type: velocity, velocity: [~, 1e9, ~], tag: 3}"),
+           ["boundary[1].velocity"])
+
+# --- remeshing that would destroy a body ------------------------------------------------------
+REMESHING = base() + "remeshing: {quality: 0.1}\n"
+case_error("remesh-size-larger-than-body", swap("quality: 0.1}", "quality: 0.1, element_size: 20}", REMESHING),
+           ["remeshing.element_size", "20 mm", "a third", "billet"])
+case_error("remesh-size-half-the-body", swap("quality: 0.1}", "quality: 0.1, element_size: 2.5}", REMESHING),
+           ["remeshing.element_size", "2.5 mm", "three elements"])
+case_error("remesh-max-nodes-negative", swap("quality: 0.1}", "quality: 0.1, max_nodes: -1}", REMESHING),
+           ["remeshing.max_nodes"])
+case_error("remesh-time-limit-zero", swap("quality: 0.1}", "quality: 0.1, time_limit: 0}", REMESHING),
+           ["remeshing.time_limit", "> 0"])
+case_error("remesh-smallest-size-negative", swap("quality: 0.1}", "quality: 0.1, smallest_size: -0.05}", REMESHING),
+           ["remeshing.smallest_size"])
+case_error("set-remesh-size-larger-than-body", REMESHING, ["remeshing.element_size", "a third"],
+           "--set", "remeshing.element_size=50")
+
+# --- stops the geometry cannot reach ------------------------------------------------------------
+case_error("stop-stroke-past-the-other-die", swap("stop: {stroke: 1}", "stop: {stroke: 8}"),
+           ["time.stop.stroke", "8 mm is never reached", "meets die 'bottom'", "7.5"])
+case_error("stop-stroke-at-the-other-die", swap("stop: {stroke: 1}", "stop: {stroke: 7.5}"),
+           ["time.stop.stroke", "never reached"])
+case_error("set-stop-stroke-past-the-other-die", base(), ["time.stop.stroke", "never reached"],
+           "--set", "time.stop.stroke=20")
+
+# --- PETSc options the solver reads at its first solve ---------------------------------------------
+for name, option in [("rtol-text", ["-ksp_rtol", "abc"]), ("ksp-type", ["-ksp_type", "nonsense"])]:
+    f, a = run_case(base(), "--set", "solver.linear_solver=fgmres", *option)
+    add("petsc-option-" + name, f, a, 3, ["PETSc option", "not valid"])
+    ENTRIES[-1].output_ok = True  # read once the output folder exists
 
 # --- a run that reaches max_increments before its stop ---------------------------------
 f, a = run_case(base(), "--set", "time.max_increments=1")
@@ -612,7 +780,7 @@ def run_entry(anvil, helper, name):
         for word in entry.words:
             if word.replace("{dir}", folder) not in message:
                 problems.append("the message lacks '%s'" % word)
-        if entry.code == 3 and not out_existed and os.path.exists(os.path.join(folder, "out")):
+        if entry.code == 3 and not out_existed and not entry.output_ok and os.path.exists(os.path.join(folder, "out")):
             problems.append("an input error left an output folder behind")
         print("anvil " + " ".join(args))
         print("exit %d; stderr:\n%s" % (done.returncode, message))

@@ -68,8 +68,8 @@ TEST_CASE("anvil render draws a run's final state: the part in its field's colou
   CHECK(size[1] == 750);
   // With ffmpeg installed (tools/setup does not), an MP4 too: an ISO media
   // file ("ftyp" box at byte 4) of some size; no partial file left behind.
-  const bool mp4 = anvil::subprocess::on_path("ffmpeg");
-  if (mp4) {
+  const bool ffmpeg = anvil::subprocess::on_path("ffmpeg");
+  if (ffmpeg) {
     std::ifstream mp4(out.directory + "/render/temperature.mp4", std::ios::binary);
     std::string box(8, '\0');
     mp4.read(box.data(), 8);
@@ -82,7 +82,7 @@ TEST_CASE("anvil render draws a run's final state: the part in its field's colou
   // Nothing but the pictures: no file a shell would have made, no leftovers.
   std::set<std::string> made, expected = {"temperature_000001.png", "temperature_000007.png", "temperature_000014.png",
                                           "temperature_sheet.png", "temperature.gif"};
-  if (mp4) expected.insert("temperature.mp4");
+  if (ffmpeg) expected.insert("temperature.mp4");
   for (const auto& entry : std::filesystem::directory_iterator(out.directory + "/render"))
     made.insert(entry.path().filename().string());
   CHECK(made == expected);

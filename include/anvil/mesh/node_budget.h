@@ -13,6 +13,10 @@ inline constexpr double kRunBytesPerNode = 20e3;
 /// Physical memory of this machine (bytes).
 double physical_memory();
 
+/// Nodes a run can afford on this machine: its memory at kRunBytesPerNode,
+/// at most what 32-bit row indices of the linear system allow.
+double affordable_nodes();
+
 /// Throws InputError "`where`: about N nodes ..." when a mesh of `nodes`
 /// nodes would not fit in this machine's memory, or past the 32-bit indices
 /// of the linear system.

@@ -5,6 +5,7 @@
 #pragma once
 #include "anvil/mesh/TetMesh.h"
 
+#include <chrono>
 #include <functional>
 
 namespace anvil::remesh {
@@ -22,6 +23,9 @@ struct RemeshSettings {
   /// of ½ left slivers (q 0.08) there.
   std::function<double(const mesh::Point&)> size;
   double smallest_edge_length = 0.0;
+  /// The finer levels of `size` are not started after this: CGAL gives no
+  /// way to stop a pass, so a remesh is bounded between passes.
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
   double quality_floor =
       0.0; ///< putting a node back onto the old surface may not leave an element below this (or below what it was)
 };

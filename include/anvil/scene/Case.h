@@ -113,6 +113,8 @@ struct RemeshSpec {
   int iterations = 3;            ///< CGAL passes
   bool adaptive = false;         ///< size field: finer near the dies and where ε̄̇ is high (else uniform)
   double smallest_size = 0.0;    ///< mm, adaptive: edge length at a die surface; 0 = half the element size
+  int max_nodes = 0;             ///< node budget of one body's remesh; 0 = what the machine's memory allows
+  double time_limit = 120.0;     ///< s, work limit of one body's remesh (checked between CGAL passes)
   bool check_load = false;       ///< solve the increment after a remesh on the old mesh too: the load jump it makes
 };
 
