@@ -50,14 +50,16 @@ inline std::vector<std::string> split(const std::string& line) {
 /// The signature of the run in `directory`.
 inline Signature of_run(const std::string& directory) {
   Signature sig;
-  // loads.csv: increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N
+  // loads.csv: io::kLoadsHeader
   std::map<int, std::map<std::string, std::pair<double, double>>> loads; // increment → surface → (stroke, |Fz|)
   std::ifstream csv(directory + "/loads.csv");
   std::string line;
   std::getline(csv, line);
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = split(line);
-    if (f.size() != 7) throw anvil::InputError(directory + "/loads.csv: a row without 7 fields: " + line);
+    if (f.size() != anvil::io::kLoadsColumns)
+      throw anvil::InputError(directory + "/loads.csv: a row without " + std::to_string(anvil::io::kLoadsColumns) +
+                              " fields: " + line);
     if (std::find(sig.surfaces.begin(), sig.surfaces.end(), f[2]) == sig.surfaces.end()) sig.surfaces.push_back(f[2]);
     const double force = std::abs(std::stod(f[6])); // the press load (LoadRecord::press_load)
     loads[std::stoi(f[0])][f[2]] = {std::stod(f[3]), force};

@@ -15,7 +15,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <dlfcn.h>
 #include <exception>
 #include <filesystem>
 #include <optional>
@@ -165,20 +164,6 @@ void say_interrupted(const anvil::scene::RunEnd& end, const std::string& program
                end.stop.c_str(), directory.c_str(), command.c_str());
 }
 
-/// One BLAS and OpenMP thread unless OPENBLAS_NUM_THREADS or OMP_NUM_THREADS
-/// say otherwise: a multithreaded BLAS sums in an order that changes from run
-/// to run (two outcomes in five runs of a remeshing case, 6e-7 apart), which
-/// would make a resumed run end otherwise than the uninterrupted one; and its
-/// threads would spin on the cores TBB assembles with. Found at run time:
-/// the BLAS behind libblas.so.3 is Debian's choice (alternatives).
-void one_blas_thread() {
-  using SetThreads = void (*)(int);
-  if (!std::getenv("OPENBLAS_NUM_THREADS"))
-    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
-  if (!std::getenv("OMP_NUM_THREADS"))
-    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "omp_set_num_threads"))) set(1);
-}
-
 /// How long the processes of a run may take to reach its end one after the
 /// other (s): rank 0 writes the last output while the others wait.
 constexpr double kEndTogether = 10.0;
@@ -264,7 +249,6 @@ int main(int argc, char** argv) {
     return report(e, true);
   }
   anvil::interrupt::install(); // after PETSc, whose own handlers it replaces
-  one_blas_thread();
   int code = 0;
   std::string picture_directory;
   bool picture_mirror = false;

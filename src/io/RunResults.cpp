@@ -47,22 +47,22 @@ void for_each_csv_row(const std::string& path, std::size_t count, const char* he
 
 std::vector<LoadRow> read_loads(const std::string& directory, const std::string& surface) {
   std::vector<LoadRow> rows;
-  for_each_csv_row(
-      directory + "/loads.csv", 7, "increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N",
-      [&](const std::vector<std::string>& c) {
-        if (c[2] == surface)
-          rows.push_back(
-              {std::stoi(c[0]), std::stod(c[1]), std::stod(c[3]), {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])}});
-      });
+  for_each_csv_row(directory + "/loads.csv", kLoadsColumns, kLoadsHeader, [&](const std::vector<std::string>& c) {
+    if (c[2] == surface)
+      rows.push_back({std::stoi(c[0]),
+                      std::stod(c[1]),
+                      std::stod(c[3]),
+                      {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])},
+                      std::stod(c[7])});
+  });
   return rows;
 }
 
 std::vector<std::string> read_load_surfaces(const std::string& directory) {
   std::vector<std::string> surfaces;
-  for_each_csv_row(directory + "/loads.csv", 7, "increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N",
-                   [&](const std::vector<std::string>& c) {
-                     if (std::find(surfaces.begin(), surfaces.end(), c[2]) == surfaces.end()) surfaces.push_back(c[2]);
-                   });
+  for_each_csv_row(directory + "/loads.csv", kLoadsColumns, kLoadsHeader, [&](const std::vector<std::string>& c) {
+    if (std::find(surfaces.begin(), surfaces.end(), c[2]) == surfaces.end()) surfaces.push_back(c[2]);
+  });
   return surfaces;
 }
 

@@ -1,5 +1,7 @@
 #include "anvil/io/RunWriter.h"
 
+#include "anvil/io/RunResults.h"
+
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
@@ -25,7 +27,7 @@ void put_load_rows(std::ostream& out, const scene::Scene& scene, const std::vect
   for (std::size_t i = first; i < loads.size(); ++i) {
     const scene::LoadRecord& r = loads[i];
     out << r.increment << "," << r.time << "," << scene.surfaces[r.surface].name << "," << r.stroke << ","
-        << r.force.x() << "," << r.force.y() << "," << r.force.z() << "\n";
+        << r.force.x() << "," << r.force.y() << "," << r.force.z() << "," << scene.whole_part_load(r) << "\n";
   }
 }
 
@@ -69,7 +71,7 @@ void RunWriter::write_loads(const scene::Scene& scene, const scene::RunState& st
   const std::string path = directory_ + "/loads.csv";
   if (!loads_started_) {
     std::ostringstream whole;
-    whole << "increment,time_s,surface,stroke_mm,Fx_N,Fy_N,Fz_N\n";
+    whole << kLoadsHeader << "\n";
     put_load_rows(whole, scene, state.loads, 0);
     write_file_atomically(path, whole.str());
     loads_started_ = true;
@@ -315,16 +317,20 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
   json.key("dies").begin_array();
   for (std::size_t d = 0; d < scene.dies.size(); ++d)
     json.begin_object().member("name", scene.dies[d].name).member("stroke_mm", state.dies[d].stroke).end_object();
-  // The press load (along z, LoadRecord::press_load) of each load surface: its peak and its last value.
-  json.end_array().key("press_loads_N").begin_array();
+  // The press load (along z) of each load surface, of the whole part and of
+  // the model (a symmetry model's share): its peak and its last value.
+  json.end_array().member("model", scene.model_text()).member("symmetry_copies", scene.symmetry_copies);
+  json.key("press_loads_N").begin_array();
   for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
     double peak = 0.0, last_load = 0.0;
     for (const scene::LoadRecord& r : state.loads)
       if (r.surface == static_cast<int>(s)) peak = std::max(peak, r.press_load()), last_load = r.press_load();
     json.begin_object()
         .member("surface", scene.surfaces[s].name)
-        .member("peak", peak)
-        .member("last", last_load)
+        .member("peak_whole_part", scene.symmetry_copies * peak)
+        .member("last_whole_part", scene.symmetry_copies * last_load)
+        .member("peak_model", peak)
+        .member("last_model", last_load)
         .end_object();
   }
   json.end_array().key("effects").begin_array();

@@ -26,7 +26,8 @@ std::string gnuplot_quoted(const std::string& text) {
 } // namespace
 
 std::string write_load_plot(const std::string& directory, const std::string& title,
-                            const std::vector<std::string>& surfaces, const std::vector<scene::LoadRecord>& loads) {
+                            const std::vector<std::string>& surfaces, const std::vector<scene::LoadRecord>& loads,
+                            int copies) {
   if (loads.empty()) return "no load was recorded";
   std::map<int, double> press; // increment → press stroke
   for (const scene::LoadRecord& r : loads)
@@ -41,7 +42,7 @@ std::string write_load_plot(const std::string& directory, const std::string& tit
     out.precision(10);
     for (std::size_t s = 0; s < surfaces.size(); ++s) {
       for (const scene::LoadRecord& r : loads)
-        if (r.surface == static_cast<int>(s)) out << press[r.increment] << " " << r.press_load() / 1e3 << "\n";
+        if (r.surface == static_cast<int>(s)) out << press[r.increment] << " " << copies * r.press_load() / 1e3 << "\n";
       out << "\n\n";
     }
     if (!out) return "cannot write " + data;
@@ -50,7 +51,11 @@ std::string write_load_plot(const std::string& directory, const std::string& tit
   script << "set terminal pngcairo size 900,600 noenhanced\nset output '" << png_name << ".tmp'\n"
          << "set title " << gnuplot_quoted("Press load against stroke: " + title)
          << "\nset xlabel 'press stroke (mm)'\n"
-         << "set ylabel 'press load Fz (kN)'\nset grid\nset key top left\nplot ";
+         << "set ylabel "
+         << gnuplot_quoted(copies > 1 ? "press load Fz of the whole part (kN): " + std::to_string(copies) +
+                                            " x the symmetry model's"
+                                      : "press load Fz (kN)")
+         << "\nset grid\nset key top left\nplot ";
   for (std::size_t s = 0; s < surfaces.size(); ++s)
     script << (s ? ", " : "") << "'" << data_name << "' index " << s
            << " using 1:2 with linespoints pointsize 0.5 title " << gnuplot_quoted(surfaces[s]);

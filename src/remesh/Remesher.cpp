@@ -10,6 +10,7 @@
 #include "anvil/remesh/fit_to_dies.h"
 #include "anvil/remesh/load_check.h"
 #include "anvil/remesh/quality.h"
+#include "anvil/remesh/rebuild_region.h"
 #include "anvil/remesh/remesh_body.h"
 #include "anvil/remesh/size_field.h"
 #include "anvil/thermal/HeatStep.h"
@@ -169,8 +170,148 @@ double relative(double after, double before) {
   return before != 0.0 ? after / before - 1.0 : after - before;
 }
 
+/// A body remeshed around its poor elements, with its fields.
+struct LocalRemesh {
+  mesh::TetMesh mesh;
+  Eigen::VectorXd nodal;                                        ///< 4 a node: v, p
+  std::vector<double> strain;                                   ///< ε̄ a tet
+  Eigen::VectorXd temperature;                                  ///< a node; empty when isothermal
+  int rebuilt = 0;                                              ///< tets of the old mesh rebuilt
+  double worst = 1.0;                                           ///< worst quality of the rebuilt region
+  double strain_integral_change = 0.0, strain_max_change = 0.0; ///< relative, over the body
+};
+
+/// Layers of elements around the poor ones that a local remesh rebuilds too.
+constexpr int kRegionLayers = 2;
+/// A region larger than this share of a body is rebuilt whole.
+constexpr double kMostLocal = 0.5;
+
+/// The tets of `m` that `keep` flags, as a mesh of their own.
+mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
+  mesh::TetMesh out;
+  std::vector<int> number(m.nodes.size(), -1);
+  for (int e = 0; e < m.tet_count(); ++e) {
+    if (!keep[e]) continue;
+    mesh::Tet t = m.tets[e];
+    for (int& v : t) {
+      if (number[v] < 0) number[v] = static_cast<int>(out.nodes.size()), out.nodes.push_back(m.nodes[v]);
+      v = number[v];
+    }
+    out.tets.push_back(t);
+  }
+  return out;
+}
+
+/// Body `b`'s mesh `part` rebuilt where its elements are poor (rebuild_region),
+/// the rest kept bit for bit with its fields; the fields transferred in the
+/// rebuilt region only. Nothing, with `why_not` saying why, when the region
+/// is most of the body or the result's region is still below the trigger
+/// (its poor elements are held by the surface, which a local remesh keeps).
+std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, const mesh::TetMesh& part,
+                                          const Eigen::Ref<const Eigen::VectorXd>& part_nodal,
+                                          const std::vector<double>& part_strain, const double* part_temperature,
+                                          double time_step, std::string& why_not) {
+  const scene::RemeshSpec& spec = scene.input.remeshing;
+  const scene::Body& body = scene.bodies[b];
+  const std::vector<char> region = rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
+  LocalRemesh out;
+  out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1));
+  char text[200];
+  if (out.rebuilt == 0) {
+    why_not = "no element to rebuild locally";
+    return std::nullopt;
+  }
+  if (out.rebuilt > kMostLocal * part.tet_count()) {
+    std::snprintf(text, sizeof text, "the region to rebuild holds %d of its %d elements", out.rebuilt,
+                  part.tet_count());
+    why_not = text;
+    return std::nullopt;
+  }
+  RemeshSettings settings;
+  settings.edge_length = body.remesh_size;
+  settings.feature_angle = spec.feature_angle;
+  settings.iterations = spec.iterations;
+  RegionRemesh local = remesh_region(part, region, settings);
+  for (int e = local.kept_tets; e < local.mesh.tet_count(); ++e)
+    out.worst = std::min(out.worst, mesh::quality(local.mesh, e));
+  if (out.worst < spec.quality) {
+    std::snprintf(text, sizeof text,
+                  "a local remesh of %d elements left worst quality %.3f (its surface, which it keeps, holds it)",
+                  out.rebuilt, out.worst);
+    why_not = text;
+    return std::nullopt;
+  }
+  // Fields: the kept nodes and tets keep theirs; the new ones take them from
+  // the old region, ε̄ by the conservative remap.
+  const mesh::TetMesh old_region = tets_of(part, region);
+  std::vector<char> is_new(local.mesh.tets.size(), 0);
+  std::fill(is_new.begin() + local.kept_tets, is_new.end(), 1);
+  const mesh::TetMesh new_region = tets_of(local.mesh, is_new);
+  std::vector<double> old_strain;
+  for (int e = 0; e < part.tet_count(); ++e)
+    if (region[e]) old_strain.push_back(part_strain[e]);
+  const PointLocator in_old(old_region);
+  const std::vector<double> new_strain = transfer_element(old_region, old_strain, in_old, new_region);
+  out.strain.reserve(local.mesh.tets.size());
+  for (int e = 0; e < part.tet_count(); ++e)
+    if (!region[e]) out.strain.push_back(part_strain[e]);
+  out.strain.insert(out.strain.end(), new_strain.begin(), new_strain.end());
+  out.strain_integral_change = relative(integral(local.mesh, out.strain), integral(part, part_strain));
+  out.strain_max_change = relative(*std::max_element(out.strain.begin(), out.strain.end()),
+                                   *std::max_element(part_strain.begin(), part_strain.end()));
+  std::vector<mesh::Point> fresh;
+  for (std::size_t n = 0; n < local.mesh.nodes.size(); ++n)
+    if (local.old_node[n] < 0) fresh.push_back(local.mesh.nodes[n]);
+  const std::vector<Location> at = in_old.locate(fresh);
+  // The old region's nodal values, in its own numbering (tets_of's order).
+  auto region_values = [&](const double* values, int stride) {
+    Eigen::VectorXd v(stride * old_region.node_count());
+    std::vector<int> number(part.nodes.size(), -1);
+    int next_node = 0;
+    for (int e = 0; e < part.tet_count(); ++e)
+      if (region[e])
+        for (int node : part.tets[e])
+          if (number[node] < 0) {
+            number[node] = next_node;
+            v.segment(stride * next_node++, stride) = Eigen::Map<const Eigen::VectorXd>(values + stride * node, stride);
+          }
+    return v;
+  };
+  auto carry = [&](const double* values, int stride) {
+    const Eigen::VectorXd interpolated = interpolate_nodal(old_region, region_values(values, stride), stride, at);
+    Eigen::VectorXd all(stride * local.mesh.node_count());
+    for (std::size_t n = 0, k = 0; n < local.mesh.nodes.size(); ++n)
+      all.segment(stride * n, stride) =
+          local.old_node[n] >= 0
+              ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(values + stride * local.old_node[n], stride))
+              : Eigen::VectorXd(interpolated.segment(stride * k++, stride));
+    return all;
+  };
+  out.nodal = carry(part_nodal.data(), 4);
+  if (part_temperature) {
+    out.temperature = carry(part_temperature, 1);
+    if (const auto& body_thermal = body.thermal) {
+      // The new nodes' interpolated temperatures change the stored heat a
+      // little: a shift of theirs alone gives it back.
+      const thermal::NodalMass m_old = nodal_mass(part, *body_thermal), m_new = nodal_mass(local.mesh, *body_thermal);
+      const double before =
+          thermal::enthalpy(m_old, mesh::whole_range(part), {part_temperature, std::size_t(part.node_count())});
+      const double after = thermal::enthalpy(m_new, mesh::whole_range(local.mesh),
+                                             {out.temperature.data(), std::size_t(local.mesh.node_count())});
+      double capacity = 0.0;
+      for (int n = 0; n < local.mesh.node_count(); ++n)
+        if (local.old_node[n] < 0) capacity += m_new.mass[n] * body_thermal->specific_heat.at(out.temperature[n]);
+      if (capacity > 0.0)
+        for (int n = 0; n < local.mesh.node_count(); ++n)
+          if (local.old_node[n] < 0) out.temperature[n] += (before - after) / capacity;
+    }
+  }
+  out.mesh = std::move(local.mesh);
+  return out;
+}
+
 void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
-                   std::span<const int> touching_die, std::span<const double> rate, Timers& timers) {
+                   std::span<const int> touching_die, std::span<const double> rate, double time_step, Timers& timers) {
   Timers::Scope scope(timers, "remeshing");
   const bool carries_stress = !state.elastic_stress.empty();
   const bool thermal = !state.temperature.empty();
@@ -205,6 +346,39 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     if (why == due.end()) {
       keep_mesh();
       continue;
+    }
+    if (why->local) {
+      std::string whole;
+      std::optional<LocalRemesh> local =
+          remesh_locally(scene, int(b), part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count),
+                         part_strain, part_temperature, time_step, whole);
+      if (local) {
+        ranges.push_back(mesh::append(next, local->mesh));
+        append_values(nodal, local->nodal.data(), local->nodal.size());
+        if (thermal) append_values(temperature, local->temperature.data(), local->temperature.size());
+        append_values(strain, local->strain.data(), local->strain.size());
+        if (carries_stress) stress.insert(stress.end(), 6 * local->mesh.tets.size(), 0.0);
+        const scene::RemeshRecord record{
+            state.increment,
+            int(b),
+            part.node_count(),
+            local->mesh.node_count(),
+            worst_quality(part),
+            worst_quality(local->mesh),
+            relative(mesh::volume(local->mesh), mesh::volume(part)),
+            local->strain_integral_change,
+            local->strain_max_change,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+        state.remeshes.push_back(record);
+        log::info(
+            "  remesh '%s' (%s), local: %d of %d elements rebuilt, the rest and the surface kept; %d -> %d nodes; "
+            "worst quality %.3f -> %.3f; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
+            scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, part.tet_count(), record.nodes_before,
+            record.nodes_after, record.worst_quality_before, record.worst_quality_after,
+            100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
+        continue;
+      }
+      log::info("  remesh '%s': the whole body, as %s", scene.bodies[b].name.c_str(), whole.c_str());
     }
     const PointLocator in_old(part);
     std::string refused;
@@ -338,6 +512,9 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
                 body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
                 q.predicted_worst);
     char why[160] = "";
+    // A local remesh may do for poor elements (it keeps the surface: a die
+    // corner sunk into the body, or a periodic remesh, takes the whole body).
+    const bool local = spec.local && (q.worst < spec.quality || q.predicted_worst <= 0.0);
     if (q.worst < spec.quality)
       std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
     else if (q.predicted_worst <= 0.0)
@@ -358,7 +535,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
                         scene.dies[d].name.c_str(), x.x(), x.y(), x.z(), inside[d].depth);
         }
     }
-    if (why[0]) due.push_back({int(b), why});
+    if (why[0]) due.push_back({int(b), why, local});
   }
   return due;
 }
@@ -370,7 +547,7 @@ void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const R
   const double old_mesh = check ? next_increment_load(scene, state, next, 1, timers) : 0.0;
   const std::size_t first_record = state.remeshes.size();
   // Several processes: rank 0 remeshes, the others take its new mesh and fields.
-  processes::on_root([&] { remesh_bodies(scene, state, due, touching_die, rate, timers); });
+  processes::on_root([&] { remesh_bodies(scene, state, due, touching_die, rate, next.length, timers); });
   scene::share_state(state);
   if (!check) return;
   // Twice on the new mesh: friction takes σ₀ from the strain rates of the

@@ -107,18 +107,26 @@ template <class Selector> void remesh_pass(Triangulation& tr, double length, int
                                             .smooth_constrained_edges(false)
                                             .cell_is_selected_map(selected));
 }
-} // namespace
 
-mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {
+/// `body` as a CGAL remeshing triangulation into `tr`: tet e in subdomain
+/// `subdomain(e)` (0: outside, which CGAL leaves as it is), each boundary
+/// face on its patch (boundary_patches, one per face into `patch`).
+/// `handles[i + 1]` is node i's vertex. Returns the boundary tag of each
+/// patch number.
+template <class Subdomain>
+std::vector<int> build(const mesh::TetMesh& body, double feature_angle, Subdomain subdomain, Triangulation& tr,
+                       std::vector<VertexHandle>& handles, std::vector<int>& patch) {
   std::vector<Triangulation::Point> points;
   points.reserve(body.nodes.size());
   for (const mesh::Point& x : body.nodes)
     points.emplace_back(x.x(), x.y(), x.z());
   std::vector<std::array<int, 5>> cells;
   cells.reserve(body.tets.size());
-  for (const mesh::Tet& t : body.tets)
-    cells.push_back({t[0], t[1], t[2], t[3], 1});
-  const std::vector<int> patch = boundary_patches(body, settings.feature_angle);
+  for (std::size_t e = 0; e < body.tets.size(); ++e) {
+    const mesh::Tet& t = body.tets[e];
+    cells.push_back({t[0], t[1], t[2], t[3], subdomain(e)});
+  }
+  patch = boundary_patches(body, feature_angle);
   std::map<std::array<int, 3>, int> patch_of_facet;
   std::vector<int> tag_of_patch(1, 0);
   for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
@@ -126,11 +134,20 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
     if (patch[f] >= static_cast<int>(tag_of_patch.size())) tag_of_patch.resize(patch[f] + 1, 0);
     tag_of_patch[patch[f]] = body.boundary_tags[f];
   }
-  Triangulation tr;
-  std::vector<VertexHandle> handles;
   if (!CGAL::build_triangulation<Triangulation, false>(tr, points, cells, patch_of_facet, handles))
     throw RunError("remeshing: CGAL cannot build a triangulation from the body's tets (is the body one "
                    "piece without holes?)");
+  return tag_of_patch;
+}
+
+} // namespace
+
+mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {
+  Triangulation tr;
+  std::vector<VertexHandle> handles;
+  std::vector<int> patch;
+  const std::vector<int> tag_of_patch = build(
+      body, settings.feature_angle, [](std::size_t) { return 1; }, tr, handles, patch);
 
   auto in_body = [](Triangulation::Cell_handle c) { return c->subdomain_index() != 0; }; // CGAL's own default
   remesh_pass(tr, settings.edge_length, settings.iterations, in_body);
@@ -235,6 +252,69 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   }
   mesh::restore_volume(out, mesh::volume(body), inside_curved_patches(out, curved_tags(body, patch, tag_of_patch)));
   mesh::validate(out, "remeshed body");
+  return out;
+}
+
+RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebuilt, const RemeshSettings& settings) {
+  // The kept tets are outside for CGAL (subdomain 0), and every boundary,
+  // the region's border with them included, is frozen: CGAL changes the
+  // region's inside only, and every vertex on its border stays where it is.
+  Triangulation tr;
+  std::vector<VertexHandle> handles;
+  std::vector<int> patch;
+  build(
+      body, settings.feature_angle, [&](std::size_t e) { return rebuilt[e] ? 1 : 0; }, tr, handles, patch);
+  CGAL::tetrahedral_isotropic_remeshing(
+      tr, settings.edge_length, CGAL::parameters::number_of_iterations(settings.iterations).remesh_boundaries(false));
+
+  // The nodes that stay: those of kept tets and on the region's boundary,
+  // which CGAL could not move or remove; their handles live on.
+  const int n = body.node_count();
+  std::vector<char> stays(static_cast<std::size_t>(n), 0);
+  for (std::size_t e = 0; e < body.tets.size(); ++e)
+    if (!rebuilt[e])
+      for (int v : body.tets[e])
+        stays[v] = 1;
+  for (const mesh::Triangle& f : body.boundary_faces)
+    for (int v : f)
+      stays[v] = 1;
+  RegionRemesh out;
+  std::unordered_map<VertexHandle, int> number;
+  for (int i = 0; i < n; ++i)
+    if (stays[i]) {
+      number.emplace(handles[i + 1], static_cast<int>(out.mesh.nodes.size()));
+      out.mesh.nodes.push_back(body.nodes[i]);
+      out.old_node.push_back(i);
+    }
+  for (std::size_t e = 0; e < body.tets.size(); ++e)
+    if (!rebuilt[e]) {
+      mesh::Tet t = body.tets[e];
+      for (int& v : t)
+        v = number.at(handles[v + 1]);
+      out.mesh.tets.push_back(t);
+    }
+  out.kept_tets = out.mesh.tet_count();
+  // The new region: its new vertices after the kept ones, its tets after the kept tets.
+  for (auto c : tr.finite_cell_handles()) {
+    if (c->subdomain_index() == 0) continue;
+    mesh::Tet t;
+    for (int i = 0; i < 4; ++i) {
+      const auto [it, added] = number.try_emplace(c->vertex(i), static_cast<int>(out.mesh.nodes.size()));
+      if (added) {
+        const auto& x = c->vertex(i)->point();
+        out.mesh.nodes.emplace_back(x.x(), x.y(), x.z());
+        out.old_node.push_back(-1);
+      }
+      t[i] = it->second;
+    }
+    out.mesh.tets.push_back(t);
+  }
+  // The boundary is the body's, face for face.
+  std::vector<mesh::Triangle> tagged;
+  for (const mesh::Triangle& f : body.boundary_faces)
+    tagged.push_back({number.at(handles[f[0] + 1]), number.at(handles[f[1] + 1]), number.at(handles[f[2] + 1])});
+  mesh::build_boundary(out.mesh, tagged, body.boundary_tags);
+  mesh::validate(out.mesh, "locally remeshed body");
   return out;
 }
 

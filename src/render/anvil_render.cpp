@@ -227,8 +227,8 @@ vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEn
   std::string text = caption;
   for (const anvil::io::LoadRow& row : loads)
     if (row.increment == frame.increment) {
-      std::snprintf(caption, sizeof caption, "   stroke %.4g mm   load(%s) %.4g kN", row.stroke, load_surface.c_str(),
-                    std::abs(row.force.z()) / 1e3);
+      std::snprintf(caption, sizeof caption, "   stroke %.4g mm   press load(%s) %.4g kN, whole part", row.stroke,
+                    load_surface.c_str(), row.whole_part_load / 1e3);
       text += caption;
     }
   vtkNew<vtkTextActor> label;

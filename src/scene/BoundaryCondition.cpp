@@ -75,6 +75,7 @@ ImposedConditions impose(const mesh::TetMesh& mesh, const std::vector<BoundaryCo
                                           : " (no face lies on the plane)"));
     const std::vector<int> nodes = face_nodes(mesh, faces);
     out.nodes_of_condition.push_back(nodes);
+    out.symmetry_axis.push_back(-1);
     switch (bc.kind) {
     case BoundaryKind::velocity:
     case BoundaryKind::sticking_plate:
@@ -91,6 +92,7 @@ ImposedConditions impose(const mesh::TetMesh& mesh, const std::vector<BoundaryCo
       if (axis < 0)
         throw InputError(bc.source + ": '" + bc.name + "' needs its faces on one plane normal to x, y or z");
       const double value = bc.kind == BoundaryKind::symmetry ? 0.0 : bc.velocity[axis].value_or(0.0);
+      if (bc.kind == BoundaryKind::symmetry) out.symmetry_axis.back() = axis;
       for (int v : nodes)
         prescribe(v, axis, value);
       break;

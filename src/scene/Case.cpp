@@ -437,6 +437,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     m.max_nodes = doc.integer(r, "max_nodes", "remeshing.max_nodes");
     m.time_limit = doc.number(r, "time_limit", "remeshing.time_limit");
     m.check_load = doc.boolean(r, "check_load", "remeshing.check_load");
+    m.local = doc.boolean(r, "local", "remeshing.local");
   }
   if (!c.dies.empty() && !c.time.enabled)
     doc.fail(root["dies"], "dies", "dies need a 'time' section (stroke increment and stop criteria)");

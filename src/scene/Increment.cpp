@@ -1,5 +1,7 @@
 #include "anvil/scene/Increment.h"
 
+#include "anvil/core/log.h"
+
 #include "anvil/contact/contact_scales.h"
 #include "anvil/mesh/tet_geometry.h"
 
@@ -120,21 +122,14 @@ std::vector<Eigen::Vector3d> surface_forces(const Scene& scene, const Discretisa
   return forces;
 }
 
-/// The loads.csv records of `forces` at the end of increment `increment` (time `time`), the dies at `dies`.
+/// The loads.csv records of `forces`, solved on the geometry after
+/// `increment` increments (time `time`, the dies at `dies`); they replace
+/// records of that geometry already there (a resumed run's last ones).
 void append_loads(const Scene& scene, std::span<const DieState> dies, int increment, double time,
                   const std::vector<Eigen::Vector3d>& forces, std::vector<LoadRecord>& loads) {
-  for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-    const LoadSurface& surface = scene.surfaces[s];
-    double stroke = 0.0;
-    if (surface.die >= 0) {
-      stroke = dies[surface.die].stroke;
-    } else {
-      const auto& v = scene.conditions[surface.condition].velocity;
-      stroke = time * std::sqrt(std::pow(v[0].value_or(0.0), 2) + std::pow(v[1].value_or(0.0), 2) +
-                                std::pow(v[2].value_or(0.0), 2));
-    }
-    loads.push_back({increment, time, int(s), stroke, forces[s]});
-  }
+  std::erase_if(loads, [&](const LoadRecord& r) { return r.increment == increment; });
+  for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
+    loads.push_back({increment, time, int(s), surface_stroke(scene, dies, int(s), time), forces[s]});
 }
 
 void count_iterations(const solver::NewtonReport& report, RunState& state) {
@@ -143,6 +138,14 @@ void count_iterations(const solver::NewtonReport& report, RunState& state) {
 }
 
 } // namespace
+
+double surface_stroke(const Scene& scene, std::span<const DieState> dies, int surface, double time) {
+  const LoadSurface& s = scene.surfaces[surface];
+  if (s.die >= 0) return dies[s.die].stroke;
+  const auto& v = scene.conditions[s.condition].velocity;
+  return time *
+         std::sqrt(std::pow(v[0].value_or(0.0), 2) + std::pow(v[1].value_or(0.0), 2) + std::pow(v[2].value_or(0.0), 2));
+}
 
 IncrementOutcome solve_increment(const Scene& scene, Discretisation& disc, const RunState& state, const TimeStep& step,
                                  Timers& timers, ContactEvents events, const fem::BodyUnknowns* guess) {
@@ -247,10 +250,14 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
     }
 
   const double volume_after = mesh::volume(moved);
+  // A flow's loads were solved on the geometry where the increment starts
+  // (its strain rates there, ε̄ and T at its start): they are recorded at
+  // its stroke and time. Elastic bodies' loads hold at its end.
+  if (!scene.all_elastic) append_loads(scene, state.dies, state.increment, state.time, inc.forces, state.loads);
   state.mesh.nodes = std::move(moved.nodes); // the elements stay: the discretisation holds on to them
   state.dies = std::move(dies);
   state.unknowns = std::move(inc.unknowns);
-  append_loads(scene, state.dies, state.increment + 1, state.time + dt, inc.forces, state.loads);
+  if (scene.all_elastic) append_loads(scene, state.dies, state.increment + 1, state.time + dt, inc.forces, state.loads);
   state.volume.solver += volume_flow - volume_before;
   state.volume.compensation += inc.compensation;
   state.volume.projection += volume_after - volume_flow;
@@ -280,7 +287,9 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
   for (std::size_t d = 0; d < scene.dies.size(); ++d) {
     const Eigen::Vector3d v = scene.dies[d].velocity(state.dies[d], dt);
     if (v.norm() == 0.0) continue;
-    scene.dies[d].limit_speed(state.dies[d], inc.forces[d].dot(-v.normalized()), rate_sensitivity);
+    // The press's limit holds for the whole part, not for a symmetry model of it.
+    scene.dies[d].limit_speed(state.dies[d], scene.symmetry_copies * inc.forces[d].dot(-v.normalized()),
+                              rate_sensitivity);
   }
   return true;
 }
@@ -303,6 +312,29 @@ void transfer(const Scene& scene, Discretisation& disc, RunState& state, Timers&
     state.transfer_time += dt;
   }
   element_temperatures(state.mesh, state.temperature, disc.point_states);
+}
+
+void record_final_loads(const Scene& scene, Discretisation& disc, RunState& state, double dt, Timers& timers) {
+  if (scene.all_elastic) return; // the last increment's loads are those of its end already
+  // The dies at their place, at the speed of the last increment (a table or
+  // a crank that ends there would otherwise stand still).
+  RunState end = state;
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    end.dies[d].press_time -= end.dies[d].speed_factor * dt;
+  // As an increment would be solved: Newton that ran out of iterations while
+  // its residual fell goes on from its last iterate, else a shorter step.
+  TimeStep step{.nominal = dt, .planned = dt, .length = dt};
+  IncrementOutcome inc = solve_increment(scene, disc, end, step, timers, ContactEvents::ignore);
+  for (int tries = 0; !inc.converged() && !inc.report.interrupted && tries < scene.input.time.max_cuts; ++tries) {
+    const bool on_its_way = inc.report.on_its_way();
+    if (!on_its_way) step.length *= 0.5;
+    const fem::BodyUnknowns stopped_at = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};
+    inc = solve_increment(scene, disc, end, step, timers, ContactEvents::ignore, on_its_way ? &stopped_at : nullptr);
+  }
+  if (inc.converged())
+    append_loads(scene, state.dies, state.increment, state.time, inc.forces, state.loads);
+  else
+    log::info("the loads at the final geometry are not recorded: %s", inc.failure.c_str());
 }
 
 void accept_without_motion(const Scene& scene, const IncrementOutcome& inc, RunState& state) {

@@ -9,6 +9,7 @@
 #include "anvil/scene/fingerprint.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -179,6 +180,7 @@ void check_dies_outside_bodies(const Scene& scene) {
 
 Scene::Scene(const Case& c, Timers& timers) : input(c) {
   // The bodies are solved as one mesh of disjoint parts, each element with its body's law.
+  std::array<bool, 2> symmetric_about = {false, false}; // symmetry planes normal to x, y
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     const BodySpec& spec = c.bodies[b];
     MaterialCard card = read_material(spec.material_file);
@@ -201,6 +203,8 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
       Timers::Scope scope(timers, "effect boundary_conditions");
       body.initial_imposed = impose(part, body.conditions);
     }
+    for (const int axis : body.initial_imposed.symmetry_axis)
+      if (axis == 0 || axis == 1) symmetric_about[axis] = true;
     body.initial_volume = mesh::volume(part);
     body.remesh_size = c.remeshing.element_size > 0.0 ? c.remeshing.element_size : mean_boundary_edge(part);
     if (c.remeshing.enabled && c.remeshing.element_size > 0.0) {
@@ -227,11 +231,12 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     initial_ranges.push_back(mesh::append(initial_mesh, part));
     bodies.push_back(std::move(body));
   }
+  symmetry_copies = (symmetric_about[0] ? 2 : 1) * (symmetric_about[1] ? 2 : 1);
   std::vector<const material::Material*> laws;
   for (const Body& body : bodies)
     laws.push_back(body.law.get());
-  solve_displacement = !c.time.enabled && std::all_of(laws.begin(), laws.end(),
-                                                      [](const material::Material* l) { return l->is_elastic(); });
+  all_elastic = std::all_of(laws.begin(), laws.end(), [](const material::Material* l) { return l->is_elastic(); });
+  solve_displacement = !c.time.enabled && all_elastic;
   for (Body& body : bodies)
     body.velocity_form = body.law->is_elastic() && !solve_displacement;
   carries_stress = std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.velocity_form; });
@@ -276,6 +281,13 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
   if (c.time.enabled) check_stops_reachable(*this);
   check_dies_outside_bodies(*this);
   fingerprint = case_fingerprint(c);
+}
+
+std::string Scene::model_text() const {
+  if (symmetry_copies == 1) return "whole part";
+  return std::string(symmetry_copies == 4 ? "quarter model (symmetry planes normal to x and y)"
+                                          : "half model (a symmetry plane containing the press axis)") +
+         ": the whole part's press load is " + std::to_string(symmetry_copies) + " x the model's";
 }
 
 double Scene::die_gap(std::span<const DieState> dies_now) const {

@@ -96,6 +96,7 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
     log::info("  contact: penalty %g x 3 x secant viscosity of the softest body / scene size (set each increment), "
               "friction regularisation %.3g mm/s",
               c.contact.penalty, c.contact.regularisation * scene.reference_velocity);
+  log::info("loads: %s", scene.model_text().c_str());
   std::string effect_list;
   for (const auto& e : scene.effects)
     effect_list += " " + e;
@@ -141,10 +142,15 @@ void log_progress(const Scene& scene, const Discretisation& disc, const RunState
   std::string krylov =
       disc.solver->linear_solver().iterative() ? " krylov " + std::to_string(inc.report.linear_iterations) : "";
   if (inc.couplings > 0) krylov += " coupled " + std::to_string(inc.couplings);
-  log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN  newton %zu%s  contact %d  volume %+.3f%% "
-            "(%.3f%% inside dies)%s  left ~%s",
-            state.increment, state.time, lead.stroke, inc.time_step, scene.surfaces[lead.surface].name.c_str(),
-            lead.press_load() / 1e3, inc.report.iterations.size(), krylov.c_str(), contacts,
+  // The load of the whole part, and of the model when it is a symmetry model's share.
+  char model[48] = "";
+  if (scene.symmetry_copies > 1)
+    std::snprintf(model, sizeof model, " (%d x %.5g)", scene.symmetry_copies, lead.press_load() / 1e3);
+  log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN%s at %.4g mm  newton %zu%s  contact %d  "
+            "volume %+.3f%% (%.3f%% inside dies)%s  left ~%s",
+            state.increment, state.time, surface_stroke(scene, state.dies, lead.surface, state.time), inc.time_step,
+            scene.surfaces[lead.surface].name.c_str(), scene.whole_part_load(lead) / 1e3, model, lead.stroke,
+            inc.report.iterations.size(), krylov.c_str(), contacts,
             100.0 * (mesh::volume(state.mesh) / state.volume.initial - 1.0),
             100.0 * std::accumulate(state.inside_dies.begin(), state.inside_dies.end(), 0.0) / state.volume.initial,
             temperature_text(state, heat_share).c_str(), std::isnan(time_left) ? "?" : clock_text(time_left).c_str());
@@ -160,7 +166,9 @@ void finish(const Scene& scene, const Discretisation& disc, RunState& state, io:
       for (const LoadSurface& s : scene.surfaces)
         surfaces.push_back(s.name);
       const std::string title = std::filesystem::path(scene.input.path).stem().string();
-      if (const std::string why = io::write_load_plot(writer.directory(), title, surfaces, state.loads); !why.empty())
+      if (const std::string why =
+              io::write_load_plot(writer.directory(), title, surfaces, state.loads, scene.symmetry_copies);
+          !why.empty())
         log::info("loads.png not written: %s", why.c_str());
     }
     writer.write_summary(scene, disc, state, last, timers, total);
@@ -274,6 +282,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
   TimeLeft time_left;
   time_left.update(clock.progress(state), seconds_since(start));
   solver::NewtonReport last;
+  double last_step = clock.next_step(state).length; // s, of the last increment accepted
   Stop stop;
   // SIGINT or SIGTERM: the increment under way is abandoned, the last
   // accepted one written and checkpointed (core/interrupt).
@@ -324,6 +333,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
       inc.report.continues(first_budget);
     }
     last = inc.report;
+    last_step = inc.time_step;
     const double heat_before = timers.seconds("effect heat");
     if (disc.heat) advance_heat(scene, disc, inc, state, timers);
     log_progress(scene, disc, state, inc, time_left.update(clock.progress(state), seconds_since(start)),
@@ -341,6 +351,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
     if (writer.write(scene, disc, state, false, timers)) disc.solver->restart_linear_solver();
   }
   log::info("stop: %s at increment %d, t = %.6g s", stop.reason.c_str(), state.increment, state.time);
+  record_final_loads(scene, disc, state, last_step, timers);
   finish(scene, disc, state, writer, last, timers, start);
   if (!stop.complete)
     return {"stopped at increment " + std::to_string(state.increment) + ": " + stop.reason +

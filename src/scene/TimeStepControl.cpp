@@ -25,11 +25,12 @@ std::vector<double> local_size(const mesh::TetMesh& mesh) {
   return sum;
 }
 
-/// The largest press load (N) of the latest increment's load records.
-double latest_press_load(const RunState& state) {
+/// The largest press load of the whole part (N) in the latest load records.
+double latest_press_load(const Scene& scene, const RunState& state) {
   double load = 0.0;
-  for (auto r = state.loads.rbegin(); r != state.loads.rend() && r->increment == state.increment; ++r)
-    load = std::max(load, r->press_load());
+  const int latest = state.loads.empty() ? 0 : state.loads.back().increment;
+  for (auto r = state.loads.rbegin(); r != state.loads.rend() && r->increment == latest; ++r)
+    load = std::max(load, scene.whole_part_load(*r));
   return load;
 }
 
@@ -97,7 +98,8 @@ Stop TimeStepControl::stop(const RunState& state) const {
     return {"final stroke reached"};
   if (time_.final_gap > 0.0 && scene_.die_gap(state.dies) <= time_.final_gap * (1.0 + tolerance))
     return {"final die gap reached"};
-  if (std::isfinite(time_.max_load) && latest_press_load(state) >= time_.max_load) return {"maximum load reached"};
+  if (std::isfinite(time_.max_load) && latest_press_load(scene_, state) >= time_.max_load)
+    return {"maximum load reached"};
   for (std::size_t d = 0; d < scene_.dies.size(); ++d)
     if (state.dies[d].speed_factor < 1e-3)
       return {"press stalled at its load limit (die '" + scene_.dies[d].name + "')"};
@@ -129,7 +131,7 @@ std::string TimeStepControl::describe_stop(const RunState& state) const {
     criteria.push_back(text);
   }
   if (std::isfinite(time_.max_load)) {
-    std::snprintf(text, sizeof text, "press load %g N, at %.4g N", time_.max_load, latest_press_load(state));
+    std::snprintf(text, sizeof text, "press load %g N, at %.4g N", time_.max_load, latest_press_load(scene_, state));
     criteria.push_back(text);
   }
   if (std::isfinite(time_.end_time)) {

@@ -268,7 +268,8 @@ const std::vector<KeySpec>& case_schema() {
                   360),
             "0"),
         range(key("dies[].load_limit", T::number,
-                  "hydraulic: press capacity; above it the press slows down as (limit/load)^(1/m)", "N"),
+                  "hydraulic: press capacity, for the whole part; above it the press slows down as (limit/load)^(1/m)",
+                  "N"),
               0, kInf, true),
         key("contact_pairs", T::list, "contact between two deformable bodies (node-to-facet, Fourment 2008)"),
         required(key("contact_pairs[].master", T::string, "master body (a name from bodies)")),
@@ -326,8 +327,11 @@ const std::vector<KeySpec>& case_schema() {
         range(key("time.stop.stroke", T::number, "travel of the die `die`", "mm"), 0, kInf, true),
         key("time.stop.die", T::string, "die whose stroke is checked; default the first moving die"),
         range(key("time.stop.gap", T::number, "distance between the two dies along z", "mm"), 0, kInf, true),
-        range(key("time.stop.load", T::number, "largest press load (force along z) on any die or plate", "N"), 0, kInf,
-              true),
+        range(key("time.stop.load", T::number,
+                  "largest press load (force along z) on any die or plate, of the whole part (a symmetry model's load "
+                  "times its copies)",
+                  "N"),
+              0, kInf, true),
         range(key("time.stop.time", T::number, "end time", "s"), 0, kInf, true),
         key("remeshing", T::map, "automatic remeshing of the flowing bodies (CGAL, fields transferred); absent: never"),
         with_default(range(key("remeshing.quality", T::number,
@@ -374,6 +378,12 @@ const std::vector<KeySpec>& case_schema() {
                   "than 1 % or whose worst quality is below a third of remeshing.quality (the body keeps its mesh)",
                   "mm"),
               0, kInf, true),
+        with_default(key("remeshing.local", T::boolean,
+                         "a quality trigger rebuilds only the poor elements and two layers around them, the rest of "
+                         "the body and its whole surface kept (the contact surface stays on the dies); the whole body "
+                         "is remeshed when that region is over half of it, when the rebuilt elements stay below "
+                         "remeshing.quality (the surface holds them), and for the periodic and die-corner triggers"),
+                     "true"),
         with_default(key("remeshing.check_load", T::boolean,
                          "also solve the increment after each remesh on the old mesh, and log and record the press "
                          "load's jump across the remesh at equal geometry (three more solves per remesh; the next "

@@ -7,6 +7,7 @@
 
 #include <cctype>
 #include <cstdlib>
+#include <dlfcn.h>
 #include <set>
 #include <sstream>
 
@@ -55,12 +56,31 @@ void check_options(PetscErrorCode code) {
 
 } // namespace petsc
 
+namespace {
+
+/// One BLAS and OpenMP thread unless OPENBLAS_NUM_THREADS or OMP_NUM_THREADS
+/// say otherwise: a multithreaded BLAS sums in an order that changes from run
+/// to run (two outcomes in five runs of a remeshing case, 6e-7 apart), which
+/// would make a resumed run end otherwise than the uninterrupted one; and its
+/// threads would spin on the cores TBB assembles with. Found at run time:
+/// the BLAS behind libblas.so.3 is Debian's choice (alternatives).
+void one_blas_thread() {
+  using SetThreads = void (*)(int);
+  if (!std::getenv("OPENBLAS_NUM_THREADS"))
+    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
+  if (!std::getenv("OMP_NUM_THREADS"))
+    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "omp_set_num_threads"))) set(1);
+}
+
+} // namespace
+
 PetscSession::PetscSession(int& argc, char**& argv) {
   if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) throw RunError("PETSc (MPI) could not be initialised");
   g_active = true;
   PetscPushErrorHandler(keep_message, nullptr);
   PetscPopSignalHandler();                  // a crash stays a crash with its own signal, not a PETSc banner
   set_default_option("-options_left", "0"); // unused options are reported by unused_options(), in our words
+  one_blas_thread();
 }
 
 PetscSession::~PetscSession() {

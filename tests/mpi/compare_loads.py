@@ -28,7 +28,7 @@ def rows(path):
 
 def peak_load(table):
     """The largest force component of a run: the scale of its differences."""
-    return max(max(abs(float(r[k])) for k in ("Fx_N", "Fy_N", "Fz_N")) for r in table.values()) or 1.0
+    return max(max(abs(float(r[k])) for k in ("model_Fx_N", "model_Fy_N", "model_Fz_N")) for r in table.values()) or 1.0
 
 
 def compare(reference, other):
@@ -37,7 +37,7 @@ def compare(reference, other):
     return worst, same
 
 
-def largest_difference(reference, other, columns=("Fx_N", "Fy_N", "Fz_N", "stroke_mm", "time_s")):
+def largest_difference(reference, other, columns=("model_Fx_N", "model_Fy_N", "model_Fz_N", "stroke_mm", "time_s")):
     """(largest relative difference, (column, increment, surface) of it, same rows)."""
     peak = peak_load(reference)
     shared = reference.keys() & other.keys()
@@ -65,7 +65,7 @@ def up_to(table, increment):
     return {key: r for key, r in table.items() if int(key[0]) <= increment}
 
 
-def at_equal_time(reference, other, after, columns=("Fx_N", "Fy_N", "Fz_N")):
+def at_equal_time(reference, other, after, columns=("model_Fx_N", "model_Fy_N", "model_Fz_N")):
     """{column: differences} of the forces past increment `after`, `other`
     interpolated linearly in time at `reference`'s rows, relative to the
     peak load."""
@@ -101,7 +101,7 @@ def main():
         other = other_everything if remesh is None else up_to(other_everything, remesh)
         worst, where, same = largest_difference(reference, other)
         at = f" ({where[0]}, increment {where[1]}, {where[2]})" if where else ""
-        press = largest_difference(reference, other, ("Fz_N",))[0]
+        press = largest_difference(reference, other, ("model_Fz_N",))[0]
         line = f"{path}: {len(reference)} rows"
         if remesh is not None:
             line += f" up to the first remesh (increment {remesh})"
@@ -109,7 +109,7 @@ def main():
         line += "" if same else " (the rows differ)"
         if remesh is not None:
             differences = at_equal_time(everything, other_everything, remesh)
-            press = differences["Fz_N"]
+            press = differences["model_Fz_N"]
             largest = max((d for column in differences.values() for d in column), default=0.0)
             line += (f"; after it, at equal time ({len(everything) - len(reference)} / "
                      f"{len(other_everything) - len(other)} rows): largest {largest:.2e}, press load Fz"

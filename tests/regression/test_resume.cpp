@@ -102,7 +102,8 @@ TEST_CASE("a run killed with SIGKILL and resumed gives the uninterrupted loads a
     CHECK(std::filesystem::file_size(killed / m[1].str()) > 0);
     ++files;
   }
-  CHECK(files == 3 * static_cast<int>(a.size())); // body and two dies at every increment
+  // Body and two dies at every increment; loads.csv has one row more (the start).
+  CHECK(files == 3 * static_cast<int>(a.size() - 1));
   for (const auto& entry : std::filesystem::directory_iterator(killed))
     CHECK(entry.path().extension() != ".tmp");
 }
@@ -133,4 +134,19 @@ TEST_CASE("a thermal run resumed from a checkpoint continues with the same tempe
   CHECK(a.heat.stored == Approx(b.heat.stored).epsilon(1e-12));
   CHECK(a.heat.to_dies == Approx(b.heat.to_dies).epsilon(1e-12));
   CHECK(a.transfer_time == b.transfer_time);
+}
+
+TEST_CASE("a run resumed with --allow-changes lists each change of the case in anvil.log", "[regression]") {
+  anvil::log::set_quiet(true);
+  const std::string case_file = source_path("cases/upsetting_frictionless.yaml");
+  const std::vector<std::string> short_run{"time.max_increments=2", "output.vtk=false"};
+  const RunOutputs part = run_case(anvil::scene::read_case(case_file, short_run), "anvil_resume_allow_changes");
+  // A stop that changes (allowed freely) and the top die's friction (a change).
+  std::vector<std::string> changed{"time.max_increments=3", "output.vtk=false", "dies[0].friction.law=tresca"};
+  changed.push_back("dies[0].friction.factor=0.2");
+  anvil::scene::run(anvil::scene::read_case(case_file, changed), {part.directory, true, true});
+  const std::string log = read_text(part.directory + "/anvil.log");
+  CHECK(log.find("resuming with 2 change(s) since the checkpoint (--allow-changes):") != std::string::npos);
+  CHECK(log.find("  dies[0].friction.law: ") != std::string::npos);
+  CHECK(log.find("  dies[0].friction.factor: ") != std::string::npos);
 }

@@ -38,18 +38,29 @@ TEST_CASE("frictionless Norton-Hoff upsetting follows the exact homogeneous solu
   REQUIRE(rows.size() >= 20);
   const double volume = std::numbers::pi * kRadius * kRadius * kHeight / 4.0; // quarter model
   const scene::MaterialCard card = scene::read_material(source_path("materials/steel_c45_1100C.yaml"));
-  // Each increment's load is solved on the geometry at its start: H = H0 − previous stroke.
-  double previous_stroke = 0.0, worst = 0.0;
-  for (const LoadRow& r : rows) {
-    const double exact =
-        material::homogeneous_compression_load(*card.law, volume, kHeight - previous_stroke, kHeight, kSpeed, 1100.0);
-    worst = std::max(worst, std::abs(r.force.z() - exact) / exact);
-    previous_stroke = r.stroke;
+  auto exact_at = [&](double stroke) {
+    return material::homogeneous_compression_load(*card.law, volume, kHeight - stroke, kHeight, kSpeed, 1100.0);
+  };
+  // Each row's load against the exact load at the row's own stroke, and the
+  // load's change over the increment that follows (what a row one increment
+  // late would be off by).
+  double worst = 0.0;
+  int lagging = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const double load = rows[i].whole_part_load / 4.0, exact = exact_at(rows[i].stroke);
+    worst = std::max(worst, std::abs(load - exact) / exact);
+    // Closer to the exact load one increment before than to its own: a row
+    // one increment late (the load of the geometry its increment started on).
+    if (i > 0 && std::abs(load - exact_at(rows[i - 1].stroke)) <= std::abs(load - exact)) ++lagging;
   }
-  INFO("worst load error " << worst);
+  INFO("worst load error " << worst << "; rows closer to the previous row's stroke than to their own: " << lagging);
   // 1 %: the issue's bound. The flow is homogeneous, so the P1 field is exact
-  // and what remains is the volume compensation and the Newton tolerance.
+  // and what remains is the volume compensation and the Newton tolerance
+  // (0.25 % measured), below the 0.8-2.7 % an increment changes the load by.
   CHECK(worst < 0.01);
+  CHECK(lagging == 0);
+  // The first row is the load at the start, the last the load at the final stroke.
+  CHECK(rows.front().stroke == 0.0);
   CHECK(rows.back().stroke == Approx(7.5).epsilon(1e-9));
 
   const scene::RunState end = out.final_state();

@@ -102,11 +102,9 @@ LoadCurve read_curve(const std::string& directory, const std::string& die) {
   const std::vector<io::LoadRow> rows = io::read_loads(directory, die);
   if (rows.empty()) throw RunError(directory + "/loads.csv: no load rows for die '" + die + "'");
   LoadCurve curve;
-  double start = 0.0;
-  for (const io::LoadRow& row : rows) {
-    curve.stroke.push_back(start);
-    curve.load.push_back(row.force.norm());
-    start = row.stroke;
+  for (const io::LoadRow& row : rows) { // each load at the stroke it was solved at
+    curve.stroke.push_back(row.stroke);
+    curve.load.push_back(row.whole_part_load);
   }
   return curve;
 }

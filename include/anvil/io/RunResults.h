@@ -12,11 +12,18 @@ template <class T> class vtkSmartPointer;
 namespace anvil::io {
 
 /// One row of loads.csv.
+/// The columns of loads.csv: the forces on the model (a symmetry model's
+/// share of the part), then the press load of the whole part.
+inline constexpr const char* kLoadsHeader =
+    "increment,time_s,surface,stroke_mm,model_Fx_N,model_Fy_N,model_Fz_N,whole_part_press_load_N";
+inline constexpr std::size_t kLoadsColumns = 8;
+
 struct LoadRow {
   int increment = 0;
-  double time = 0.0;                               ///< s, end of the increment
-  double stroke = 0.0;                             ///< mm, of the surface, end of the increment
+  double time = 0.0;                               ///< s, at which the load was solved
+  double stroke = 0.0;                             ///< mm, of the surface, at which the load was solved
   Eigen::Vector3d force = Eigen::Vector3d::Zero(); ///< N, on the body's model (quarter model: a quarter)
+  double whole_part_load = 0.0;                    ///< N, the press load of the whole part
 };
 
 /// The rows of `directory`/loads.csv for one surface, in order. Throws

@@ -8,12 +8,14 @@
 
 namespace anvil::io {
 
-/// Writes `directory`/loads.png from `loads` (|F| in kN against the press
-/// stroke: the largest die or plate stroke of the increment, so a fixed die
-/// plots against the press travel too), titled `title`. Returns an empty
-/// string, or why no plot was written (gnuplot missing or failing): a
-/// missing plot does not fail a run.
+/// Writes `directory`/loads.png from `loads`: the press load of the whole
+/// part (|Fz| of the model times `copies`, the symmetry model's copies) in kN
+/// against the press stroke (the largest die or plate stroke of the row, so
+/// a fixed die plots against the press travel too), titled `title`. Returns
+/// an empty string, or why no plot was written (gnuplot missing or
+/// failing): a missing plot does not fail a run.
 std::string write_load_plot(const std::string& directory, const std::string& title,
-                            const std::vector<std::string>& surfaces, const std::vector<scene::LoadRecord>& loads);
+                            const std::vector<std::string>& surfaces, const std::vector<scene::LoadRecord>& loads,
+                            int copies);
 
 } // namespace anvil::io

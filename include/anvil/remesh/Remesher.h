@@ -18,6 +18,11 @@ namespace anvil::remesh {
 struct RemeshDue {
   int body;
   std::string why;
+  /// remeshing.local and a trigger that a local remesh may meet: poor
+  /// elements (now or in the next increment). A die corner sunk into the
+  /// body needs new surface nodes and a periodic remesh is of the whole
+  /// body: both remesh the whole body.
+  bool local = false;
 };
 
 /// The bodies of `state` to remesh after an increment of `dt` (s), by the

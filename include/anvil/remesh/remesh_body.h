@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <functional>
+#include <span>
 
 namespace anvil::remesh {
 
@@ -37,6 +38,23 @@ struct RemeshSettings {
 /// Each new boundary face carries the tag of the patch it lies on.
 /// Throws RunError when CGAL cannot take the mesh.
 mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings);
+
+/// A body remeshed in a region, the rest kept as it was.
+struct RegionRemesh {
+  /// The kept tets first, in the body's order and with its node coordinates
+  /// bit for bit, then the region's new tets; the nodes that stay (those of
+  /// kept tets and of the boundary) first, in the body's order, then the new.
+  mesh::TetMesh mesh;
+  std::vector<int> old_node; ///< per node of `mesh`: its index in the body, or −1 for a new node
+  int kept_tets = 0;         ///< tets [0, kept_tets) are the body's tets not rebuilt, in order
+};
+
+/// Remeshes the tets of `body` that `rebuilt` flags (one flag per tet) at
+/// settings.edge_length, with every boundary frozen: the body's surface and
+/// the region's border with the kept tets keep their nodes and faces, so
+/// the contact surface stays where it is and the kept tets fit the new
+/// ones. Throws RunError when CGAL cannot take the mesh.
+RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebuilt, const RemeshSettings& settings);
 
 /// Patch number (from 1) of each boundary face of `body`, as remesh_body sets them.
 std::vector<int> boundary_patches(const mesh::TetMesh& body, double feature_angle);

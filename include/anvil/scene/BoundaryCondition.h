@@ -48,6 +48,8 @@ struct ImposedConditions {
   Eigen::VectorXd values;                           ///< 4 × nodes, imposed values at prescribed dofs
   Eigen::VectorXd nodal_forces;                     ///< 4 × nodes, external forces from tractions (N)
   std::vector<std::vector<int>> nodes_of_condition; ///< per condition, its nodes
+  /// Per condition: 0, 1 or 2 for a symmetry plane normal to x, y or z; −1 otherwise.
+  std::vector<int> symmetry_axis;
 };
 
 /// Applies the conditions in order (later ones override earlier ones on shared

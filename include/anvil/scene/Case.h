@@ -116,6 +116,7 @@ struct RemeshSpec {
   int max_nodes = 0;             ///< node budget of one body's remesh; 0 = what the machine's memory allows
   double time_limit = 120.0;     ///< s, work limit of one body's remesh (checked between CGAL passes)
   bool check_load = false;       ///< solve the increment after a remesh on the old mesh too: the load jump it makes
+  bool local = true;             ///< a quality trigger rebuilds the poor elements' region only (remesh_region)
 };
 
 struct ContactSpec {

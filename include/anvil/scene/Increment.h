@@ -54,7 +54,9 @@ IncrementOutcome solve_coupled(const Scene& scene, Discretisation& disc, const R
                                Timers& timers, const fem::BodyUnknowns* guess = nullptr);
 
 /// Accepts a converged increment into `state`: x ← x + Δt v, the dies
-/// moved, contact nodes projected onto them, the loads recorded, ε̄ and the
+/// moved, contact nodes projected onto them, the loads recorded (at the
+/// stroke and time where the increment starts: they were solved on that
+/// geometry, as loads.csv's row of that increment count), ε̄ and the
 /// stress of elastic bodies updated, a load-limited press slowed down.
 /// Returns false, with `inc.failure` set and `state` untouched, when an
 /// element would invert.
@@ -68,6 +70,14 @@ void advance_heat(const Scene& scene, Discretisation& disc, const IncrementOutco
 /// Thermal scenes: what is left of the transfer before the press moves
 /// (thermal.transfer_time), in thermal.transfer_steps heat steps without flow.
 void transfer(const Scene& scene, Discretisation& disc, RunState& state, Timers& timers);
+
+/// The stroke (mm) of load surface `surface` with the dies at `dies` at
+/// time `time` (s): a die's travel, or a velocity plate's.
+double surface_stroke(const Scene& scene, std::span<const DieState> dies, int surface, double time);
+
+/// The loads at the geometry a run ends on (its last row of loads.csv: the
+/// load at the final stroke, solved over a step `dt` s and not accepted).
+void record_final_loads(const Scene& scene, Discretisation& disc, RunState& state, double dt, Timers& timers);
 
 /// Accepts the solution of a case without a time loop: increment 1 at t = 0,
 /// the geometry as it is.

@@ -65,7 +65,10 @@ struct Scene {
   /// Every body elastic and no time loop: the unknown is the displacement
   /// (mm); otherwise it is the velocity (mm/s) and elastic bodies carry σ.
   bool solve_displacement = false;
-  bool carries_stress = false;     ///< some body is elastic in velocity form
+  bool carries_stress = false; ///< some body is elastic in velocity form
+  /// Every body elastic: an increment's loads hold at its end (σ_{n+1} =
+  /// σ_n + Δt C:ε̇), not on the geometry it starts from as a flow's do.
+  bool all_elastic = false;
   bool compensate_volume = false;  ///< the volume_compensation effect
   bool thermal = false;            ///< the heat effect: some body is solved for heat
   double body_size = 0.0;          ///< mm, diagonal of the initial bounding box
@@ -73,12 +76,20 @@ struct Scene {
   double reference_velocity = 0.0; ///< mm/s, fastest die or imposed velocity at t = 0
   int upper_die = 0;               ///< with a final gap: the die above
   double die_gap0 = 0.0;           ///< mm, gap between the two dies at zero displacement
+  /// The whole part is this many copies of the model: 2 for each axis (x, y)
+  /// normal to one of its symmetry planes, which contain the press axis z. A
+  /// plane normal to z halves the part's height, not the press load.
+  int symmetry_copies = 1;
 
   bool has_contact() const { return !dies.empty() || !input.contact_pairs.empty(); }
   /// ε̇ of the process (1/s): v_ref over the scene size.
   double reference_rate() const { return reference_velocity / body_size; }
   /// Distance between the two dies along z (mm), for the gap stop criterion.
   double die_gap(std::span<const DieState> dies_now) const;
+  /// The press load of the whole part (N) for `record`'s model load.
+  double whole_part_load(const LoadRecord& record) const { return symmetry_copies * record.press_load(); }
+  /// "quarter model (symmetry planes normal to x and y)", "half model (...)", "whole part".
+  std::string model_text() const;
 };
 
 /// The state of a run that starts: the bodies as built, at rest, t = 0.

@@ -85,3 +85,50 @@ TEST_CASE("An adaptive size field refines where it asks and keeps the volume", "
   // cells 0.16, with one step of ½ instead of ¾ steps 0.08.
   CHECK(remesh::worst_quality(out) > 0.2);
 }
+
+TEST_CASE("A local remesh rebuilds its region only: the rest keeps its nodes and elements bit for bit",
+          "[unit][remesh]") {
+  // A box whose interior nodes near x = 0 are squeezed towards the plane
+  // x = 2 (poor elements there); the tets with a centroid below x = 3 are
+  // rebuilt.
+  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
+  const std::vector<char> on_boundary = mesh::boundary_node_flags(box);
+  for (std::size_t n = 0; n < box.nodes.size(); ++n)
+    if (!on_boundary[n] && box.nodes[n].x() < 2.5) box.nodes[n].x() = 2.0 + 0.2 * (box.nodes[n].x() - 2.0);
+  std::vector<char> rebuilt(box.tets.size(), 0);
+  double worst_before = 1.0;
+  for (int e = 0; e < box.tet_count(); ++e)
+    if (mesh::centroid(box, e).x() < 3.0) {
+      rebuilt[e] = 1;
+      worst_before = std::min(worst_before, mesh::quality(box, e));
+    }
+  remesh::RemeshSettings settings;
+  settings.edge_length = 1.0;
+  const remesh::RegionRemesh out = remesh::remesh_region(box, rebuilt, settings);
+
+  // The kept tets: the same, in order, on the same coordinates.
+  int kept = 0;
+  for (int e = 0; e < box.tet_count(); ++e) {
+    if (rebuilt[e]) continue;
+    REQUIRE(kept < out.kept_tets);
+    for (int a = 0; a < 4; ++a) {
+      const int node = out.mesh.tets[kept][a];
+      CHECK(out.old_node[node] == box.tets[e][a]);
+      CHECK(out.mesh.nodes[node] == box.nodes[box.tets[e][a]]); // bit for bit
+    }
+    ++kept;
+  }
+  CHECK(kept == out.kept_tets);
+  // The surface: every boundary face of the box, on the same nodes.
+  CHECK(out.mesh.boundary_faces.size() == box.boundary_faces.size());
+  for (std::size_t n = 0; n < out.mesh.nodes.size(); ++n)
+    if (out.old_node[n] >= 0) CHECK(out.mesh.nodes[n] == box.nodes[out.old_node[n]]);
+  // The same volume (the boundary did not move), a conforming mesh
+  // (validate ran), better elements in the region.
+  CHECK(mesh::volume(out.mesh) == Approx(240.0).epsilon(1e-12));
+  double worst_after = 1.0;
+  for (int e = out.kept_tets; e < out.mesh.tet_count(); ++e)
+    worst_after = std::min(worst_after, mesh::quality(out.mesh, e));
+  INFO("worst quality in the region " << worst_before << " -> " << worst_after);
+  CHECK(worst_after > 2.0 * worst_before);
+}

@@ -1,0 +1,19 @@
+// Where a local remesh rebuilds a body (DESIGN §4): the elements of poor
+// quality now or after the next increment, and a few layers of elements
+// around them, so that the rebuilt region has room to make good elements.
+#pragma once
+#include "anvil/mesh/TetMesh.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace anvil::remesh {
+
+/// Flags (one per tet of `part`) of the tets whose quality is below
+/// `threshold` now or after `time_step` (s) at the nodal velocities of
+/// `nodal` (4 values per node of `part`: v, p), and of `layers` layers of
+/// tets around them (tets that share a node with a flagged one).
+std::vector<char> rebuild_region(const mesh::TetMesh& part, const Eigen::Ref<const Eigen::VectorXd>& nodal,
+                                 double time_step, double threshold, int layers);
+
+} // namespace anvil::remesh

@@ -1,0 +1,29 @@
+#include "anvil/remesh/rebuild_region.h"
+
+#include "anvil/mesh/tet_geometry.h"
+
+namespace anvil::remesh {
+
+std::vector<char> rebuild_region(const mesh::TetMesh& part, const Eigen::Ref<const Eigen::VectorXd>& nodal,
+                                 double time_step, double threshold, int layers) {
+  auto moved = [&](int node) -> mesh::Point { return part.nodes[node] + time_step * nodal.segment<3>(4 * node); };
+  std::vector<char> flagged(part.tets.size(), 0);
+  for (int e = 0; e < part.tet_count(); ++e) {
+    const mesh::Tet& t = part.tets[e];
+    flagged[e] = mesh::quality(part, e) < threshold ||
+                 mesh::quality(moved(t[0]), moved(t[1]), moved(t[2]), moved(t[3])) < threshold;
+  }
+  std::vector<char> touched(part.nodes.size(), 0);
+  for (int layer = 0; layer < layers; ++layer) {
+    for (int e = 0; e < part.tet_count(); ++e)
+      if (flagged[e])
+        for (int v : part.tets[e])
+          touched[v] = 1;
+    for (int e = 0; e < part.tet_count(); ++e)
+      for (int v : part.tets[e])
+        flagged[e] = flagged[e] || touched[v];
+  }
+  return flagged;
+}
+
+} // namespace anvil::remesh
