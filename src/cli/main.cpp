@@ -43,11 +43,14 @@ usage:
                                  e.g. --set time.stroke_increment=0.1
                                       --set dies[].friction.factor=0.1
                                  (dies[] = every die, dies[1] = the second)
+  anvil run CASE.yaml --np N     the run on N processes (mpirun); by default
+                                 as many as the cores this process may use
+                                 (or ANVIL_PROCESSES); --np 1 keeps one
+                                 process; without mpirun, one process
   mpirun -n N anvil run CASE.yaml ...
-                                 the same run on N processes (one machine
-                                 or several): the same results, rank 0
-                                 writes them; tools/anvil --np N CASE.yaml
-                                 starts it
+                                 the same on N processes of one machine or
+                                 several, started by hand: rank 0 writes the
+                                 results
   anvil output-dir CASE.yaml [-o DIR]
                                  print the folder a run would write to
   anvil run CASE.yaml ... -PETSC_OPTION [VALUE] ...
@@ -164,6 +167,44 @@ void say_interrupted(const anvil::scene::RunEnd& end, const std::string& program
                end.stop.c_str(), directory.c_str(), command.c_str());
 }
 
+/// The processes a run asks for: --np, else ANVIL_PROCESSES, else every core
+/// this process may use. 0 after a usage error (said).
+int processes_wanted(const std::string& option) {
+  const char* environment = std::getenv("ANVIL_PROCESSES");
+  const std::string text = !option.empty() ? option : environment ? environment : "";
+  if (text.empty()) return anvil::processes::available_cores();
+  const std::string source = !option.empty() ? "--np" : "ANVIL_PROCESSES";
+  char* end = nullptr;
+  const long n = std::strtol(text.c_str(), &end, 10);
+  if (end == text.c_str() || *end != '\0' || n < 1 || n > 4096) {
+    usage_error(source + " needs a number of processes from 1 to 4096, not '" + text + "'");
+    return 0;
+  }
+  return static_cast<int>(n);
+}
+
+/// `anvil run` on `processes` processes: this program again under mpirun
+/// (each of its processes sees the launcher and runs the case), Ctrl-C
+/// relayed so that the run checkpoints (subprocess::run_relaying_interrupts).
+int run_on_processes(int processes, int argc, char** argv) {
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  std::vector<std::string> command = {"mpirun", "-q", "-n", std::to_string(processes)};
+  // More processes than cores share them (mpirun refuses otherwise).
+  if (processes > anvil::processes::available_cores()) command.emplace_back("--oversubscribe");
+  command.push_back(error ? std::string(argv[0]) : self.string());
+  for (int i = 1; i < argc; ++i)
+    command.emplace_back(argv[i]);
+  // Open MPI refuses to start as root unless told (CI runs as root).
+  if (geteuid() == 0) {
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 0);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 0);
+  }
+  const int code = anvil::subprocess::run_relaying_interrupts(command);
+  if (code < 0) std::fprintf(stderr, "anvil: could not start mpirun: %s\n", std::strerror(errno));
+  return code < 0 ? 5 : code;
+}
+
 /// How long the processes of a run may take to reach its end one after the
 /// other (s): rank 0 writes the last output while the others wait.
 constexpr double kEndTogether = 10.0;
@@ -200,6 +241,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> overrides;
   std::vector<char*> petsc_arguments = {argv[0]}; // what PetscInitialize reads: PETSc's options only
   anvil::scene::RunOptions options;
+  std::string processes_option;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-o" || arg == "--output") {
@@ -211,6 +253,9 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) return usage_error("--resume needs the directory of the run to continue");
       options.output_directory = argv[++i];
       options.resume = true;
+    } else if (arg == "--np") {
+      if (i + 1 >= argc) return usage_error("--np needs a number of processes, e.g. --np 2");
+      processes_option = argv[++i];
     } else if (arg == "--allow-changes") {
       options.allow_changes = true;
     } else if (arg == "--set") {
@@ -236,6 +281,17 @@ int main(int argc, char** argv) {
       return 0;
     } catch (const std::exception& e) {
       return report(e, true);
+    }
+  }
+
+  // Every core by default: a run not started by mpirun starts itself under it.
+  if (!anvil::processes::under_launcher()) {
+    const int processes = processes_wanted(processes_option);
+    if (processes == 0) return 2;
+    if (processes > 1) {
+      if (anvil::subprocess::on_path("mpirun")) return run_on_processes(processes, argc, argv);
+      std::fprintf(stderr, "anvil: mpirun is not installed: the run uses one process (of the %d asked for)\n",
+                   processes);
     }
   }
 

@@ -314,7 +314,8 @@ bool BodyContact::point_friction(const ContactPoint& p, const Eigen::VectorXd& n
     }
   if (!touching) return false;
   f = friction_stress(law, {sliding(p, nodal), sigma_n, weaker_side(increment_.flow_stress, p),
-                            weaker_side(increment_.consistency, p), increment_.regularisation, increment_.penalty});
+                            weaker_side(increment_.consistency, p), increment_.regularisation, increment_.penalty,
+                            tangent_sensitivity_floor_});
   return true;
 }
 

@@ -1,5 +1,6 @@
 #include "anvil/contact/Friction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -37,7 +38,10 @@ FrictionStress friction_stress(const FrictionLaw& law, const FrictionInput& in) 
   const double s = std::sqrt(w.squaredNorm() + in.regularisation * in.regularisation);
   const double sq1 = std::pow(s, q - 1.0);
   out.stress = c * sq1 * w;
-  out.d_sliding = c * (sq1 * Eigen::Matrix3d::Identity() + (q - 1.0) * sq1 / (s * s) * (w * w.transpose()));
+  // Along w the consistent tangent is q times the secant one (zero for
+  // Tresca and Coulomb): a floor on q stiffens it there, τ itself unchanged.
+  const double q_t = std::max(q, in.tangent_sensitivity_floor);
+  out.d_sliding = c * (sq1 * Eigen::Matrix3d::Identity() + (q_t - 1.0) * sq1 / (s * s) * (w * w.transpose()));
   if (coulomb_uncapped) out.d_normal_pressure = law.coefficient * sq1 * w;
   return out;
 }

@@ -107,7 +107,7 @@ Eigen::Vector3d RigidContact::sliding(const ContactCandidate& c, const Eigen::Ve
 FrictionStress RigidContact::friction(const ContactCandidate& c, const Eigen::VectorXd& nodal, double sigma_n) const {
   return friction_stress(dies_[c.die].friction,
                          {sliding(c, nodal), sigma_n, increment_.flow_stress[c.node], increment_.consistency[c.node],
-                          increment_.regularisation, increment_.penalty});
+                          increment_.regularisation, increment_.penalty, tangent_sensitivity_floor_});
 }
 
 double RigidContact::friction_power(int i, const Eigen::VectorXd& nodal) const {

@@ -44,7 +44,7 @@ int requested() {
 const char* name(int signal) {
   return signal == SIGINT    ? "SIGINT"
          : signal == SIGTERM ? "SIGTERM"
-         : signal == SIGUSR1 ? "SIGUSR1 (Ctrl-C passed on by tools/anvil)"
+         : signal == SIGUSR1 ? "SIGUSR1 (Ctrl-C or SIGTERM passed on by anvil run to its processes)"
                              : "a signal";
 }
 

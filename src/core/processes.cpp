@@ -4,8 +4,12 @@
 
 #include <mpi.h>
 
+#include <sched.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdlib>
 #include <thread>
 #include <vector>
 
@@ -116,6 +120,20 @@ bool all_ended(double seconds) {
 void abort_all(int code) {
   MPI_Abort(MPI_COMM_WORLD, code);
   std::_Exit(code);
+}
+
+bool under_launcher() {
+  // Open MPI's mpirun sets the first, PMIx-based launchers the second, MPICH's Hydra the third.
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"})
+    if (std::getenv(name)) return true;
+  return false;
+}
+
+int available_cores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return 1;
+  return std::max(1, CPU_COUNT(&set));
 }
 
 } // namespace anvil::processes

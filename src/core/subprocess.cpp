@@ -60,6 +60,50 @@ int run(const std::vector<std::string>& arguments, const Options& options) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+namespace {
+volatile sig_atomic_t relay_child = 0, relayed = 0;
+void relay(int signal) {
+  if (relay_child <= 0) return;
+  kill(relay_child, relayed ? SIGTERM : SIGUSR1);
+  if (!relayed) relayed = signal;
+}
+} // namespace
+
+int run_relaying_interrupts(const std::vector<std::string>& arguments) {
+  if (arguments.empty()) return -1;
+  std::vector<std::string> copy = arguments;
+  std::vector<char*> argv;
+  for (std::string& a : copy)
+    argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSID);
+  pid_t child = 0;
+  const int started = posix_spawnp(&child, argv[0], nullptr, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
+  if (started != 0) return -1;
+  relay_child = child;
+  relayed = 0;
+  struct sigaction handler = {}, previous_int = {}, previous_term = {};
+  handler.sa_handler = relay;
+  sigemptyset(&handler.sa_mask);
+  sigaction(SIGINT, &handler, &previous_int);
+  sigaction(SIGTERM, &handler, &previous_term);
+  int status = 0;
+  pid_t waited = 0;
+  while ((waited = waitpid(child, &status, 0)) < 0 && errno == EINTR) {
+  }
+  sigaction(SIGINT, &previous_int, nullptr);
+  sigaction(SIGTERM, &previous_term, nullptr);
+  relay_child = 0;
+  if (waited < 0) return -1;
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  if (!WIFEXITED(status)) return -1;
+  // Stopped by the SIGUSR1 we sent: the exit of the signal we received.
+  return relayed && WEXITSTATUS(status) == 128 + SIGUSR1 ? 128 + relayed : WEXITSTATUS(status);
+}
+
 bool on_path(const std::string& program) {
   const char* path = std::getenv("PATH");
   if (!path) return false;

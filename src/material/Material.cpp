@@ -21,6 +21,7 @@ void norton_hoff_stress(double consistency, double sensitivity, double regularis
   stress = 2.0 * eta * e;
   tangent.two_eta = 2.0 * eta;
   tangent.beta = !linear && rate_sq > 0.0 ? 2.0 * eta * (sensitivity - 1.0) * 2.0 / 3.0 / rate_sq : 0.0;
+  tangent.sensitivity = sensitivity;
 }
 
 double norton_hoff_viscosity(double consistency, double sensitivity, double regularisation_rate,

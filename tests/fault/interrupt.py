@@ -5,7 +5,7 @@ A run interrupted part-way must finish or abandon its increment, checkpoint the
 last accepted one, say where it is and the command that resumes it, and exit
 130 (SIGINT); resumed with that command, it ends exactly as the uninterrupted
 run (loads.csv identical). Checked on one process (SIGINT), on two processes
-under mpirun (SIGUSR1, as tools/anvil passes Ctrl-C on: mpirun forwards it to
+under mpirun (SIGUSR1, as anvil run passes Ctrl-C on: mpirun forwards it to
 every process), and for a second Ctrl-C, which stops the run at once.
 
   interrupt.py ANVIL

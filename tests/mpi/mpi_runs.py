@@ -19,13 +19,20 @@ CHECK is one of:
               exit 4, every process stopped, no hang
   alone       one process fails alone (it cannot read its case): it says so,
               the other is stopped, no hang
+  default     `anvil run` without mpirun starts itself on every core this
+              test may use (ANVIL_PROCESSES unset) and says so in its log;
+              --np 1 keeps one process; both give the same loads.csv; a
+              Ctrl-C (SIGINT to anvil) on --np 2 checkpoints, exits 130
+              and the run resumes to the uninterrupted one's loads
 
 Agreement: the Newton tolerance of the cases is 1e-6 of the relative
 residual; each run's loads carry that error, accumulated over the geometry
 updates of up to 20 increments, so two runs may differ by up to ten times
 it: 1e-5 of the peak load."""
 import os
+import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -131,6 +138,47 @@ class Checks:
         self.expect(result.returncode != 0, "exit 0 although a process failed")
         self.expect("missing.yaml" in result.stderr, "the failing process does not say why")
         self.expect("failed alone" in result.stderr, "the failing process does not say it stops the others")
+
+
+    def default(self):
+        case = self.case("upsetting.yaml")
+        environment = {k: v for k, v in os.environ.items() if k != "ANVIL_PROCESSES"}
+        environment.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+        cores = len(os.sched_getaffinity(0))
+
+        def anvil(out, *extra, code=0):
+            result = subprocess.run([self.anvil, "run", case, "-o", os.path.join(self.work, out),
+                                     "--set", "time.stop.stroke=2"] + list(extra),
+                                    capture_output=True, text=True, errors="replace", env=environment, timeout=TIMEOUT)
+            self.expect(result.returncode == code, f"{out}: exit {result.returncode}, expected {code}\n{result.stderr[-2000:]}")
+            return result
+
+        def processes(out):
+            with open(os.path.join(self.work, out, "anvil.log")) as f:
+                found = re.search(r"(\d+) process(es)? x (\d+) thread", f.read())
+            return int(found.group(1)) if found else None
+
+        anvil("cores")
+        anvil("one", "--np", "1")
+        print(f"default: {processes('cores')} processes on {cores} cores; --np 1: {processes('one')}")
+        self.expect(processes("cores") == cores, f"the default run used {processes('cores')} processes, not {cores}")
+        self.expect(processes("one") == 1, "--np 1 did not keep one process")
+        self.agree("one", "cores")
+        # Ctrl-C reaches anvil alone (mpirun runs in its own session): it is
+        # passed on, the processes checkpoint the last accepted increment.
+        out = os.path.join(self.work, "stopped")
+        run = subprocess.Popen([self.anvil, "run", case, "-o", out, "--set", "time.stop.stroke=2", "--np", "2"],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=environment)
+        for line in run.stdout:
+            if line.startswith("inc    3"):
+                run.send_signal(signal.SIGINT)
+                break
+        _, errors = run.communicate(timeout=TIMEOUT)
+        print(errors.strip()[-600:])
+        self.expect(run.returncode == 130, f"Ctrl-C on --np 2: exit {run.returncode}, expected 130")
+        self.expect("resume with" in errors, "Ctrl-C on --np 2: no resume command")
+        anvil("stopped", "--np", "2", "--resume", out)
+        self.agree("one", "stopped")
 
 
 def compare_tables(reference, other):

@@ -123,6 +123,7 @@ public:
   /// body, and, for facet integration, the quadrature points of their facets.
   void search(const mesh::TetMesh& mesh, double search_distance);
   void set_increment(const ContactIncrement& increment);
+  void set_tangent_sensitivity_floor(double floor) override { tangent_sensitivity_floor_ = floor; }
 
   void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, std::vector<solver::NodeBlock>* blocks,
            const std::vector<char>* rows = nullptr) const override;
@@ -183,6 +184,7 @@ private:
   std::vector<Multiplier> multipliers_;
   std::vector<Support> support_;
   ContactIncrement increment_{};
+  double tangent_sensitivity_floor_ = 0.0;
   ActiveSet active_;                   ///< per multiplier
   std::vector<double> gap_;            ///< per multiplier, C/Ã at the last iterate asked (mm/s)
   mutable std::vector<double> stress_; ///< per multiplier, λ of the last add() (MPa), 0 when inactive

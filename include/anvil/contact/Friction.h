@@ -29,6 +29,9 @@ struct FrictionInput {
   double consistency;      ///< K (MPa·s^q), for Norton
   double regularisation;   ///< w₀ (mm/s)
   double penalty;          ///< ρ (MPa·s/mm), for sticking
+  /// The tangent ∂τ/∂w is built with the exponent max(q, this) along w (0:
+  /// the consistent tangent); Newton's far phase (IncrementSolver).
+  double tangent_sensitivity_floor = 0.0;
 };
 
 struct FrictionStress {

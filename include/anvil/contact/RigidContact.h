@@ -42,6 +42,7 @@ public:
   /// paired with its nearest die; `node_area` is the tributary boundary area.
   void search(const mesh::TetMesh& mesh, const std::vector<DieView>& dies, double search_distance);
   void set_increment(const ContactIncrement& increment) { increment_ = increment; }
+  void set_tangent_sensitivity_floor(double floor) override { tangent_sensitivity_floor_ = floor; }
 
   void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, std::vector<solver::NodeBlock>* blocks,
            const std::vector<char>* rows = nullptr) const override;
@@ -78,6 +79,7 @@ private:
   std::vector<DieView> dies_;
   std::vector<ContactCandidate> candidates_;
   ContactIncrement increment_{};
+  double tangent_sensitivity_floor_ = 0.0;
   ActiveSet active_;        ///< per candidate
   std::vector<double> gap_; ///< per candidate, h at the last iterate asked
 };

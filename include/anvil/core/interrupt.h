@@ -1,4 +1,4 @@
-// Ctrl-C (SIGINT), SIGTERM, and SIGUSR1 (Ctrl-C as tools/anvil passes it on
+// Ctrl-C (SIGINT), SIGTERM, and SIGUSR1 (Ctrl-C as anvil run passes it on
 // through mpirun, which would otherwise kill the processes 1 s after its
 // SIGTERM) during a run: the first asks the run to stop at its next safe
 // point (a Krylov or Newton iteration, an increment), where it checkpoints

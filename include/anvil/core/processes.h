@@ -48,4 +48,10 @@ bool all_ended(double seconds);
 /// Ends every process of the run at once with `code` (MPI_Abort).
 [[noreturn]] void abort_all(int code);
 
+/// True in a process that an MPI launcher (mpirun) started.
+bool under_launcher();
+/// The cores this process may run on (its CPU affinity): the processes a
+/// run uses when the command line and ANVIL_PROCESSES say nothing.
+int available_cores();
+
 } // namespace anvil::processes

@@ -19,6 +19,17 @@ struct Options {
 /// by a signal.
 int run(const std::vector<std::string>& arguments, const Options& options = {});
 
+/// Runs `arguments` in a session of its own (the terminal's Ctrl-C reaches
+/// this process alone) and waits for it, relaying interrupts: the first
+/// SIGINT or SIGTERM here reaches it as SIGUSR1 (a run started under mpirun
+/// stops at its next safe point and checkpoints, see interrupt.h: mpirun
+/// passes SIGUSR1 on, where its own SIGTERM would kill the processes a
+/// second later), a second one as SIGTERM. Returns its exit status (128 +
+/// the signal received here when it stopped for the SIGUSR1 passed on, as
+/// if it had received that signal), 128 + the signal that killed it, or -1
+/// when it could not be started.
+int run_relaying_interrupts(const std::vector<std::string>& arguments);
+
 /// True when `program` is an executable file on PATH.
 bool on_path(const std::string& program);
 

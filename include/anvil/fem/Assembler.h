@@ -93,6 +93,9 @@ public:
   /// neither tiny nor huge for a solver (put in by the process owning the row).
   void finish_tangent();
   const DofMap& dofs() const { return dofs_; }
+  /// The tangents of the next assemble() calls are built with a rate
+  /// sensitivity of at least `floor` (MiniElementInput); 0: consistent.
+  void set_tangent_sensitivity_floor(double floor) { tangent_sensitivity_floor_ = floor; }
   const Partition& partition() const { return partition_; }
 
 private:
@@ -102,6 +105,7 @@ private:
   int entry(int row_node, int d, int col_node, int c) const;
 
   DofMap dofs_;
+  double tangent_sensitivity_floor_ = 0.0;
   const Partition& partition_;
   std::vector<mesh::Tet> tets_; ///< the elements the pattern is built on: partition_.elements
   SparseMatrix tangent_;

@@ -35,6 +35,9 @@ struct MiniElementInput {
   Vec3 bubble_velocity = Vec3::Zero();    ///< bubble coefficient, same unit
   std::array<double, 4> nodal_pressure{}; ///< MPa
   material::PointState state;             ///< element history
+  /// The rank-one term of the nodes' tangent is built with max(m, this) for m
+  /// (0: the consistent tangent); Newton's far phase (IncrementSolver).
+  double tangent_sensitivity_floor = 0.0;
 };
 
 /// Condensed element system. Residual sign: R = internal − external, so

@@ -25,8 +25,9 @@ struct PointState {
 ///   ds/dε = 2η P + β e⊗e      (P the deviatoric projector, Mandel).
 /// Every law here is of this kind; assembly uses the form, not a 6×6 matrix.
 struct J2Tangent {
-  double two_eta = 0.0; ///< 2η: MPa·s (MPa for elastic laws)
-  double beta = 0.0;    ///< of the rank-one term, MPa·s³ (0 for linear laws)
+  double two_eta = 0.0;     ///< 2η: MPa·s (MPa for elastic laws)
+  double beta = 0.0;        ///< of the rank-one term, MPa·s³ (0 for linear laws)
+  double sensitivity = 1.0; ///< m of a power law: β = 2η (m − 1)(2/3)/ε̄̇_r² (1 for linear laws)
 };
 
 /// Deviatoric stress s and its tangent ds/dε for a strain rate ε (Mandel,

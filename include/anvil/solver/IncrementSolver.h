@@ -113,6 +113,9 @@ private:
   /// Force scale (N): the largest of the reaction norm, the contact force
   /// norm and the applied load norm.
   double force_scale(const IncrementProblem& problem) const;
+  /// Tangents of the next evaluations: Newton's far phase (rate sensitivity
+  /// floored, kFarSensitivity) or the consistent tangent.
+  void set_tangent_phase(const IncrementProblem& problem, bool far);
 
   fem::Partition partition_;
   std::vector<char> owned_nodes_; ///< per node, 1 when this process owns its rows; empty on one process

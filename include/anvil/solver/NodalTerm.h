@@ -49,6 +49,10 @@ public:
   /// Pairs of distinct nodes (a < b) whose blocks the term may fill in this
   /// increment, sorted; none for a term on each node's own velocity.
   virtual std::vector<std::pair<int, int>> couplings() const { return {}; }
+  /// Rate-dependent friction builds its tangent with a sliding-rate
+  /// sensitivity of at least `floor` (0: the consistent tangent) until told
+  /// otherwise: Newton's far phase (IncrementSolver).
+  virtual void set_tangent_sensitivity_floor(double floor) = 0;
 };
 
 } // namespace anvil::solver

@@ -93,3 +93,42 @@ TEST_CASE("an inverted element is reported, not computed", "[unit]") {
   fem::MiniElementSystem s;
   CHECK_FALSE(fem::mini_element(in, law, true, {}, s));
 }
+
+TEST_CASE("Newton's far-phase tangent: the residual is unchanged, the tangent stiffer along the rate, and no change "
+          "for a law at or above the floor",
+          "[unit]") {
+  const material::NortonHoff power_law(10.0, 0.15, 1e-3);
+  fem::MiniElementInput in = distorted_element();
+  // The bubble in equilibrium (r_b = 0): there the condensed residual does
+  // not depend on the bubble's tangent, which the floor changes too.
+  fem::MiniElementSystem equilibrium;
+  for (int it = 0; it < 50; ++it) {
+    REQUIRE(fem::mini_element(in, power_law, false, {}, equilibrium));
+    in.bubble_velocity -= equilibrium.bubble_residual_solved;
+  }
+  auto system = [&](const material::Material& law, double floor) {
+    in.tangent_sensitivity_floor = floor;
+    fem::MiniElementSystem s;
+    REQUIRE(fem::mini_element(in, law, true, {}, s));
+    return s;
+  };
+  const fem::MiniElementSystem consistent = system(power_law, 0.0), far = system(power_law, 0.5);
+  // The same problem: the floor only shapes the direction.
+  CHECK((far.residual - consistent.residual).norm() <= 1e-12 * consistent.residual.norm());
+  CHECK((far.tangent - far.tangent.transpose()).norm() <= 1e-12 * far.tangent.norm());
+  // The rank-one term 2η(m − 1)… is negative: a smaller |m − 1| can only add
+  // stiffness. On the velocity rows (the pressure ones are a saddle point),
+  // the difference is positive semi-definite and not zero.
+  Eigen::Matrix<double, 12, 12> added;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j)
+      added(i, j) = far.tangent(4 * (i / 3) + i % 3, 4 * (j / 3) + j % 3) -
+                    consistent.tangent(4 * (i / 3) + i % 3, 4 * (j / 3) + j % 3);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> eigen(0.5 * (added + added.transpose()));
+  CHECK(eigen.eigenvalues().minCoeff() >= -1e-12 * far.tangent.norm());
+  CHECK(eigen.eigenvalues().maxCoeff() > 1e-3 * far.tangent.norm());
+  // A law at or above the floor keeps its consistent tangent.
+  const material::NortonHoff newtonian(10.0, 1.0, 0.0), mild(10.0, 0.6, 1e-3);
+  CHECK(system(newtonian, 0.5).tangent == system(newtonian, 0.0).tangent);
+  CHECK(system(mild, 0.5).tangent == system(mild, 0.0).tangent);
+}
