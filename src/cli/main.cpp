@@ -309,7 +309,7 @@ int main(int argc, char** argv) {
   std::string picture_directory;
   bool picture_mirror = false;
   try {
-    // Every process reads the case and runs the same time loop (DESIGN §2).
+    // Every process reads the case and runs the same time loop (docs/design.md §2).
     const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
     const anvil::scene::RunEnd end = anvil::scene::run(c, options);
     // An interrupted run ends as soon as it can: no picture.

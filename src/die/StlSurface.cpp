@@ -1,5 +1,5 @@
 // STL die surfaces with CGAL: soup reading, repair, orientation, AABB tree
-// closest-point search (TECH-NOTES §2). The only translation unit that sees
+// closest-point search (docs/libraries.md §2). The only translation unit that sees
 // CGAL; built in its own library so that -frounding-math stays here.
 #include "anvil/die/StlSurface.h"
 

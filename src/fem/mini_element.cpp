@@ -102,7 +102,7 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
   out.volume = volume;
   const Vec6 strain_l = linear_strain(g, in.nodal_velocity);
 
-  // Quadrature of the viscous (or elastic) term (DESIGN §2). Per point only
+  // Quadrature of the viscous (or elastic) term (docs/design.md §2). Per point only
   // sums of scalars, 3-vectors and the rank-one parts are accumulated; the
   // element matrices are formed once from them.
   Vec6 stress_sum = Vec6::Zero();                                                    // Σ w s

@@ -1,5 +1,5 @@
 // The CGAL side of remesh_body: our tets as a CGAL remeshing triangulation
-// (tet soup, TECH-NOTES §2), one surface patch per boundary patch, isotropic
+// (tet soup, docs/libraries.md §2), one surface patch per boundary patch, isotropic
 // remeshing, and back.
 #include "anvil/remesh/remesh_body.h"
 

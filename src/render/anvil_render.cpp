@@ -2,7 +2,7 @@
 // 29). Reads DIR/anvil.pvd, draws the bodies' surface coloured by a field
 // with a labelled colour bar, the dies semi-transparent, the time, stroke and
 // load in a caption, and writes DIR/render/<field>_<increment>.png. Debian's
-// VTK renders through X only (TECH-NOTES "Off-screen PNG"): `anvil render`
+// VTK renders through X only (docs/libraries.md §3): `anvil render`
 // starts this program under xvfb-run when there is no display. Kept apart
 // from the solver: only this program links VTK's rendering.
 #include "anvil/core/subprocess.h"

@@ -1,4 +1,4 @@
-// HDF5 checkpoint of a RunState (C API, numbered calls, TECH-NOTES §5).
+// HDF5 checkpoint of a RunState (C API, numbered calls, docs/libraries.md §4).
 // Written with HDF5 1.10's file format (checksummed metadata) and every
 // non-empty dataset checksummed (Fletcher32), so a damaged file is refused
 // rather than read; every index and size is checked against the mesh on read.

@@ -1,4 +1,4 @@
-// The time loop (DESIGN §4): choose Δt → solve the increment → accept it →
+// The time loop (docs/design.md §4): choose Δt → solve the increment → accept it →
 // remesh if due → write. A case without a `time` section is one increment on
 // the initial geometry.
 #include "anvil/scene/Simulation.h"

@@ -85,7 +85,7 @@ std::vector<KeySpec> friction_keys(const std::string& owner, const std::string& 
   using T = KeyType;
   const std::string f = owner + ".friction";
   return {key(f, T::map, "friction between " + between + "; default frictionless"),
-          with_default(choices(key(f + ".law", T::string, "friction law (DESIGN §3)"),
+          with_default(choices(key(f + ".law", T::string, "friction law (docs/design.md §3)"),
                                {"frictionless", "sticking", "tresca", "coulomb", "norton"}),
                        "frictionless"),
           range(key(f + ".factor", T::number, "tresca: m̄ in τ = m̄ σ₀/√3; coulomb: optional Tresca cap", "-"), 0, 1),

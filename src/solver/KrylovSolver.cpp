@@ -96,8 +96,7 @@ struct KrylovSolver::Impl {
     set_default_option("-fieldsplit_0_pc_ml_nullspace", "block");
     // Chebyshev with Jacobi smooths every ML level (velocity and BFBT's
     // pressure Laplacian): more Krylov iterations than PETSc's default (two
-    // SOR sweeps), each about half the price, cheaper overall (README, the
-    // linear solve).
+    // SOR sweeps), each about half the price, cheaper overall (docs/linear-solve.md).
     for (const char* levels : {"-fieldsplit_0_mg_levels_", "-fieldsplit_1_bfbt_mg_levels_"}) {
       set_default_option(std::string(levels) + "ksp_type", "chebyshev");
       set_default_option(std::string(levels) + "pc_type", "jacobi");

@@ -119,7 +119,7 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
 // single-threaded-BLAS run as the suite runs. The jump is the difference
 // between two meshes of one body at h 1 mm (two fresh meshes differ by
 // 1.5-4.9 % between themselves); finer meshes lower it at a cost beyond the
-// suite's (README, remeshing). Full stroke is asserted: a node the
+// suite's (docs/remeshing.md). Full stroke is asserted: a node the
 // put-back leaves inside a die is pushed out over the nominal step
 // (ContactIncrement::closing_time), so a Δt cut can save its elements.
 TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshes keep volume and strain integral",

@@ -3,10 +3,10 @@
 // exactly with every formulation, and the quasi-symmetric formulation
 // transmits it better than master/slave on non-matching meshes. The full
 // table (four load cases, six mesh pairs, three formulations) is printed by
-// tools/patch_test; the README gives it.
+// tools/patch_test; docs/verification.md gives it.
 //
 // The paper's claim, QS error at most half the M/S error, holds on every
-// non-matching pair but one (measured, README): with the slave 3.75 times
+// non-matching pair but one (measured, docs/verification.md): with the slave 3.75 times
 // finer (4/15) M/S is itself below 1 % RMS and QS has 0.65 of it. There the
 // test asserts only that QS is better.
 #include "test_common.h"

@@ -1,5 +1,5 @@
 // The 3D contact patch test on two stacked unit cubes (cases/patch_test_cubes*.yaml):
-// a representative subset of the table tools/patch_test prints (the README
+// a representative subset of the table tools/patch_test prints (docs/verification.md
 // gives it). Integrated (facet) quasi-symmetric contact transmits the
 // uniform stress to within 1 % whichever cube is finer and whichever is
 // master; nodal contact does not when the coarse cube is slave, which is

@@ -1,5 +1,5 @@
 // The heat step (thermal/HeatStep.h) against the exact solutions of
-// THERMAL-NOTES "Benchmarks": a semi-infinite body with its surface held at a
+// docs/heat.md, exact solutions: a semi-infinite body with its surface held at a
 // temperature (erf) or cooled by convection (Carslaw & Jaeger 1959, §2.7),
 // two semi-infinite bodies brought into perfect contact (interface
 // temperature from the effusivities), and the lumped cooling of a small body

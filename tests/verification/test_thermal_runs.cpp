@@ -1,5 +1,5 @@
 // Heat in whole runs (scene/Heat.h): the adiabatic homogeneous compression
-// (THERMAL-NOTES benchmark 1) and the heat budget of the hot upsetting case.
+// (docs/heat.md, exact solution 1) and the heat budget of the hot upsetting case.
 #include "run_outputs.h"
 
 #include "anvil/core/log.h"

@@ -1,4 +1,4 @@
-// The active set of a penalty contact term (DESIGN §3), one flag per
+// The active set of a penalty contact term (docs/design.md §3), one flag per
 // constraint, driven by its gap velocity h (mm/s; h > 0 closes the gap).
 // For the first Newton iterations it follows the sign of h at the last
 // iterate (semi-smooth Newton); then it is frozen so Newton sees a smooth

@@ -1,4 +1,4 @@
-// Contact between deformable bodies (Fourment 2008, DESIGN §3). One search
+// Contact between deformable bodies (Fourment 2008, docs/design.md §3). One search
 // and projection for every formulation (contact/ContactSurface.h): points of
 // one body of a pair are projected onto the other body's contact surface. A
 // projected point p gives the gap velocity of the increment, linear in v:

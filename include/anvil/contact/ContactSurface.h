@@ -1,4 +1,4 @@
-// A body's contact surface as the other body of a pair sees it (DESIGN §3):
+// A body's contact surface as the other body of a pair sees it (docs/design.md §3):
 // the body's boundary facets but those on its symmetry planes (beyond them
 // lies the body's mirror image, and a node on the plane two bodies share,
 // pressed a hair into the other body, would otherwise find the other

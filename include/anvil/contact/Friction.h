@@ -1,4 +1,4 @@
-// Friction laws between a body and a die (DESIGN §3), as a tangential stress
+// Friction laws between a body and a die (docs/design.md §3), as a tangential stress
 // τ(w) resisting the sliding velocity w (mm/s, in the tangent plane):
 //   Tresca     τ = m̄ σ₀/√3 · w/s
 //   Coulomb    τ = min(μ σn, m̄ σ₀/√3) · w/s      (cap only when m̄ > 0)

@@ -1,4 +1,4 @@
-// Node-to-surface contact of one deformable body with rigid dies (DESIGN §3):
+// Node-to-surface contact of one deformable body with rigid dies (docs/design.md §3):
 // the die is the master, each boundary node a slave. Per candidate node the
 // velocity gap of the increment is
 //   h = −(v − v_die)·n − δ₀/t   (≤ 0 allowed, paper eq. 19 with a rigid master;

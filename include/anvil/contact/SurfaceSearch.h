@@ -1,6 +1,6 @@
 // Closest facet of a triangulated body surface to a point, and the facets
-// near a box: the search of contact between bodies (DESIGN §3), a CGAL AABB tree
-// (TECH-NOTES §2) rebuilt once per increment, when the surface has moved.
+// near a box: the search of contact between bodies (docs/design.md §3), a CGAL AABB tree
+// (docs/libraries.md §2) rebuilt once per increment, when the surface has moved.
 #pragma once
 #include "anvil/mesh/TetMesh.h"
 

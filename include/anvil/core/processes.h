@@ -1,4 +1,4 @@
-// The processes of a run (`mpirun -n N anvil run`, DESIGN §2): every process
+// The processes of a run (`mpirun -n N anvil run`, docs/design.md §2): every process
 // holds the whole mesh and runs the same time loop; the system is assembled
 // and solved by all of them (fem::Partition), and what one process decides
 // alone (rank 0's output) reaches the others through these calls, so that

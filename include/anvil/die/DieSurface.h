@@ -1,4 +1,4 @@
-// The working surface of a rigid die (DESIGN §3): what contact asks of it is
+// The working surface of a rigid die (docs/design.md §3): what contact asks of it is
 // the closest point to a body node, with the die's outward normal and the
 // signed distance. Geometry is held in the die's own frame; the time loop
 // translates queries by the die's displacement.

@@ -1,5 +1,5 @@
 // Die surfaces from STL files (ASCII or binary), read, repaired and checked
-// with CGAL (TECH-NOTES §2), searched with a CGAL AABB tree. CGAL stays
+// with CGAL (docs/libraries.md §2), searched with a CGAL AABB tree. CGAL stays
 // behind this function: it is compiled in its own library.
 #pragma once
 #include "anvil/die/DieSurface.h"

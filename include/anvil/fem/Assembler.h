@@ -1,6 +1,6 @@
 // Global assembly of the condensed P1+/P1 system of one body:
 //   [ K  Bᵀ ] [Δv]     [r_v]
-//   [ B −C  ] [Δp] = − [r_p]      (DESIGN §2), over every nodal dof.
+//   [ B −C  ] [Δp] = − [r_p]      (docs/design.md §2), over every nodal dof.
 // The matrix is compressed sparse rows with 32-bit indices, the layout of a
 // PETSc AIJ matrix, which wraps it without a copy. Its pattern is 4×4 blocks
 // of node adjacency, built once per mesh and contact-coupling set. Elements

@@ -1,5 +1,5 @@
 // How the processes of a run share one mesh's system (mpirun -n N; the mesh
-// itself is on every process, DESIGN §2). The elements are cut into N parts
+// itself is on every process, docs/design.md §2). The elements are cut into N parts
 // by recursive coordinate bisection of their centroids: a part is a compact
 // block of the body, so few nodes lie between parts. A node belongs to the
 // lowest part among its elements, so each process owns nodes of its own

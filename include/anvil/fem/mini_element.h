@@ -1,4 +1,4 @@
-// The P1+/P1 (MINI) tetrahedron (DESIGN §2): linear velocity plus the cubic
+// The P1+/P1 (MINI) tetrahedron (docs/design.md §2): linear velocity plus the cubic
 // bubble b = 256 λ1λ2λ3λ4, linear continuous pressure. The 19×19 element
 // system (12 nodal + 3 bubble velocities, 4 pressures) is condensed onto the
 // nodal unknowns: a 16×16 system ordered [vx vy vz p] per vertex, matching

@@ -1,4 +1,4 @@
-// What a run writes to its output folder (DESIGN §7): the VTK series
+// What a run writes to its output folder (docs/design.md §7): the VTK series
 // (anvil.pvd), loads.csv (appended each increment), interface.csv (body
 // pairs), checkpoint.h5 and summary.json. With several processes rank 0
 // alone writes; the others take its answers and its errors.

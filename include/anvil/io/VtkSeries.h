@@ -1,4 +1,4 @@
-// VTK output (DESIGN §7): one .vtu per written increment (binary appended,
+// VTK output (docs/design.md §7): one .vtu per written increment (binary appended,
 // zlib-compressed, UInt64 headers) and one .pvd collection pointing at them,
 // rewritten after every output so it is always valid for ParaView.
 #pragma once

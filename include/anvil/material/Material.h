@@ -1,4 +1,4 @@
-// Constitutive laws (DESIGN §2). Stateless: the stress follows from the strain
+// Constitutive laws (docs/design.md §2). Stateless: the stress follows from the strain
 // rate (or small strain, for elastic laws) and the history passed in; the
 // history itself (ε̄, T) lives in the body's per-element arrays.
 #pragma once
@@ -80,7 +80,7 @@ public:
 };
 
 /// Norton-Hoff viscoplastic law: s = 2K (√3 ε̄̇_r)^(m-1) dev ε̇ with the
-/// regularised rate ε̄̇_r = sqrt(ε̄̇² + ε̄̇₀²) (DESIGN §2). m = 1 is Newtonian
+/// regularised rate ε̄̇_r = sqrt(ε̄̇² + ε̄̇₀²) (docs/design.md §2). m = 1 is Newtonian
 /// with viscosity η = K. K may soften with temperature by an Arrhenius
 /// factor, K(T) = K exp(β (1/T − 1/T_ref)) with T in kelvin (the form of
 /// FORGE's Norton-Hoff cards, K₀ exp(β/T)).

@@ -1,4 +1,4 @@
-// A linear tetrahedral mesh as a plain value (DESIGN §1).
+// A linear tetrahedral mesh as a plain value (docs/design.md §1).
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products on Point

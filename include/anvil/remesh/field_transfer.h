@@ -1,6 +1,6 @@
 // Fields from an old mesh to a new one after a remesh.
 // Vertex handles do not survive CGAL's splits and collapses, so the transfer
-// is geometric (TECH-NOTES §2): each new node is located in the old mesh, each
+// is geometric (docs/libraries.md §2): each new node is located in the old mesh, each
 // new element intersected with the old elements it overlaps.
 #pragma once
 #include "anvil/mesh/TetMesh.h"

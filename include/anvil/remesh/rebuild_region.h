@@ -1,4 +1,4 @@
-// Where a local remesh rebuilds a body (DESIGN §4): the elements of poor
+// Where a local remesh rebuilds a body (docs/design.md §4): the elements of poor
 // quality now or after the next increment, and a few layers of elements
 // around them, so that the rebuilt region has room to make good elements.
 #pragma once

@@ -1,7 +1,7 @@
-// Remeshing one body with CGAL's isotropic tetrahedral remeshing (TECH-NOTES
+// Remeshing one body with CGAL's isotropic tetrahedral remeshing (docs/libraries.md
 // §2). The body's boundary is split into patches so that CGAL keeps flat
 // faces flat and sharp edges sharp: without them it rounds edges and the body
-// loses volume (4 % on a unit cube, TECH-NOTES probe).
+// loses volume (4 % on a unit cube, docs/libraries.md §2).
 #pragma once
 #include "anvil/mesh/TetMesh.h"
 
@@ -17,7 +17,7 @@ struct RemeshSettings {
   int iterations = 3;          ///< CGAL remeshing passes (split, collapse, flip, smooth)
   /// Size field (mm): the edge length wanted at a point, between
   /// smallest_edge_length and edge_length; empty: uniform. CGAL 5.5 takes
-  /// one target length per call (TECH-NOTES §2), so the field is met in
+  /// one target length per call (docs/libraries.md §2), so the field is met in
   /// levels: after the pass at edge_length, passes at lengths shrinking by
   /// ¾ each remesh the cells whose centroid wants less than the level before.
   /// A jump of ¾ between neighbours keeps the cells between levels fair; one

@@ -60,7 +60,7 @@ struct DieSpec {
   std::string source;
 };
 
-/// Contact between two deformable bodies (DESIGN §3, Fourment 2008).
+/// Contact between two deformable bodies (docs/design.md §3, Fourment 2008).
 struct ContactPairSpec {
   int master = 0, slave = 1; ///< body indices
   contact::PairMethod method;
@@ -69,7 +69,7 @@ struct ContactPairSpec {
   std::string source;
 };
 
-/// Heat (thermal scenes, DESIGN §2): absent from a case, every body keeps its temperature.
+/// Heat (thermal scenes, docs/design.md §2): absent from a case, every body keeps its temperature.
 struct ThermalSpec {
   bool enabled = false;
   double taylor_quinney = 0.9;           ///< β: share of the plastic work that becomes heat
@@ -81,7 +81,7 @@ struct ThermalSpec {
   std::string source;
 };
 
-/// The time loop (DESIGN §4). Absent from a case: one increment, no update.
+/// The time loop (docs/design.md §4). Absent from a case: one increment, no update.
 struct TimeSpec {
   bool enabled = false;
   double stroke_increment = 0.0; ///< mm of travel of the fastest die per increment

@@ -1,5 +1,5 @@
 // A rigid die of a scene, built from its DieSpec: surface, press motion,
-// friction, and how it advances in time (DESIGN §4).
+// friction, and how it advances in time (docs/design.md §4).
 #pragma once
 #include "anvil/die/DieSurface.h"
 #include "anvil/die/PressKinematics.h"

@@ -1,4 +1,4 @@
-// The heat effect of a run (DESIGN §2, THERMAL-NOTES): after each accepted
+// The heat effect of a run (docs/design.md §2, docs/heat.md): after each accepted
 // increment, one heat step over its Δt on the moved mesh (staggered
 // coupling: the flow of the next increment sees the new temperature). The
 // step's sources and exchanges come from the increment:

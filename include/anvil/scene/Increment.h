@@ -1,4 +1,4 @@
-// One increment of the time loop (DESIGN §4): solve it on the current
+// One increment of the time loop (docs/design.md §4): solve it on the current
 // geometry, then accept it. Solving leaves the run state untouched, and
 // accepting is all-or-nothing, so a failed try is simply dropped.
 #pragma once

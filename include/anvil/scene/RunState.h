@@ -33,7 +33,7 @@ struct LoadRecord {
   double stroke;         ///< mm
   Eigen::Vector3d force; ///< N, exerted by the body on the surface
 
-  /// The press load (N): the force along the press axis z (DESIGN §1), as
+  /// The press load (N): the force along the press axis z (docs/design.md §1), as
   /// the press's gauge reads it. A symmetry model's dies also carry lateral
   /// friction forces that the whole part would balance: they are in `force`
   /// only.

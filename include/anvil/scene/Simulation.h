@@ -1,5 +1,5 @@
 // Runs a checked case: builds the body, solves the increment, writes the
-// outputs (DESIGN §7): VTK series, loads.csv, summary.json, anvil.log.
+// outputs (docs/design.md §7): VTK series, loads.csv, summary.json, anvil.log.
 #pragma once
 #include "anvil/scene/Case.h"
 

@@ -1,5 +1,5 @@
 // Δt of each increment, its cuts after a failure, and when the run stops
-// (DESIGN §4). The time loop asks it; it never solves anything.
+// (docs/design.md §4). The time loop asks it; it never solves anything.
 #pragma once
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"

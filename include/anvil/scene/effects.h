@@ -1,4 +1,4 @@
-// The effects registry (DESIGN §5, STYLE "Effects"): every term Anvil can
+// The effects registry (docs/design.md §5, STYLE "Effects"): every term Anvil can
 // add, declared in one function. A scene resolves to the subset it needs and
 // only that subset is built; `anvil --list` prints the registry.
 #pragma once

@@ -1,5 +1,5 @@
 // Newton-Raphson with line search on (v, p) for one increment of one body
-// (DESIGN §2): exact consistent tangent of the condensed MINI system, an
+// (docs/design.md §2): exact consistent tangent of the condensed MINI system, an
 // inexact (Krylov) or direct linear solve, convergence on the force
 // residual, the incompressibility residual and the velocity increment, each
 // printed per iteration.
@@ -14,10 +14,9 @@
 
 namespace anvil::solver {
 
-/// Defaults measured with tools/study on cases/upsetting.yaml (README,
-/// "Solver"): below a residual of 1e-6 the press load changes by less than
-/// 2e-6 of itself, and asking |Δv|/|v| < 1e-8 besides costs 45 % more Newton
-/// iterations for a load change of 2e-8.
+/// Defaults measured with tools/study on cases/upsetting.yaml (docs/linear-solve.md): below a residual of 1e-6 the
+/// press load changes by less than 2e-6 of itself, and asking |Δv|/|v| < 1e-8 besides costs 45 % more Newton iterations
+/// for a load change of 2e-8.
 struct NewtonSettings {
   double tolerance = 1e-6; ///< relative force and div residuals
   /// |Δv|/|v| of the last step. A linear problem (linear laws, contact

@@ -1,5 +1,5 @@
-// The iterative solve of the condensed MINI system on PETSc (DESIGN §2,
-// shared SOLVER-NOTES): flexible GMRES, right-preconditioned by the upper
+// The iterative solve of the condensed MINI system on PETSc (docs/design.md §2,
+// docs/linear-solve.md): flexible GMRES, right-preconditioned by the upper
 // block factorisation
 //   P = [ K̂  Bᵀ ]      K̂ ≈ K: one algebraic-multigrid V-cycle on the
 //       [ 0  Ŝ  ]      velocity block (ML by default; GAMG with the

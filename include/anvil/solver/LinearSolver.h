@@ -1,4 +1,4 @@
-// The linear solve of each Newton iteration (DESIGN §2): the condensed
+// The linear solve of each Newton iteration (docs/design.md §2): the condensed
 // system, symmetric quasi-definite, with contact rows. The default is the
 // PETSc Krylov solver with the block preconditioner (KrylovSolver), near
 // linear in the mesh size; MUMPS through PETSc is the direct option and the
@@ -26,7 +26,7 @@ enum class LinearSolverKind {
 };
 
 /// Unknowns up to which `automatic` picks the direct solver: the crossover
-/// measured on 2 cores (README, "Solver"). One increment from rest
+/// measured on 2 cores (docs/linear-solve.md). One increment from rest
 /// (tools/bench_increment), MUMPS against FGMRES: Newtonian 0.11/0.14 s at
 /// 3.7k unknowns, 0.30/0.35 s at 8.7k, 0.81/0.66 s at 16.8k; Norton-Hoff
 /// m = 0.1 2.96/2.45 s at 4k, 6.84/7.08 s at 9k, 17.2/13.9 s at 17k. Whole

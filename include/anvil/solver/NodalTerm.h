@@ -1,4 +1,4 @@
-// A node-based term of the residual (contact and friction, DESIGN §3): a
+// A node-based term of the residual (contact and friction, docs/design.md §3): a
 // 3-vector per node and 3×3 velocity blocks, on a node's own velocity (rigid
 // dies) or coupling it with the nodes of a facet it projects onto (body
 // pairs). The Newton solver adds it to the assembled system. The couplings a

@@ -1,7 +1,7 @@
-// One backward-Euler step of the heat equation (DESIGN §2, heat) on linear
+// One backward-Euler step of the heat equation (docs/design.md §2, heat) on linear
 // tetrahedra, the same mesh the flow is solved on:
 //   (C/Δt + K + H) T_{n+1} = C/Δt T_n + Q + H T_far
-// C the lumped (row-sum) capacity: no undershoot at small Δt (THERMAL-NOTES
+// C the lumped (row-sum) capacity: no undershoot at small Δt (docs/heat.md
 // "Numerics"); K the conduction, k(T_n) V ∇N∇Nᵀ per element; H the
 // exchanges of boundary nodes, with a far temperature (air, rigid die, a
 // body not solved for heat) or with the facet of another body they touch;

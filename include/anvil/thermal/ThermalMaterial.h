@@ -1,6 +1,6 @@
-// Thermal properties of a material card (DESIGN §2, heat): conductivity and
+// Thermal properties of a material card (docs/design.md §2, heat): conductivity and
 // specific heat as constants or tables in T, density, surface emissivity.
-// Units (THERMAL-NOTES "Units"): the card gives SI datasheet values, the
+// Units (docs/heat.md, Units): the card gives SI datasheet values, the
 // solver works in mm, s, N, °C, so energy is mJ and power mW:
 //   k [W/(m·K)] = k [mW/(mm·K)],  ρc [J/(m³·K)] × 1e-6 = ρc [mJ/(mm³·K)].
 #pragma once

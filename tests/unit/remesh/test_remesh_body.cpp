@@ -24,7 +24,7 @@ TEST_CASE("Remeshing a box keeps its volume, faces and tags", "[unit][remesh]") 
   settings.edge_length = 1.0;
   const mesh::TetMesh out = remesh::remesh_body(box, settings);
   CHECK(out.tet_count() > 2 * box.tet_count()); // refined: h 2 → 1
-  // Flat faces marked as patches: the volume is kept to round-off (TECH-NOTES probe: 1.000).
+  // Flat faces marked as patches: the volume is kept to round-off (docs/libraries.md §2: 1.000).
   CHECK(mesh::volume(out) == Approx(240.0).epsilon(1e-9));
   CHECK(tags_of(out) == std::set<int>{1, 2, 3, 4, 5, 6});
   // Every face keeps its tag: its nodes lie on the plane the tag names.

@@ -1,0 +1,63 @@
+// The README and docs/ name only what is there: every case file, tool,
+// die, material card, figure and page they name exists, and every case they
+// name is a valid case (read as `anvil run` reads it; running them is the
+// regression tier's job).
+#include "test_common.h"
+
+#include "anvil/scene/Case.h"
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace {
+
+std::string text_of(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+} // namespace
+
+TEST_CASE("README and docs/ name only files that exist, and the cases they name are valid", "[unit][scene]") {
+  const std::filesystem::path root = source_path("");
+  std::vector<std::filesystem::path> pages{root / "README.md"};
+  for (const auto& entry : std::filesystem::directory_iterator(root / "docs"))
+    if (entry.path().extension() == ".md") pages.push_back(entry.path());
+  REQUIRE(pages.size() >= 2);
+  // Paths into the repository's folders, as the pages write them (from the
+  // root in the README, from docs/ with ../ in the pages beside it).
+  const std::regex named(R"((?:\.\./)?((?:cases|tools|dies|materials|docs)/[A-Za-z0-9_./-]*[A-Za-z0-9_]))");
+  const std::regex linked(R"(\]\(([a-z-]+\.md)\))"); // a page of docs/ linked from another
+  std::set<std::string> cases;
+  int named_count = 0;
+  for (const auto& page : pages) {
+    const std::string text = text_of(page);
+    for (std::sregex_iterator m(text.begin(), text.end(), named), end; m != end; ++m) {
+      const std::string path = (*m)[1];
+      if (path.find("out/") != std::string::npos) continue; // a run's output, made by the run
+      // A one-letter name is a placeholder in an example (cases/x.yaml in an error message).
+      if (std::filesystem::path(path).stem().string().size() == 1) continue;
+      INFO(page.filename().string() << " names " << path);
+      CHECK(std::filesystem::exists(root / path));
+      ++named_count;
+      if (path.starts_with("cases/") && path.ends_with(".yaml")) cases.insert(path);
+    }
+    if (page.parent_path().filename() == "docs")
+      for (std::sregex_iterator m(text.begin(), text.end(), linked), end; m != end; ++m) {
+        INFO(page.filename().string() << " links " << (*m)[1]);
+        CHECK(std::filesystem::exists(page.parent_path() / std::string((*m)[1])));
+      }
+  }
+  CHECK(named_count > 20);
+  REQUIRE(cases.size() >= 5);
+  for (const std::string& c : cases) {
+    INFO("case " << c);
+    CHECK_NOTHROW(anvil::scene::read_case((root / c).string()));
+  }
+}
