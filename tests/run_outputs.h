@@ -3,6 +3,7 @@
 #pragma once
 #include "test_common.h"
 
+#include "anvil/io/Checkpoint.h"
 #include "anvil/io/RunResults.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/RunState.h"
@@ -24,7 +25,7 @@ struct RunOutputs {
   double summary_number(const std::string& key) const { return anvil::io::read_summary_number(directory, key); }
 
   /// The last checkpoint (time-stepping runs write one at the end).
-  anvil::scene::RunState final_state() const { return anvil::scene::read_checkpoint(directory + "/checkpoint.h5"); }
+  anvil::scene::RunState final_state() const { return anvil::io::read_checkpoint(directory + "/checkpoint.h5"); }
 };
 
 /// Runs `c` into <tmp>/<name> (emptied first).

@@ -1,5 +1,7 @@
 #include "anvil/io/RunWriter.h"
 
+#include "anvil/io/Checkpoint.h"
+
 #include "anvil/io/RunResults.h"
 
 #include "anvil/core/error.h"
@@ -62,7 +64,7 @@ bool RunWriter::write_due(const scene::Scene& scene, const scene::Discretisation
   const bool checkpoint_due = scene.input.time.enabled && every > 0 && (force || state.increment % every == 0);
   if (!checkpoint_due || last_checkpoint_ == state.increment) return false;
   Timers::Scope scope(timers, "checkpoint");
-  scene::write_checkpoint(directory_ + "/checkpoint.h5", state, scene.fingerprint);
+  write_checkpoint(directory_ + "/checkpoint.h5", state, scene.fingerprint);
   last_checkpoint_ = state.increment;
   return true;
 }

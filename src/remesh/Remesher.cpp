@@ -2,6 +2,7 @@
 
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
+#include "anvil/io/Checkpoint.h"
 #include "anvil/mesh/TetMesh.h"
 #include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
@@ -548,7 +549,7 @@ void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const R
   const std::size_t first_record = state.remeshes.size();
   // Several processes: rank 0 remeshes, the others take its new mesh and fields.
   processes::on_root([&] { remesh_bodies(scene, state, due, touching_die, rate, next.length, timers); });
-  scene::share_state(state);
+  io::share_state(state);
   if (!check) return;
   // Twice on the new mesh: friction takes σ₀ from the strain rates of the
   // solution before, at first the interpolated velocity; the second solve

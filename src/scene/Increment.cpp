@@ -4,6 +4,7 @@
 
 #include "anvil/contact/contact_scales.h"
 #include "anvil/mesh/tet_geometry.h"
+#include "anvil/scene/TimeStepControl.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,6 +8,7 @@
 #include "anvil/core/interrupt.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
+#include "anvil/io/Checkpoint.h"
 #include "anvil/io/RunWriter.h"
 #include "anvil/io/load_plot.h"
 #include "anvil/remesh/Remesher.h"
@@ -184,7 +185,7 @@ void finish(const Scene& scene, const Discretisation& disc, RunState& state, io:
 /// The changes of the case since the checkpoint at `path`: refused unless
 /// the user allowed them; the lines to log (anvil.log is not open yet).
 std::vector<std::string> compare_with_checkpoint(const Scene& scene, const std::string& path, bool allow_changes) {
-  const std::vector<std::string> before = read_checkpoint_fingerprint(path);
+  const std::vector<std::string> before = io::read_checkpoint_fingerprint(path);
   if (before.empty())
     return {"checkpoint written by an older anvil: the case is not compared with the run it continues"};
   const std::vector<std::string> changes = fingerprint_changes(before, scene.fingerprint);
@@ -239,7 +240,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
   std::vector<std::string> changes;
   if (options.resume) {
     const std::string checkpoint = out + "/checkpoint.h5";
-    state = read_checkpoint(checkpoint);
+    state = io::read_checkpoint(checkpoint);
     changes = compare_with_checkpoint(scene, checkpoint, options.allow_changes);
     check_resumable(scene, state, checkpoint);
     state.inside_dies = inside_dies(scene, state);

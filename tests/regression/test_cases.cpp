@@ -4,6 +4,7 @@
 #include "test_common.h"
 
 #include "anvil/core/log.h"
+#include "anvil/io/Checkpoint.h"
 #include "anvil/material/mandel.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/RunState.h"
@@ -101,7 +102,7 @@ TEST_CASE("a billet forged between elastic dies: the press load rises and the di
   // increment (the checkpoint's σ_n+1), not that stress plus the last
   // increment's Δt C:ε̇ once more. Both are the same doubles: 1e-12 of the
   // largest is round-off of the Mandel-to-tensor conversion only.
-  const anvil::scene::RunState last = anvil::scene::read_checkpoint(out.directory + "/checkpoint.h5");
+  const anvil::scene::RunState last = anvil::io::read_checkpoint(out.directory + "/checkpoint.h5");
   const std::vector<double> stress = anvil::io::read_last_cell_field(out.directory, "stress", 6);
   REQUIRE(last.elastic_stress.size() == stress.size());
   double largest = 0.0, difference = 0.0;

@@ -43,7 +43,7 @@ int wait_for(pid_t pid) {
 }
 
 int scene_increment(const std::string& checkpoint) {
-  return anvil::scene::read_checkpoint(checkpoint).increment;
+  return anvil::io::read_checkpoint(checkpoint).increment;
 }
 
 std::string read_text(const std::string& path) {

@@ -3,6 +3,7 @@
 // rewritten after every output so it is always valid for ParaView.
 #pragma once
 #include "anvil/mesh/TetMesh.h"
+#include "anvil/scene/RunState.h"
 
 #include <Eigen/Core>
 #include <array>
@@ -34,11 +35,7 @@ public:
                      const std::vector<mesh::Point>& vertices, const std::vector<std::array<int, 3>>& faces);
 
   /// One dataset of the collection.
-  struct Entry {
-    double time;
-    int part;
-    std::string file;
-  };
+  using Entry = scene::OutputFrame;
   const std::vector<Entry>& entries() const { return entries_; }
   /// Continues an earlier series (resumed run): keeps the entries up to and
   /// including `time` and rewrites the .pvd.

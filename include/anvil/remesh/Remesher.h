@@ -6,7 +6,7 @@
 #include "anvil/core/Timers.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"
-#include "anvil/scene/TimeStepControl.h"
+#include "anvil/scene/TimeStep.h"
 
 #include <span>
 #include <string>
@@ -41,7 +41,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
 /// With remeshing.check_load, the press load of the increment `next` solved
 /// on the old mesh and on the new one goes into the records (a measurement,
 /// on copies: the run goes on as without it). Several processes: rank 0
-/// remeshes and sends the new state to the others (scene::share_state).
+/// remeshes and sends the new state to the others (io::share_state).
 void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
             std::span<const int> touching_die, std::span<const double> rate, const scene::TimeStep& next,
             Timers& timers);

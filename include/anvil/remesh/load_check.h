@@ -5,7 +5,7 @@
 #include "anvil/core/Timers.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"
-#include "anvil/scene/TimeStepControl.h"
+#include "anvil/scene/TimeStep.h"
 
 namespace anvil::remesh {
 

@@ -7,7 +7,7 @@
 #include "anvil/scene/Discretisation.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"
-#include "anvil/scene/TimeStepControl.h"
+#include "anvil/scene/TimeStep.h"
 
 #include <span>
 #include <string>

@@ -4,7 +4,6 @@
 // measure of the geometry the checkpoint does not need to store.
 #pragma once
 #include "anvil/fem/Assembler.h"
-#include "anvil/io/VtkSeries.h"
 #include "anvil/mesh/TetMesh.h"
 
 #include <Eigen/Core>
@@ -23,6 +22,13 @@ struct DieState {
   double speed_factor = 1.0;
   double stroke = 0.0;                                    ///< mm travelled
   Eigen::Vector3d displacement = Eigen::Vector3d::Zero(); ///< mm, of the die frame
+};
+
+/// One file of the VTK series: a body's or a die's dataset at one time.
+struct OutputFrame {
+  double time;      ///< s
+  int part;         ///< 0 the bodies, d + 1 die d
+  std::string file; ///< relative to the run's folder
 };
 
 /// One line of loads.csv: the load on a die (or velocity plate) at the end of an increment.
@@ -111,26 +117,10 @@ struct RunState {
   /// Per increment: Newton iterations and Krylov iterations (0 with a direct solver).
   std::vector<std::array<int, 2>> iterations;
   std::vector<RemeshRecord> remeshes;
-  std::vector<io::VtkSeries::Entry> outputs;
+  std::vector<OutputFrame> outputs; ///< the VTK series written so far (io::VtkSeries)
   /// mm³ per body of its mesh inside the dies (die::overlap_volume), measured
   /// whenever the mesh or the dies move; not stored: measured again on resume.
   std::vector<double> inside_dies;
 };
-
-/// Writes `state` and the case's `fingerprint` (Scene::fingerprint) to `path`
-/// through a temporary file, flushed, then renamed, so a reader never sees a
-/// torn checkpoint and a failed write leaves the one before in place. Throws
-/// RunError.
-void write_checkpoint(const std::string& path, const RunState& state, const std::vector<std::string>& fingerprint);
-/// Reads a checkpoint written by write_checkpoint, checking every index and
-/// size against its mesh and every number for finiteness. Throws InputError
-/// naming the dataset and record.
-RunState read_checkpoint(const std::string& path);
-/// Several processes (mpirun): every process takes rank 0's `state`, sent
-/// as a checkpoint's bytes (after a remesh that rank 0 alone ran). Throws RunError.
-void share_state(RunState& state);
-/// The case fingerprint a checkpoint was written with; empty for checkpoints
-/// written before anvil kept it. Throws InputError.
-std::vector<std::string> read_checkpoint_fingerprint(const std::string& path);
 
 } // namespace anvil::scene

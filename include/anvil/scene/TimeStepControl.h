@@ -3,6 +3,7 @@
 #pragma once
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"
+#include "anvil/scene/TimeStep.h"
 
 #include <optional>
 #include <string>
@@ -14,15 +15,6 @@ struct Stop {
   std::string reason;   ///< empty while the run goes on
   bool complete = true; ///< false when it ends short of its stop criterion (`anvil run` exits with 4)
   explicit operator bool() const { return !reason.empty(); }
-};
-
-/// The lengths of one increment (s).
-struct TimeStep {
-  /// The stroke increment at the current press speed: contact recovery and
-  /// volume compensation act over at least this, whatever Δt is.
-  double nominal = 0.0;
-  double planned = 0.0; ///< Δt chosen for the increment, before contact events and cuts
-  double length = 0.0;  ///< Δt tried
 };
 
 class TimeStepControl {

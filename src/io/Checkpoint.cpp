@@ -11,12 +11,13 @@
 // compares it), /temperature (n, thermal scenes; empty otherwise) and /heat
 // (8: the heat budget and the transfer time done; both absent before they
 // were kept), scalar attributes on the root group.
+#include "anvil/io/Checkpoint.h"
+
 #include "anvil/core/error.h"
 #include "anvil/core/input_file.h"
 #include "anvil/core/processes.h"
 #include "anvil/io/atomic_file.h"
 #include "anvil/mesh/TetMesh.h"
-#include "anvil/scene/RunState.h"
 
 #include <hdf5.h>
 
@@ -31,7 +32,13 @@
 #include <string>
 #include <vector>
 
-namespace anvil::scene {
+namespace anvil::io {
+
+using scene::DieState;
+using scene::LoadRecord;
+using scene::RemeshRecord;
+using scene::RunState;
+
 namespace {
 
 /// Closes an HDF5 handle with the right call when it goes out of scope.
@@ -220,13 +227,13 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
     write_array(file, "loads", H5T_NATIVE_DOUBLE, loads.data(), s.loads.size(), 7);
     write_array(file, "iterations", H5T_NATIVE_INT, s.iterations.data(), s.iterations.size(), 2);
     write_array(file, "temperature", H5T_NATIVE_DOUBLE, s.temperature.data(), s.temperature.size(), 0);
-    const HeatBudget& h = s.heat;
+    const scene::HeatBudget& h = s.heat;
     const std::array<double, 8> heat{h.plastic, h.friction,  h.to_dies,      h.to_environment,
                                      h.stored,  h.remeshing, h.initial_heat, s.transfer_time};
     write_array(file, "heat", H5T_NATIVE_DOUBLE, heat.data(), heat.size(), 0);
     std::vector<double> outputs;
     std::string files;
-    for (const io::VtkSeries::Entry& e : s.outputs) {
+    for (const scene::OutputFrame& e : s.outputs) {
       outputs.insert(outputs.end(), {e.time, double(e.part)});
       files += e.file + '\n';
     }
@@ -437,4 +444,4 @@ std::vector<std::string> read_checkpoint_fingerprint(const std::string& path) {
   return lines;
 }
 
-} // namespace anvil::scene
+} // namespace anvil::io
