@@ -4,8 +4,8 @@
 #pragma once
 #include "anvil/core/processes.h"
 #include "anvil/io/RunResults.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
-#include "anvil/scene/Simulation.h"
 
 #include <algorithm>
 #include <array>
@@ -75,7 +75,7 @@ inline Errors run_case(const std::string& case_file, std::vector<std::string> ov
   // Under mpirun rank 0 alone writes the run's files: it alone empties and
   // reads them (the others would race it to the next case's folder).
   if (anvil::processes::root()) std::filesystem::remove_all(out);
-  anvil::scene::run(c, {out});
+  anvil::run::run(c, {out});
   Errors e;
   if (!anvil::processes::root()) return e;
   double sum_sq = 0.0;

@@ -5,9 +5,9 @@
 
 #include "anvil/io/Checkpoint.h"
 #include "anvil/io/RunResults.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/RunState.h"
-#include "anvil/scene/Simulation.h"
 
 #include <filesystem>
 #include <string>
@@ -32,6 +32,6 @@ struct RunOutputs {
 inline RunOutputs run_case(const anvil::scene::Case& c, const std::string& name) {
   const auto out = std::filesystem::temp_directory_path() / name;
   std::filesystem::remove_all(out);
-  anvil::scene::run(c, {out.string()});
+  anvil::run::run(c, {out.string()});
   return {out.string()};
 }

@@ -4,8 +4,8 @@
 // regression and hard tests.
 #pragma once
 #include "anvil/io/RunResults.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
-#include "anvil/scene/Simulation.h"
 
 #include <algorithm>
 #include <array>
@@ -39,7 +39,7 @@ inline Outcome run(const Setup& s, const std::string& source_dir, const std::str
        "contact_pairs[0].slave=" + slave, "contact_pairs[0].formulation=" + s.formulation,
        "solver.tolerance=1e-8"}); // the tolerance the tests' 1e-6 bounds are built on (default 1e-6)
   std::filesystem::remove_all(out);
-  anvil::scene::run(c, {out});
+  anvil::run::run(c, {out});
   Outcome o;
   o.load = anvil::io::read_loads(out, "top").back().force.z();
   std::array<double, 2> weighted{}, area{};

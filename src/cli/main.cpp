@@ -5,8 +5,8 @@
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
 #include "anvil/core/subprocess.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
-#include "anvil/scene/Simulation.h"
 #include "anvil/scene/effects.h"
 #include "anvil/scene/schema.h"
 #include "anvil/solver/PetscSession.h"
@@ -149,7 +149,7 @@ std::string shell_word(const std::string& text) {
 
 /// What a run stopped by SIGINT or SIGTERM says: where its last accepted
 /// increment is and the command that resumes it.
-void say_interrupted(const anvil::scene::RunEnd& end, const std::string& program, const std::string& case_file,
+void say_interrupted(const anvil::run::RunEnd& end, const std::string& program, const std::string& case_file,
                      const std::vector<std::string>& overrides, const std::string& directory) {
   if (!end.checkpointed) {
     std::fprintf(stderr,
@@ -240,7 +240,7 @@ int main(int argc, char** argv) {
   std::string case_file;
   std::vector<std::string> overrides;
   std::vector<char*> petsc_arguments = {argv[0]}; // what PetscInitialize reads: PETSc's options only
-  anvil::scene::RunOptions options;
+  anvil::run::RunOptions options;
   std::string processes_option;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -277,7 +277,7 @@ int main(int argc, char** argv) {
   if (command == "output-dir") {
     try {
       const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
-      std::puts(anvil::scene::output_directory(c, options).c_str());
+      std::puts(anvil::run::output_directory(c, options).c_str());
       return 0;
     } catch (const std::exception& e) {
       return report(e, true);
@@ -311,9 +311,9 @@ int main(int argc, char** argv) {
   try {
     // Every process reads the case and runs the same time loop (docs/design.md §2).
     const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
-    const anvil::scene::RunEnd end = anvil::scene::run(c, options);
+    const anvil::run::RunEnd end = anvil::run::run(c, options);
     // An interrupted run ends as soon as it can: no picture.
-    if (c.write_picture && c.write_vtk && !end.signal) picture_directory = anvil::scene::output_directory(c, options);
+    if (c.write_picture && c.write_vtk && !end.signal) picture_directory = anvil::run::output_directory(c, options);
     picture_mirror = c.picture_mirror;
     if (anvil::processes::root())
       for (const std::string& unused : anvil::solver::PetscSession::unused_options())
@@ -321,7 +321,7 @@ int main(int argc, char** argv) {
                      unused.c_str());
     if (end.signal) {
       if (anvil::processes::root())
-        say_interrupted(end, argv[0], case_file, overrides, anvil::scene::output_directory(c, options));
+        say_interrupted(end, argv[0], case_file, overrides, anvil::run::output_directory(c, options));
       code = 128 + end.signal;
     } else if (!end.complete) {
       if (anvil::processes::root()) std::fprintf(stderr, "anvil: run stopped: %s\n", end.stop.c_str());

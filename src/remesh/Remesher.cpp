@@ -9,7 +9,6 @@
 #include "anvil/remesh/die_feature_depth.h"
 #include "anvil/remesh/field_transfer.h"
 #include "anvil/remesh/fit_to_dies.h"
-#include "anvil/remesh/load_check.h"
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/rebuild_region.h"
 #include "anvil/remesh/remesh_body.h"
@@ -394,6 +393,16 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       keep_mesh();
       continue;
     }
+    // A remesh for poor elements that leaves a worse one is no remesh: the
+    // body keeps its mesh (and is remeshed again when it is due again).
+    if (const double worst_before = worst_quality(part);
+        why->local && worst_before < scene.input.remeshing.quality && tried->worst <= worst_before) {
+      log::info("  remesh '%s' (%s) not taken: its worst element (quality %.3f) is no better than the mesh's; the "
+                "body keeps its mesh",
+                scene.bodies[b].name.c_str(), why->why.c_str(), tried->worst);
+      keep_mesh();
+      continue;
+    }
     const Remeshed& best = *tried;
     const mesh::TetMesh& fresh = best.mesh;
     const double volume_before = mesh::volume(part), volume_remeshed = mesh::volume(best.remeshed);
@@ -542,27 +551,10 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
 }
 
 void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
-            std::span<const int> touching_die, std::span<const double> rate, const scene::TimeStep& next,
-            Timers& timers) {
-  const bool check = scene.input.remeshing.check_load && !scene.surfaces.empty();
-  const double old_mesh = check ? next_increment_load(scene, state, next, 1, timers) : 0.0;
-  const std::size_t first_record = state.remeshes.size();
+            std::span<const int> touching_die, std::span<const double> rate, double next_step, Timers& timers) {
   // Several processes: rank 0 remeshes, the others take its new mesh and fields.
-  processes::on_root([&] { remesh_bodies(scene, state, due, touching_die, rate, next.length, timers); });
+  processes::on_root([&] { remesh_bodies(scene, state, due, touching_die, rate, next_step, timers); });
   io::share_state(state);
-  if (!check) return;
-  // Twice on the new mesh: friction takes σ₀ from the strain rates of the
-  // solution before, at first the interpolated velocity; the second solve
-  // takes them from the first, as the next increment will.
-  const double new_mesh = next_increment_load(scene, state, next, 2, timers);
-  for (std::size_t r = first_record; r < state.remeshes.size(); ++r)
-    state.remeshes[r].load_old_mesh = old_mesh, state.remeshes[r].load_new_mesh = new_mesh;
-  if (std::isnan(old_mesh) || std::isnan(new_mesh))
-    log::info("    load check: the next increment (dt %.3g s) did not converge on the %s mesh; not measured",
-              next.length, std::isnan(old_mesh) ? "old" : "new");
-  else
-    log::info("    load check, next increment (dt %.3g s) on the old mesh and on the new: %.5g and %.5g kN (%+.2f%%)",
-              next.length, old_mesh / 1e3, new_mesh / 1e3, 100.0 * state.remeshes[first_record].load_jump());
 }
 
 } // namespace anvil::remesh

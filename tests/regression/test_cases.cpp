@@ -6,9 +6,9 @@
 #include "anvil/core/log.h"
 #include "anvil/io/Checkpoint.h"
 #include "anvil/material/mandel.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/RunState.h"
-#include "anvil/scene/Simulation.h"
 #include "run_outputs.h"
 #include "signature.h"
 

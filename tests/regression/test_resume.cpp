@@ -121,7 +121,7 @@ TEST_CASE("a thermal run resumed from a checkpoint continues with the same tempe
   stopped.push_back("time.max_increments=4");
   const RunOutputs part = run_case(anvil::scene::read_case(case_file, stopped), "anvil_thermal_resume_part");
   REQUIRE(part.final_state().increment == 4);
-  anvil::scene::run(anvil::scene::read_case(case_file, coarse), {part.directory, true, true});
+  anvil::run::run(anvil::scene::read_case(case_file, coarse), {part.directory, true, true});
   const anvil::scene::RunState a = whole.final_state(), b = part.final_state();
   REQUIRE(a.increment == b.increment);
   REQUIRE(a.temperature.size() == b.temperature.size());
@@ -144,7 +144,7 @@ TEST_CASE("a run resumed with --allow-changes lists each change of the case in a
   // A stop that changes (allowed freely) and the top die's friction (a change).
   std::vector<std::string> changed{"time.max_increments=3", "output.vtk=false", "dies[0].friction.law=tresca"};
   changed.push_back("dies[0].friction.factor=0.2");
-  anvil::scene::run(anvil::scene::read_case(case_file, changed), {part.directory, true, true});
+  anvil::run::run(anvil::scene::read_case(case_file, changed), {part.directory, true, true});
   const std::string log = read_text(part.directory + "/anvil.log");
   CHECK(log.find("resuming with 2 change(s) since the checkpoint (--allow-changes):") != std::string::npos);
   CHECK(log.find("  dies[0].friction.law: ") != std::string::npos);

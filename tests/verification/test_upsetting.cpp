@@ -5,9 +5,9 @@
 
 #include "anvil/core/log.h"
 #include "anvil/material/homogeneous_compression.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/RunState.h"
-#include "anvil/scene/Simulation.h"
 #include "run_outputs.h"
 
 #include <cmath>

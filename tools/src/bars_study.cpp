@@ -7,8 +7,8 @@
 // and against wall time (DIR/bars_dofs.png, DIR/bars_time.png).
 #include "anvil/core/log.h"
 #include "anvil/io/RunResults.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
-#include "anvil/scene/Simulation.h"
 #include "anvil/solver/PetscSession.h"
 
 #include <cmath>
@@ -34,7 +34,7 @@ Result run(int lower_cells, int upper_cells, const std::string& formulation, con
                                "bodies[1].mesh.element_size=" + std::to_string(2.0 / upper_cells),
                                "contact_pairs[0].formulation=" + formulation});
   std::filesystem::remove_all(out);
-  anvil::scene::run(c, {out});
+  anvil::run::run(c, {out});
   return {anvil::io::read_loads(out, "top").back().force.z(), anvil::io::read_summary_number(out, "unknowns"),
           anvil::io::read_summary_number(out, "total"),
           static_cast<int>(anvil::io::read_summary_number(out, "newton_iterations"))};

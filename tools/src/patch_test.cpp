@@ -208,7 +208,7 @@ void curved_table(const std::string& out) {
                                                           "contact_pairs[0].formulation=" + std::string(formulation),
                                                           "contact_pairs[0].integration=" + std::string(integration)});
           std::filesystem::remove_all(dir);
-          anvil::scene::run(c, {dir});
+          anvil::run::run(c, {dir});
           const std::vector<anvil::io::InterfaceRow> rows = anvil::io::read_interface(dir);
           const double force = std::abs(anvil::io::read_loads(dir, "support").back().force.x());
           const patch_test::HertzErrors e = patch_test::compare_with_hertz(rows, force, master);

@@ -4,8 +4,8 @@
 #include "signature.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
-#include "anvil/scene/Simulation.h"
 #include "anvil/solver/PetscSession.h"
 
 #include <cstdio>
@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   try {
     anvil::log::set_quiet(true);
     std::filesystem::remove_all(argv[2]);
-    anvil::scene::run(signature::read_case(argv[1]), {argv[2]});
+    anvil::run::run(signature::read_case(argv[1]), {argv[2]});
     std::fputs(signature::to_csv(signature::of_run(argv[2])).c_str(), stdout);
     return 0;
   } catch (const std::exception& e) {

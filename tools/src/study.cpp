@@ -25,8 +25,8 @@
 #include "anvil/io/RunResults.h"
 #include "anvil/io/atomic_file.h"
 #include "anvil/material/homogeneous_compression.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
-#include "anvil/scene/Simulation.h"
 #include "anvil/solver/PetscSession.h"
 
 #include <algorithm>
@@ -212,7 +212,7 @@ public:
     std::printf("run %zu: %s ... ", runs_.size() + 1, label.c_str());
     std::fflush(stdout);
     const auto start = std::chrono::steady_clock::now();
-    scene::run(c, {r.directory});
+    run::run(c, {r.directory});
     r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.increments = static_cast<int>(io::read_summary_number(r.directory, "increments"));
     r.newton_iterations = static_cast<int>(io::read_summary_number(r.directory, "newton_iterations"));

@@ -6,7 +6,6 @@
 #include "anvil/core/Timers.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"
-#include "anvil/scene/TimeStep.h"
 
 #include <span>
 #include <string>
@@ -38,12 +37,10 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
 /// and inside_dies updated. `touching_die` (per node of state.mesh: the die
 /// it presses on, or −1) and `rate` (ε̄̇ per element of state.mesh) are those
 /// of the increment just accepted. The run must then be discretised again.
-/// With remeshing.check_load, the press load of the increment `next` solved
-/// on the old mesh and on the new one goes into the records (a measurement,
-/// on copies: the run goes on as without it). Several processes: rank 0
+/// `next_step` (s) is the length of the increment that follows, which the
+/// remesh looks ahead over (elements that would invert in it). Several processes: rank 0
 /// remeshes and sends the new state to the others (io::share_state).
 void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
-            std::span<const int> touching_die, std::span<const double> rate, const scene::TimeStep& next,
-            Timers& timers);
+            std::span<const int> touching_die, std::span<const double> rate, double next_step, Timers& timers);
 
 } // namespace anvil::remesh

@@ -3,8 +3,8 @@
 #include "test_common.h"
 
 #include "anvil/core/error.h"
+#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
-#include "anvil/scene/Simulation.h"
 
 #include <filesystem>
 #include <fstream>
@@ -85,7 +85,7 @@ TEST_CASE("an input error leaves no output behind", "[unit]") {
   std::filesystem::remove_all(out);
   // The face selection is checked only once the mesh exists: still before any file is written.
   const scene::Case c = scene::read_case(write_case("tag.yaml", replaced(kValid, "tag: 6", "tag: 42")));
-  CHECK_THROWS_WITH(scene::run(c, {out.string()}),
+  CHECK_THROWS_WITH(run::run(c, {out.string()}),
                     Catch::Contains("selects no boundary face") && Catch::Contains("tag 42"));
   CHECK_FALSE(std::filesystem::exists(out));
 }

@@ -1,16 +1,18 @@
-#include "anvil/scene/Increment.h"
+#include "anvil/run/Increment.h"
 
 #include "anvil/core/log.h"
 
 #include "anvil/contact/contact_scales.h"
 #include "anvil/mesh/tet_geometry.h"
-#include "anvil/scene/TimeStepControl.h"
+#include "anvil/run/TimeStepControl.h"
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
-namespace anvil::scene {
+namespace anvil::run {
+
+using namespace scene; // the loop runs on the scene's types throughout
 namespace {
 
 /// The external vector of an increment of `dt`: the boundary tractions, and
@@ -345,4 +347,32 @@ void accept_without_motion(const Scene& scene, const IncrementOutcome& inc, RunS
   append_loads(scene, state.dies, 1, 0.0, inc.forces, state.loads);
 }
 
-} // namespace anvil::scene
+Advance advance(const Scene& scene, Discretisation& disc, RunState& state, const TimeStepControl& clock, TimeStep step,
+                Timers& timers) {
+  IncrementOutcome inc = solve_coupled(scene, disc, state, step, timers);
+  bool second_budget = true;
+  for (int cuts = 0; !inc.converged() || !accept_increment(scene, disc, inc, state, timers);) {
+    if (inc.report.interrupted) return {Advance::End::interrupted, std::move(inc)};
+    const bool on_its_way = inc.report.on_its_way();
+    const fem::BodyUnknowns stopped_at = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};
+    solver::NewtonReport first_budget;
+    if (on_its_way && second_budget) {
+      second_budget = false;
+      log::info("  increment %d: %s, the residual falling (%.3g to %.3g); going on from there with the same dt",
+                state.increment + 1, inc.failure.c_str(), inc.report.iterations.front().force_residual,
+                inc.report.iterations.back().force_residual);
+      first_budget = std::move(inc.report);
+    } else {
+      const std::optional<double> shorter = clock.cut(inc.time_step, cuts++);
+      if (!shorter) return {Advance::End::failed, std::move(inc)};
+      step.length = *shorter;
+      log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1,
+                inc.failure.c_str(), step.length, cuts, scene.input.time.max_cuts);
+    }
+    inc = solve_coupled(scene, disc, state, step, timers, on_its_way ? &stopped_at : nullptr);
+    inc.report.continues(first_budget);
+  }
+  return {Advance::End::accepted, std::move(inc)};
+}
+
+} // namespace anvil::run

@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace anvil::scene {
+namespace anvil::run {
 
 struct RunOptions {
   std::string output_directory; ///< overrides the case's when not empty
@@ -30,9 +30,9 @@ struct RunEnd {
 /// Returns when the run ends, its outputs written; throws InputError for bad
 /// input (before any result file is written) and RunError when the solve or
 /// a write fails.
-RunEnd run(const Case& c, const RunOptions& options);
+RunEnd run(const scene::Case& c, const RunOptions& options);
 
 /// The folder a run of `c` writes to.
-std::string output_directory(const Case& c, const RunOptions& options);
+std::string output_directory(const scene::Case& c, const RunOptions& options);
 
-} // namespace anvil::scene
+} // namespace anvil::run

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-namespace anvil::scene {
+namespace anvil::run {
 
 /// Why a run stops.
 struct Stop {
@@ -20,37 +20,37 @@ struct Stop {
 class TimeStepControl {
 public:
   /// Reads the scene's time section; `scene` must outlive the control.
-  explicit TimeStepControl(const Scene& scene);
+  explicit TimeStepControl(const scene::Scene& scene);
 
   /// The next increment from `state`: the nominal step, shortened so that no
   /// node moves more than max_displacement × its local element size (at the
   /// velocity of the last increment), and so that a stop criterion is met
   /// exactly, without a sliver of an increment before it.
-  TimeStep next_step(const RunState& state) const;
+  scene::TimeStep next_step(const scene::RunState& state) const;
   /// Δt after a failed try of `length`, or nothing when `cuts_done` halvings
   /// were made already (time.max_cuts).
   std::optional<double> cut(double length, int cuts_done) const;
   /// Whether a free node reaching a die at time `touch` (s) into `step` ends
   /// the increment there: not when it leaves a sliver of the step, below
   /// min_step_fraction of the planned Δt, before or after it.
-  bool ends_at_contact(const TimeStep& step, double touch) const;
+  bool ends_at_contact(const scene::TimeStep& step, double touch) const;
   /// Whether and why the run stops at `state`: a stop criterion met
   /// (complete), or one that can no longer be met (a stroke die come to
   /// rest, dies that no longer close on a gap stop) or time.max_increments
   /// reached first (not complete).
-  Stop stop(const RunState& state) const;
+  Stop stop(const scene::RunState& state) const;
   /// The stop criteria and where `state` stands against them, e.g.
   /// "final stroke 1 mm of die 'top', at 0.5 mm".
-  std::string describe_stop(const RunState& state) const;
+  std::string describe_stop(const scene::RunState& state) const;
   /// Fraction of the run done at `state` (the stop criterion nearest to being met).
-  double progress(const RunState& state) const;
+  double progress(const scene::RunState& state) const;
 
 private:
   /// Speed of the fastest moving part at the current press time (mm/s).
-  double press_speed(const RunState& state) const;
+  double press_speed(const scene::RunState& state) const;
 
-  const Scene& scene_;
-  const TimeSpec& time_;
+  const scene::Scene& scene_;
+  const scene::TimeSpec& time_;
 };
 
-} // namespace anvil::scene
+} // namespace anvil::run

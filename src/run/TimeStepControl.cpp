@@ -1,4 +1,4 @@
-#include "anvil/scene/TimeStepControl.h"
+#include "anvil/run/TimeStepControl.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace anvil::scene {
+namespace anvil::run {
+
+using namespace scene; // the loop runs on the scene's types throughout
 namespace {
 
 /// Mean length of the edges at each node (mm): the local element size.
@@ -153,4 +155,4 @@ double TimeStepControl::progress(const RunState& state) const {
   return f;
 }
 
-} // namespace anvil::scene
+} // namespace anvil::run

@@ -1,7 +1,7 @@
 // The time loop (docs/design.md §4): choose Δt → solve the increment → accept it →
 // remesh if due → write. A case without a `time` section is one increment on
 // the initial geometry.
-#include "anvil/scene/Simulation.h"
+#include "anvil/run/Simulation.h"
 
 #include "anvil/core/Timers.h"
 #include "anvil/core/error.h"
@@ -12,10 +12,11 @@
 #include "anvil/io/RunWriter.h"
 #include "anvil/io/load_plot.h"
 #include "anvil/remesh/Remesher.h"
+#include "anvil/run/Increment.h"
+#include "anvil/run/TimeStepControl.h"
+#include "anvil/run/load_check.h"
 #include "anvil/scene/Discretisation.h"
-#include "anvil/scene/Increment.h"
 #include "anvil/scene/Scene.h"
-#include "anvil/scene/TimeStepControl.h"
 #include "anvil/scene/fingerprint.h"
 #include "anvil/solver/PetscSession.h"
 
@@ -28,7 +29,9 @@
 #include <limits>
 #include <numeric>
 
-namespace anvil::scene {
+namespace anvil::run {
+
+using namespace scene; // the loop runs on the scene's types throughout
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -296,42 +299,16 @@ RunEnd run(const Case& c, const RunOptions& options) {
   while (!(stop = clock.stop(state))) {
     if (const int signal = interrupt::requested()) return interrupted(signal);
     const Clock::time_point increment_start = Clock::now();
-    TimeStep step = clock.next_step(state);
-    IncrementOutcome inc = solve_coupled(scene, disc, state, step, timers);
-    // A failed try leaves the state as it was. Newton that ran out of
-    // iterations while its residual fell goes on from where it stopped: once
-    // with the same Δt (a cut would put this run's increments at other
-    // strokes than a run whose round-off let Newton finish in its budget),
-    // then with half the Δt tried (the flow hardly depends on Δt: from rest,
-    // not at all; starting again from the state would walk the same path).
-    bool second_budget = true;
-    for (int cuts = 0; !inc.converged() || !accept_increment(scene, disc, inc, state, timers);) {
-      if (inc.report.interrupted) return interrupted(interrupt::requested());
-      const bool on_its_way = inc.report.on_its_way();
-      const fem::BodyUnknowns stopped_at = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};
-      solver::NewtonReport first_budget;
-      if (on_its_way && second_budget) {
-        second_budget = false;
-        log::info("  increment %d: %s, the residual falling (%.3g to %.3g); going on from there with the same dt",
-                  state.increment + 1, inc.failure.c_str(), inc.report.iterations.front().force_residual,
-                  inc.report.iterations.back().force_residual);
-        first_budget = std::move(inc.report);
-      } else {
-        const std::optional<double> shorter = clock.cut(inc.time_step, cuts++);
-        if (!shorter) {
-          finish(scene, disc, state, writer, last, timers, start);
-          throw RunError("increment " + std::to_string(state.increment + 1) + " at t = " + std::to_string(state.time) +
-                         " s: " + inc.failure + " after " + std::to_string(c.time.max_cuts) +
-                         " time-step cuts, heading for the stop criterion (" + clock.describe_stop(state) +
-                         "); the last good increment (" + std::to_string(state.increment) +
-                         ") is written and checkpointed in " + out);
-        }
-        step.length = *shorter;
-        log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1,
-                  inc.failure.c_str(), step.length, cuts, c.time.max_cuts);
-      }
-      inc = solve_coupled(scene, disc, state, step, timers, on_its_way ? &stopped_at : nullptr);
-      inc.report.continues(first_budget);
+    Advance advanced = advance(scene, disc, state, clock, clock.next_step(state), timers);
+    if (advanced.end == Advance::End::interrupted) return interrupted(interrupt::requested());
+    IncrementOutcome& inc = advanced.increment;
+    if (advanced.end == Advance::End::failed) {
+      finish(scene, disc, state, writer, last, timers, start);
+      throw RunError("increment " + std::to_string(state.increment + 1) + " at t = " + std::to_string(state.time) +
+                     " s: " + inc.failure + " after " + std::to_string(c.time.max_cuts) +
+                     " time-step cuts, heading for the stop criterion (" + clock.describe_stop(state) +
+                     "); the last good increment (" + std::to_string(state.increment) +
+                     ") is written and checkpointed in " + out);
     }
     last = inc.report;
     last_step = inc.time_step;
@@ -342,8 +319,8 @@ RunEnd run(const Case& c, const RunOptions& options) {
     if (c.remeshing.enabled && !clock.stop(state)) {
       const std::vector<remesh::RemeshDue> due = remesh::remesh_due(scene, state, inc.time_step);
       if (!due.empty()) {
-        remesh::remesh(scene, state, due, disc.touching_die(state.unknowns.nodal), inc.fields.rate,
-                       clock.next_step(state), timers);
+        remesh_checking_load(scene, state, due, disc.touching_die(state.unknowns.nodal), inc.fields.rate,
+                             clock.next_step(state), timers);
         disc = discretise(scene, state, timers);
       }
     }
@@ -361,4 +338,4 @@ RunEnd run(const Case& c, const RunOptions& options) {
   return {stop.reason, true};
 }
 
-} // namespace anvil::scene
+} // namespace anvil::run

@@ -4,9 +4,9 @@
 #include "test_common.h"
 
 #include "anvil/core/Timers.h"
+#include "anvil/run/TimeStepControl.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Scene.h"
-#include "anvil/scene/TimeStepControl.h"
 
 #include <cmath>
 
@@ -29,7 +29,7 @@ struct Upsetting {
 TEST_CASE("TimeStepControl plans the nominal step, limits it by the fastest node, and meets the stop in equal steps",
           "[unit][scene]") {
   Upsetting u({"time.max_displacement=0.2"});
-  const scene::TimeStepControl control(u.scene);
+  const run::TimeStepControl control(u.scene);
   const double nominal = 0.15 / 10.0; // stroke increment / die speed (s)
 
   scene::TimeStep step = control.next_step(u.state);
@@ -58,7 +58,7 @@ TEST_CASE("TimeStepControl halves a failed step time.max_cuts times, and ends a 
           "ends",
           "[unit][scene]") {
   Upsetting u({"time.max_cuts=3", "time.min_step_fraction=0.1"});
-  const scene::TimeStepControl control(u.scene);
+  const run::TimeStepControl control(u.scene);
   double dt = 0.016;
   for (int cuts = 0; cuts < 3; ++cuts) {
     const std::optional<double> shorter = control.cut(dt, cuts);
@@ -77,14 +77,14 @@ TEST_CASE("TimeStepControl halves a failed step time.max_cuts times, and ends a 
 TEST_CASE("TimeStepControl stops at the final stroke (complete) and at time.max_increments (not complete)",
           "[unit][scene]") {
   Upsetting u({"time.max_increments=40"});
-  const scene::TimeStepControl control(u.scene);
+  const run::TimeStepControl control(u.scene);
   CHECK_FALSE(control.stop(u.state));
   CHECK(control.progress(u.state) == 0.0);
 
   u.state.dies[0].stroke = 3.75;
   CHECK(control.progress(u.state) == Approx(0.5));
   u.state.increment = 40;
-  const scene::Stop early = control.stop(u.state);
+  const run::Stop early = control.stop(u.state);
   REQUIRE(early);
   CHECK_FALSE(early.complete);
   CHECK(early.reason.find("time.max_increments (40)") != std::string::npos);
@@ -92,7 +92,7 @@ TEST_CASE("TimeStepControl stops at the final stroke (complete) and at time.max_
 
   u.state.increment = 39;
   u.state.dies[0].stroke = 7.5;
-  const scene::Stop done = control.stop(u.state);
+  const run::Stop done = control.stop(u.state);
   REQUIRE(done);
   CHECK(done.complete);
   CHECK(done.reason == "final stroke reached");
