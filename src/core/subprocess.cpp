@@ -13,14 +13,21 @@
 extern char** environ;
 
 namespace anvil::subprocess {
+namespace {
+/// execve's argv over `arguments` (which must outlive it), null-terminated.
+std::vector<char*> argument_vector(std::vector<std::string>& arguments) {
+  std::vector<char*> argv;
+  for (std::string& a : arguments)
+    argv.push_back(a.data());
+  argv.push_back(nullptr);
+  return argv;
+}
+} // namespace
 
 int run(const std::vector<std::string>& arguments, const Options& options) {
   if (arguments.empty()) return -1;
   std::vector<std::string> copy = arguments;
-  std::vector<char*> argv;
-  for (std::string& a : copy)
-    argv.push_back(a.data());
-  argv.push_back(nullptr);
+  const std::vector<char*> argv = argument_vector(copy);
 
   int pipe_ends[2] = {-1, -1};
   const bool feed = !options.input.empty();
@@ -72,10 +79,7 @@ void relay(int signal) {
 int run_relaying_interrupts(const std::vector<std::string>& arguments) {
   if (arguments.empty()) return -1;
   std::vector<std::string> copy = arguments;
-  std::vector<char*> argv;
-  for (std::string& a : copy)
-    argv.push_back(a.data());
-  argv.push_back(nullptr);
+  const std::vector<char*> argv = argument_vector(copy);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSID);

@@ -9,6 +9,7 @@
 //   anvil_conrod_die dies/conrod.yaml
 // The STL files go next to the YAML file. Normals point out of the die.
 #include "anvil/core/error.h"
+#include "yaml_number.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -136,11 +137,6 @@ double half_part_volume(const Conrod& c) {
   return volume;
 }
 
-double number(const YAML::Node& root, const std::string& file, const char* key) {
-  if (!root[key]) throw anvil::InputError(file + ": missing key '" + key + "'");
-  return root[key].as<double>();
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -151,7 +147,7 @@ int main(int argc, char** argv) {
   const std::string file = argv[1];
   try {
     const YAML::Node root = YAML::LoadFile(file);
-    auto n = [&](const char* key) { return number(root, file, key); };
+    auto n = [&](const char* key) { return yaml_number(root, file, key); };
     const Conrod c{n("big_radius"),   n("big_height"),  n("small_radius"), n("small_height"), n("centres"),
                    n("shank_big"),    n("shank_small"), n("web_height"),   n("rib_height"),   n("rib_width"),
                    n("draft"),        n("fillet"),      n("flash_gap"),    n("land_width"),   n("gutter_depth"),

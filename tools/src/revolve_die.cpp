@@ -6,6 +6,7 @@
 //   anvil_revolve_die dies/hub_flange.yaml
 // The STL files go next to the YAML file. Normals point out of the die.
 #include "anvil/core/error.h"
+#include "yaml_number.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -106,11 +107,6 @@ void write_stl(const std::string& path, const std::string& name, const std::vect
   if (!out) throw anvil::InputError(path + ": write failed");
 }
 
-double number(const YAML::Node& node, const std::string& file, const char* key) {
-  if (!node[key]) throw anvil::InputError(file + ": missing key '" + key + "'");
-  return node[key].as<double>();
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -132,7 +128,7 @@ int main(int argc, char** argv) {
     const std::vector<Point2> surface = rounded(profile, root["fillet"] ? root["fillet"].as<double>() : 0.0);
     const YAML::Node sector = root["sector"];
     const double from = sector[0].as<double>(), to = sector[1].as<double>();
-    const double segment = number(root, file, "segment_angle");
+    const double segment = yaml_number(root, file, "segment_angle");
     const std::filesystem::path folder = std::filesystem::path(file).parent_path();
     for (const YAML::Node& die : root["dies"]) {
       const std::string stl = (folder / die["stl"].as<std::string>()).string();
