@@ -13,21 +13,26 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <memory>
 
 namespace anvil::remesh {
 namespace {
 
-/// Barycentric coordinates of x in tet `e`, clamped to the tet (negative ones
-/// set to zero and the rest rescaled): exact inside, the nearest sensible
-/// weights just outside.
+/// Barycentric coordinates of x in tet `e` (negative outside).
 std::array<double, 4> barycentric(const mesh::TetMesh& m, int e, const mesh::Point& x) {
   const mesh::Tet& t = m.tets[e];
   Eigen::Matrix3d jacobian;
   for (int k = 0; k < 3; ++k)
     jacobian.col(k) = m.nodes[t[k + 1]] - m.nodes[t[0]];
   const Eigen::Vector3d local = jacobian.partialPivLu().solve(x - m.nodes[t[0]]);
-  std::array<double, 4> w{1.0 - local.sum(), local[0], local[1], local[2]};
+  return {1.0 - local.sum(), local[0], local[1], local[2]};
+}
+
+/// `w` clamped to the tet (negative weights set to zero and the rest
+/// rescaled): unchanged inside, the nearest sensible weights just outside.
+std::array<double, 4> clamped(std::array<double, 4> w) {
   double sum = 0.0;
   for (double& v : w)
     sum += (v = std::max(v, 0.0));
@@ -36,6 +41,9 @@ std::array<double, 4> barycentric(const mesh::TetMesh& m, int e, const mesh::Poi
   return w;
 }
 
+/// Weights of a point this far outside a tet (relative) still count as inside.
+constexpr double kOnFace = 1e-12;
+
 } // namespace
 
 struct PointLocator::Vtk {
@@ -43,6 +51,7 @@ struct PointLocator::Vtk {
   vtkNew<vtkStaticCellLocator> locator;
   vtkNew<vtkGenericCell> cell; ///< scratch for the queries
   vtkNew<vtkIdList> found;     ///< scratch for the box queries
+  std::vector<int> candidates; ///< scratch for locate
 };
 
 PointLocator::PointLocator(const mesh::TetMesh& old_mesh) : mesh_(old_mesh), vtk_(std::make_unique<Vtk>()) {
@@ -64,12 +73,43 @@ PointLocator::PointLocator(const mesh::TetMesh& old_mesh) : mesh_(old_mesh), vtk
 PointLocator::~PointLocator() = default;
 
 Location PointLocator::locate(const mesh::Point& p) const {
-  double x[3] = {p.x(), p.y(), p.z()}, pcoords[3], weights[4], closest[3], distance2;
+  // VTK's static locator lists a bin's cells in an order that changes with
+  // its threads (its SMP sort), so which of the tets sharing a face FindCell
+  // returns, or which of two equally close ones FindClosestPoint does, is not
+  // reproducible. The tets are chosen here by one rule: the most inside one,
+  // else the nearest, ties to the lowest index.
+  std::vector<int>& candidates = vtk_->candidates;
+  tets_in_box(p, p, candidates);
+  int best = -1;
+  double most_inside = -std::numeric_limits<double>::infinity();
+  for (const int e : candidates) {
+    const std::array<double, 4> w = barycentric(mesh_, e, p);
+    const double lowest = *std::min_element(w.begin(), w.end());
+    if (lowest > most_inside || (lowest == most_inside && e < best)) most_inside = lowest, best = e;
+  }
+  if (best >= 0 && most_inside >= -kOnFace) return {best, clamped(barycentric(mesh_, best, p)), true};
+  // Outside the mesh (a boundary node a hair off the old surface): the tets
+  // within VTK's closest distance, and among them the nearest by the clamped
+  // weights' point.
+  double x[3] = {p.x(), p.y(), p.z()}, closest[3], distance2 = 0.0;
+  vtkIdType tet = -1;
   int sub = 0;
-  vtkIdType tet = vtk_->locator->FindCell(x, 0.0, vtk_->cell.GetPointer(), pcoords, weights);
-  const bool inside = tet >= 0;
-  if (!inside) vtk_->locator->FindClosestPoint(x, closest, vtk_->cell.GetPointer(), tet, sub, distance2);
-  return {static_cast<int>(tet), barycentric(mesh_, static_cast<int>(tet), p), inside};
+  vtk_->locator->FindClosestPoint(x, closest, vtk_->cell.GetPointer(), tet, sub, distance2);
+  const double reach = std::sqrt(distance2) * (1.0 + 1e-9) + 1e-12;
+  tets_in_box(p - mesh::Point::Constant(reach), p + mesh::Point::Constant(reach), candidates);
+  best = -1;
+  double nearest = std::numeric_limits<double>::infinity();
+  std::array<double, 4> weights{};
+  for (const int e : candidates) {
+    const std::array<double, 4> w = clamped(barycentric(mesh_, e, p));
+    mesh::Point at = mesh::Point::Zero();
+    for (int a = 0; a < 4; ++a)
+      at += w[a] * mesh_.nodes[mesh_.tets[e][a]];
+    const double d = (at - p).squaredNorm();
+    if (d < nearest || (d == nearest && e < best)) nearest = d, best = e, weights = w;
+  }
+  if (best < 0) return {static_cast<int>(tet), clamped(barycentric(mesh_, static_cast<int>(tet), p)), false};
+  return {best, weights, false};
 }
 
 std::vector<Location> PointLocator::locate(const std::vector<mesh::Point>& points) const {
@@ -86,6 +126,7 @@ void PointLocator::tets_in_box(const mesh::Point& low, const mesh::Point& high, 
   tets.resize(vtk_->found->GetNumberOfIds());
   for (vtkIdType k = 0; k < vtk_->found->GetNumberOfIds(); ++k)
     tets[k] = static_cast<int>(vtk_->found->GetId(k));
+  std::sort(tets.begin(), tets.end()); // VTK's order is not reproducible (see locate)
 }
 
 std::vector<mesh::Point> centroids(const mesh::TetMesh& m) {

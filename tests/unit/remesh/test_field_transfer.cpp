@@ -91,3 +91,29 @@ TEST_CASE("A peak smaller than the new elements keeps its value", "[unit][remesh
   CHECK(remesh::integral(new_mesh, moved) - remesh::integral(old_mesh, strain) ==
         Approx((2.0 - remapped[changed]) * mesh::signed_volume(new_mesh, changed)).epsilon(1e-9));
 }
+
+TEST_CASE("A point is located by one rule, whatever order VTK lists the tets in", "[unit][remesh]") {
+  // VTK's static locator builds its bins with threads: the order it lists a
+  // bin's tets in, and so which tet FindCell returns for a point on a face
+  // they share, changed from run to run and with the thread count (the
+  // closed-die runs' remeshes then parted at round-off). The rule: the most
+  // inside tet, ties to the lowest index; outside, the nearest, ties alike.
+  const mesh::TetMesh mesh = mesh::make_box({0, 0, 0}, {2, 2, 2}, {2, 2, 2});
+  const remesh::PointLocator locator(mesh);
+  const mesh::Point vertex(1, 1, 1); // a node every central tet shares
+  std::vector<int> sharing;
+  for (int e = 0; e < mesh.tet_count(); ++e)
+    for (const int n : mesh.tets[e])
+      if (mesh.nodes[n] == vertex) sharing.push_back(e);
+  REQUIRE(sharing.size() > 2);
+  const remesh::Location at = locator.locate(vertex);
+  CHECK(at.inside);
+  CHECK(at.tet == sharing.front()); // all contain it equally (weights 0, 0, 0, 1): the lowest index
+  std::vector<int> listed;
+  locator.tets_in_box({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5}, listed);
+  CHECK(std::is_sorted(listed.begin(), listed.end()));
+  // Outside, beyond a face: the nearest tet, found again alike.
+  const remesh::Location outside = locator.locate({1.0, 1.0, 2.5});
+  CHECK_FALSE(outside.inside);
+  CHECK(outside.tet == locator.locate({1.0, 1.0, 2.5}).tet);
+}
