@@ -39,14 +39,6 @@ struct Signature {
   std::vector<Row> rows;
 };
 
-inline std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> fields;
-  std::istringstream s(line);
-  for (std::string f; std::getline(s, f, ',');)
-    fields.push_back(f);
-  return fields;
-}
-
 /// The signature of the run in `directory`.
 inline Signature of_run(const std::string& directory) {
   Signature sig;
@@ -56,7 +48,7 @@ inline Signature of_run(const std::string& directory) {
   std::string line;
   std::getline(csv, line);
   while (std::getline(csv, line)) {
-    const std::vector<std::string> f = split(line);
+    const std::vector<std::string> f = anvil::io::csv_fields(line);
     if (f.size() != anvil::io::kLoadsColumns)
       throw anvil::InputError(directory + "/loads.csv: a row without " + std::to_string(anvil::io::kLoadsColumns) +
                               " fields: " + line);
@@ -108,11 +100,11 @@ inline Signature read_csv(const std::string& path) {
   Signature sig;
   std::string line;
   std::getline(in, line);
-  const std::vector<std::string> header = split(line);
+  const std::vector<std::string> header = anvil::io::csv_fields(line);
   for (std::size_t k = 5; k < header.size(); ++k)
     sig.surfaces.push_back(header[k].substr(5, header[k].size() - 7));
   while (std::getline(in, line)) {
-    const std::vector<std::string> f = split(line);
+    const std::vector<std::string> f = anvil::io::csv_fields(line);
     if (f.size() != header.size()) throw anvil::InputError(path + ": a row of another width: " + line);
     Row r{std::stoi(f[0]), std::stod(f[1]), std::stod(f[2]), std::stod(f[3]), std::stoi(f[4]), {}};
     for (std::size_t k = 5; k < f.size(); ++k)

@@ -62,7 +62,11 @@ usage:
   anvil render DIR [--field NAME] [--view iso|front|top] [--frames N]
                                  quick-look PNGs of a run's VTK series in
                                  DIR/render/ (headless: under xvfb-run when
-                                 there is no display)
+                                 there is no display); a die field
+                                 (--field underfill) colours the dies;
+                                 --range LOW HIGH fixes the colour bar;
+                                 --flow-lines draws a cut through the part
+                                 with its flow lines (output.flow_lines)
   anvil --schema                 every case-file and material-card key: type,
                                  default, range, unit, meaning
   anvil --list                   the effects a scene can call for

@@ -6,11 +6,13 @@
 // /boundary_tags, /nodal (4n), /bubble (3m), /equivalent_strain (m),
 // /elastic_stress (m×6, or empty), /body_ranges (b×6), /remeshes (r×13; r×12
 // in format 3, before the material kept; r×10 in format 2, before the load check),
-// /dies (d×6), /loads (r×7), /iterations (i×2), /outputs (k×2) with
+// /dies (d×6), /loads (r×7), /die_fill (r×2, NaN where not measured; absent
+// before it was kept), /iterations (i×2), /outputs (k×2) with
 // /output_files (strings), /fingerprint (strings: the case, as a resumed run
 // compares it), /temperature (n, thermal scenes; empty otherwise) and /heat
 // (8: the heat budget and the transfer time done; both absent before they
-// were kept), scalar attributes on the root group.
+// were kept), /material_position (n×3, flow lines; empty otherwise, absent
+// before them), scalar attributes on the root group.
 #include "anvil/io/Checkpoint.h"
 
 #include "anvil/core/error.h"
@@ -225,8 +227,14 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
       loads.insert(loads.end(),
                    {double(r.increment), r.time, double(r.surface), r.stroke, r.force.x(), r.force.y(), r.force.z()});
     write_array(file, "loads", H5T_NATIVE_DOUBLE, loads.data(), s.loads.size(), 7);
+    std::vector<double> fills;
+    for (const LoadRecord& r : s.loads)
+      fills.insert(fills.end(), {r.contact_area, r.fill});
+    write_array(file, "die_fill", H5T_NATIVE_DOUBLE, fills.data(), s.loads.size(), 2);
     write_array(file, "iterations", H5T_NATIVE_INT, s.iterations.data(), s.iterations.size(), 2);
     write_array(file, "temperature", H5T_NATIVE_DOUBLE, s.temperature.data(), s.temperature.size(), 0);
+    write_array(file, "material_position", H5T_NATIVE_DOUBLE, s.material_position.data(),
+                s.material_position.size() / 3, 3);
     const scene::HeatBudget& h = s.heat;
     const std::array<double, 8> heat{h.plastic, h.friction,  h.to_dies,      h.to_environment,
                                      h.stored,  h.remeshing, h.initial_heat, s.transfer_time};
@@ -335,6 +343,21 @@ RunState read_state(hid_t file, const std::string& path) {
     s.loads.push_back(
         {int(loads[i]), loads[i + 1], int(loads[i + 2]), loads[i + 3], {loads[i + 4], loads[i + 5], loads[i + 6]}});
   }
+  if (H5Lexists(file, "die_fill", H5P_DEFAULT) > 0) { // absent in checkpoints written before it
+    std::vector<double> fills;
+    read_array(file, path, "die_fill", H5T_NATIVE_DOUBLE, fills, 2);
+    if (fills.size() != 2 * s.loads.size())
+      throw InputError(path + ": checkpoint dataset 'die_fill' has " + std::to_string(fills.size() / 2) +
+                       " records for " + std::to_string(s.loads.size()) + " loads (damaged file)");
+    for (std::size_t i = 0; i < s.loads.size(); ++i) {
+      const double area = fills[2 * i], share = fills[2 * i + 1];
+      const bool unmeasured = std::isnan(area) && std::isnan(share);
+      if (!unmeasured && !(area >= 0.0 && std::isfinite(area) && share >= 0.0 && share <= 1.0))
+        throw InputError(path + ": checkpoint dataset 'die_fill', record " + std::to_string(i + 1) +
+                         ": expected an area >= 0 and a share in [0, 1] (damaged file)");
+      s.loads[i].contact_area = area, s.loads[i].fill = share;
+    }
+  }
   if (H5Lexists(file, "iterations", H5P_DEFAULT) > 0) { // absent in checkpoints written before it
     std::vector<int> iterations;
     read_array(file, path, "iterations", H5T_NATIVE_INT, iterations, 2);
@@ -370,8 +393,11 @@ RunState read_state(hid_t file, const std::string& path) {
     s.heat = {heat[0], heat[1], heat[2], heat[3], heat[4], heat[5], heat[6]};
     s.transfer_time = heat[7];
   }
+  if (H5Lexists(file, "material_position", H5P_DEFAULT) > 0) // absent before flow lines
+    read_finite_array(file, path, "material_position", s.material_position, 3);
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
       (!s.temperature.empty() && s.temperature.size() != s.mesh.nodes.size()) ||
+      (!s.material_position.empty() && s.material_position.size() != 3 * s.mesh.nodes.size()) ||
       s.equivalent_strain.size() != s.mesh.tets.size() ||
       (!s.elastic_stress.empty() && s.elastic_stress.size() != 6 * s.mesh.tets.size()) ||
       s.mesh.boundary_tags.size() != s.mesh.boundary_faces.size())

@@ -20,22 +20,20 @@ namespace anvil::io {
 namespace {
 
 /// Calls `parse(columns)` for each data row of the CSV file `path` (header
-/// skipped); a row without `count` columns, or that `parse` cannot read,
-/// is an InputError naming file, line and the `header` expected.
+/// skipped); a row without `count` (or `older_count`) columns, or that
+/// `parse` cannot read, is an InputError naming file, line and the `header`
+/// expected.
 template <class Parse>
-void for_each_csv_row(const std::string& path, std::size_t count, const char* header, Parse parse) {
+void for_each_csv_row(const std::string& path, std::size_t count, const char* header, Parse parse,
+                      std::size_t older_count = 0) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file");
   std::string line;
   std::getline(in, line); // header
-  std::vector<std::string> cols;
   for (int number = 2; std::getline(in, line); ++number) {
-    cols.clear();
-    std::istringstream split(line);
-    for (std::string col; std::getline(split, col, ',');)
-      cols.push_back(col);
+    const std::vector<std::string> cols = csv_fields(line);
     try {
-      if (cols.size() != count) throw std::invalid_argument("columns");
+      if (cols.size() != count && cols.size() != older_count) throw std::invalid_argument("columns");
       parse(cols);
     } catch (const std::exception&) {
       throw InputError(where(path, number) + ": expected " + header + ", got '" + line + "'");
@@ -43,26 +41,48 @@ void for_each_csv_row(const std::string& path, std::size_t count, const char* he
   }
 }
 
+/// A fill column: empty when not measured.
+double optional_number(const std::vector<std::string>& columns, std::size_t k) {
+  return k < columns.size() && !columns[k].empty() ? std::stod(columns[k]) : std::numeric_limits<double>::quiet_NaN();
+}
+
 } // namespace
+
+std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> fields;
+  std::size_t start = 0;
+  for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
+    fields.push_back(line.substr(start, comma - start));
+  fields.push_back(line.substr(start));
+  return fields;
+}
 
 std::vector<LoadRow> read_loads(const std::string& directory, const std::string& surface) {
   std::vector<LoadRow> rows;
-  for_each_csv_row(directory + "/loads.csv", kLoadsColumns, kLoadsHeader, [&](const std::vector<std::string>& c) {
-    if (c[2] == surface)
-      rows.push_back({std::stoi(c[0]),
-                      std::stod(c[1]),
-                      std::stod(c[3]),
-                      {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])},
-                      std::stod(c[7])});
-  });
+  for_each_csv_row(
+      directory + "/loads.csv", kLoadsColumns, kLoadsHeader,
+      [&](const std::vector<std::string>& c) {
+        if (c[2] == surface)
+          rows.push_back({std::stoi(c[0]),
+                          std::stod(c[1]),
+                          std::stod(c[3]),
+                          {std::stod(c[4]), std::stod(c[5]), std::stod(c[6])},
+                          std::stod(c[7]),
+                          optional_number(c, 8),
+                          optional_number(c, 9)});
+      },
+      kLoadsColumnsWithoutFill);
   return rows;
 }
 
 std::vector<std::string> read_load_surfaces(const std::string& directory) {
   std::vector<std::string> surfaces;
-  for_each_csv_row(directory + "/loads.csv", kLoadsColumns, kLoadsHeader, [&](const std::vector<std::string>& c) {
-    if (std::find(surfaces.begin(), surfaces.end(), c[2]) == surfaces.end()) surfaces.push_back(c[2]);
-  });
+  for_each_csv_row(
+      directory + "/loads.csv", kLoadsColumns, kLoadsHeader,
+      [&](const std::vector<std::string>& c) {
+        if (std::find(surfaces.begin(), surfaces.end(), c[2]) == surfaces.end()) surfaces.push_back(c[2]);
+      },
+      kLoadsColumnsWithoutFill);
   return surfaces;
 }
 

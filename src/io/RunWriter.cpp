@@ -29,7 +29,12 @@ void put_load_rows(std::ostream& out, const scene::Scene& scene, const std::vect
   for (std::size_t i = first; i < loads.size(); ++i) {
     const scene::LoadRecord& r = loads[i];
     out << r.increment << "," << r.time << "," << scene.surfaces[r.surface].name << "," << r.stroke << ","
-        << r.force.x() << "," << r.force.y() << "," << r.force.z() << "," << scene.whole_part_load(r) << "\n";
+        << r.force.x() << "," << r.force.y() << "," << r.force.z() << "," << scene.whole_part_load(r) << ",";
+    if (std::isfinite(r.contact_area))
+      out << r.contact_area << "," << r.fill;
+    else
+      out << ",";
+    out << "\n";
   }
 }
 
@@ -148,16 +153,29 @@ void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation
   std::vector<Field> point_fields{velocity, pressure};
   if (scene.has_contact()) point_fields.insert(point_fields.end(), {contact_status, contact_pressure, gap});
   if (!state.temperature.empty()) point_fields.push_back({"temperature", 1, state.temperature});
+  // Flow lines: the coordinate along the planes' normal where each node's
+  // material started, and the planes' levels (docs/reading-a-run.md §4).
+  std::vector<Field> field_data;
+  if (const int axis = scene.input.flow_line_axis; axis >= 0) {
+    Field started{std::string("material_") + char('x' + axis), 1, {}};
+    for (int i = 0; i < mesh.node_count(); ++i)
+      started.values.push_back(state.material_position[3 * i + axis]);
+    point_fields.push_back(std::move(started));
+    field_data.push_back({"flow_line_levels", 1, scene.flow_line_levels});
+  }
   std::string names = scene.bodies.front().name;
   for (std::size_t b = 1; b < scene.bodies.size(); ++b)
     names += "+" + scene.bodies[b].name;
-  series_.write(state.increment, state.time, 0, names, mesh, point_fields, cell_fields);
+  series_.write(state.increment, state.time, 0, names, mesh, point_fields, cell_fields, field_data);
+  std::vector<std::optional<contact::DieFill>> fills = scene::die_fills(scene, mesh, state.dies, true);
   for (std::size_t d = 0; d < scene.dies.size(); ++d) {
     const die::SurfaceTriangles& t = scene.dies[d].surface->triangles();
     std::vector<mesh::Point> moved = t.vertices;
     for (auto& p : moved)
       p += state.dies[d].displacement;
-    series_.write_surface(state.increment, state.time, int(d) + 1, scene.dies[d].name, moved, t.faces);
+    std::vector<Field> die_fields;
+    if (fills[d]) die_fields.push_back({"underfill", 1, std::move(fills[d]->underfill)});
+    series_.write_surface(state.increment, state.time, int(d) + 1, scene.dies[d].name, moved, t.faces, die_fields);
   }
 }
 
@@ -316,9 +334,24 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
     }
     json.end_array().end_object();
   }
+  // Die fill at the final geometry: the model's areas, and the whole part's
+  // (a symmetry model's die is that share of the whole die).
+  const std::vector<std::optional<contact::DieFill>> fills = scene::die_fills(scene, state.mesh, state.dies, false);
   json.key("dies").begin_array();
-  for (std::size_t d = 0; d < scene.dies.size(); ++d)
-    json.begin_object().member("name", scene.dies[d].name).member("stroke_mm", state.dies[d].stroke).end_object();
+  for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+    json.begin_object().member("name", scene.dies[d].name).member("stroke_mm", state.dies[d].stroke);
+    if (fills[d])
+      json.key("fill")
+          .begin_object()
+          .member("fill", fills[d]->fraction())
+          .member("contact_area_whole_part_mm2", scene.symmetry_copies * fills[d]->contact_area)
+          .member("region_area_whole_part_mm2", scene.symmetry_copies * fills[d]->region_area)
+          .member("contact_area_model_mm2", fills[d]->contact_area)
+          .member("region_area_model_mm2", fills[d]->region_area)
+          .member("tolerance_mm", scene::fill_tolerance(scene, int(d)))
+          .end_object();
+    json.end_object();
+  }
   // The press load (along z) of each load surface, of the whole part and of
   // the model (a symmetry model's share): its peak and its last value.
   json.end_array().member("model", scene.model_text()).member("symmetry_copies", scene.symmetry_copies);

@@ -45,27 +45,30 @@ VtkSeries::VtkSeries(std::string directory, std::string name)
 }
 
 void VtkSeries::write(int increment, double time, int body, const std::string& body_name, const mesh::TetMesh& mesh,
-                      const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields) {
+                      const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields,
+                      const std::vector<Field>& field_data) {
   std::vector<long> connectivity;
   connectivity.reserve(4 * mesh.tets.size());
   for (const mesh::Tet& t : mesh.tets)
     connectivity.insert(connectivity.end(), t.begin(), t.end());
-  write_grid(increment, time, body, body_name, mesh.nodes, VTK_TETRA, 4, connectivity, point_fields, cell_fields);
+  write_grid(increment, time, body, body_name, mesh.nodes, VTK_TETRA, 4, connectivity, point_fields, cell_fields,
+             field_data);
 }
 
 void VtkSeries::write_surface(int increment, double time, int part, const std::string& part_name,
-                              const std::vector<mesh::Point>& vertices, const std::vector<std::array<int, 3>>& faces) {
+                              const std::vector<mesh::Point>& vertices, const std::vector<std::array<int, 3>>& faces,
+                              const std::vector<Field>& point_fields) {
   std::vector<long> connectivity;
   connectivity.reserve(3 * faces.size());
   for (const auto& f : faces)
     connectivity.insert(connectivity.end(), f.begin(), f.end());
-  write_grid(increment, time, part, part_name, vertices, VTK_TRIANGLE, 3, connectivity, {}, {});
+  write_grid(increment, time, part, part_name, vertices, VTK_TRIANGLE, 3, connectivity, point_fields, {}, {});
 }
 
 void VtkSeries::write_grid(int increment, double time, int part, const std::string& part_name,
                            const std::vector<mesh::Point>& nodes, int cell_type, int nodes_per_cell,
                            const std::vector<long>& connectivity_in, const std::vector<Field>& point_fields,
-                           const std::vector<Field>& cell_fields) {
+                           const std::vector<Field>& cell_fields, const std::vector<Field>& field_data) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(nodes.size()));
@@ -85,6 +88,8 @@ void VtkSeries::write_grid(int increment, double time, int part, const std::stri
     grid->GetPointData()->AddArray(to_vtk(f, nodes.size()));
   for (const Field& f : cell_fields)
     grid->GetCellData()->AddArray(to_vtk(f, cell_count));
+  for (const Field& f : field_data)
+    grid->GetFieldData()->AddArray(to_vtk(f, f.values.size() / static_cast<std::size_t>(f.components)));
 
   char file[256];
   std::snprintf(file, sizeof file, "%s_%s_%06d.vtu", name_.c_str(), part_name.c_str(), increment);

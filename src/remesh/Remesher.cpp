@@ -173,11 +173,12 @@ double relative(double after, double before) {
 /// A body remeshed around its poor elements, with its fields.
 struct LocalRemesh {
   mesh::TetMesh mesh;
-  Eigen::VectorXd nodal;                                        ///< 4 a node: v, p
-  std::vector<double> strain;                                   ///< ε̄ a tet
-  Eigen::VectorXd temperature;                                  ///< a node; empty when isothermal
-  int rebuilt = 0;                                              ///< tets of the old mesh rebuilt
-  double worst = 1.0;                                           ///< worst quality of the rebuilt region
+  Eigen::VectorXd nodal;       ///< 4 a node: v, p
+  std::vector<double> strain;  ///< ε̄ a tet
+  Eigen::VectorXd temperature; ///< a node; empty when isothermal
+  Eigen::VectorXd material;    ///< 3 a node: where it started; empty without flow lines
+  int rebuilt = 0;             ///< tets of the old mesh rebuilt
+  double worst = 1.0;          ///< worst quality of the rebuilt region
   double strain_integral_change = 0.0, strain_max_change = 0.0; ///< relative, over the body
 };
 
@@ -210,7 +211,7 @@ mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
 std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, const mesh::TetMesh& part,
                                           const Eigen::Ref<const Eigen::VectorXd>& part_nodal,
                                           const std::vector<double>& part_strain, const double* part_temperature,
-                                          double time_step, std::string& why_not) {
+                                          const double* part_material, double time_step, std::string& why_not) {
   const scene::RemeshSpec& spec = scene.input.remeshing;
   const scene::Body& body = scene.bodies[b];
   const std::vector<char> region = rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
@@ -277,8 +278,9 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, cons
           }
     return v;
   };
-  auto carry = [&](const double* values, int stride) {
-    const Eigen::VectorXd interpolated = interpolate_nodal(old_region, region_values(values, stride), stride, at);
+  auto carry = [&](const double* values, int stride, bool extend) {
+    const Eigen::VectorXd interpolated =
+        interpolate_nodal(old_region, region_values(values, stride), stride, at, extend);
     Eigen::VectorXd all(stride * local.mesh.node_count());
     for (std::size_t n = 0, k = 0; n < local.mesh.nodes.size(); ++n)
       all.segment(stride * n, stride) =
@@ -287,9 +289,10 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, cons
               : Eigen::VectorXd(interpolated.segment(stride * k++, stride));
     return all;
   };
-  out.nodal = carry(part_nodal.data(), 4);
+  out.nodal = carry(part_nodal.data(), 4, false);
+  if (part_material) out.material = carry(part_material, 3, true);
   if (part_temperature) {
-    out.temperature = carry(part_temperature, 1);
+    out.temperature = carry(part_temperature, 1, false);
     if (const auto& body_thermal = body.thermal) {
       // The new nodes' interpolated temperatures change the stored heat a
       // little: a shift of theirs alone gives it back.
@@ -315,9 +318,10 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
   Timers::Scope scope(timers, "remeshing");
   const bool carries_stress = !state.elastic_stress.empty();
   const bool thermal = !state.temperature.empty();
+  const bool flow_lines = !state.material_position.empty();
   mesh::TetMesh next;
   std::vector<mesh::MeshRange> ranges;
-  std::vector<double> nodal, strain, stress, temperature;
+  std::vector<double> nodal, strain, stress, temperature, material;
   auto append_values = [](std::vector<double>& to, const double* first, std::size_t count) {
     to.insert(to.end(), first, first + count);
   };
@@ -336,10 +340,12 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
                                           state.equivalent_strain.begin() + range.first_tet + range.tet_count);
     const auto why = std::find_if(due.begin(), due.end(), [&](const RemeshDue& d) { return d.body == int(b); });
     const double* part_temperature = thermal ? state.temperature.data() + range.first_node : nullptr;
+    const double* part_material = flow_lines ? state.material_position.data() + 3 * range.first_node : nullptr;
     auto keep_mesh = [&] {
       ranges.push_back(mesh::append(next, part));
       append_values(nodal, part_nodal, 4 * range.node_count);
       if (thermal) append_values(temperature, part_temperature, range.node_count);
+      if (flow_lines) append_values(material, part_material, 3 * range.node_count);
       append_values(strain, part_strain.data(), part_strain.size());
       if (carries_stress) append_values(stress, &state.elastic_stress[6 * range.first_tet], 6 * range.tet_count);
     };
@@ -351,11 +357,12 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       std::string whole;
       std::optional<LocalRemesh> local =
           remesh_locally(scene, int(b), part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count),
-                         part_strain, part_temperature, time_step, whole);
+                         part_strain, part_temperature, part_material, time_step, whole);
       if (local) {
         ranges.push_back(mesh::append(next, local->mesh));
         append_values(nodal, local->nodal.data(), local->nodal.size());
         if (thermal) append_values(temperature, local->temperature.data(), local->temperature.size());
+        if (flow_lines) append_values(material, local->material.data(), local->material.size());
         append_values(strain, local->strain.data(), local->strain.size());
         if (carries_stress) stress.insert(stress.end(), 6 * local->mesh.tets.size(), 0.0);
         const scene::RemeshRecord record{
@@ -411,8 +418,9 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     // conservative remap onto the mesh CGAL made of the old body (the same
     // domain), its peaks kept; fitting to the dies then moves the elements
     // with their values, as an increment's update does.
-    const Eigen::VectorXd fresh_nodal = interpolate_nodal(
-        part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count), 4, in_old.locate(fresh.nodes));
+    const std::vector<Location> at = in_old.locate(fresh.nodes);
+    const Eigen::VectorXd fresh_nodal =
+        interpolate_nodal(part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count), 4, at);
     const std::vector<double> fresh_strain = transfer_element(part, part_strain, in_old, best.remeshed);
     ranges.push_back(mesh::append(next, fresh));
     append_values(nodal, fresh_nodal.data(), fresh_nodal.size());
@@ -423,8 +431,8 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       // mesh's volume (the put-back onto the dies, the material given back)
       // changes it, at the body's mean heat per mm³. That change is logged
       // and kept apart in the heat budget.
-      Eigen::VectorXd fresh_temperature = interpolate_nodal(
-          part, Eigen::Map<const Eigen::VectorXd>(part_temperature, range.node_count), 1, in_old.locate(fresh.nodes));
+      Eigen::VectorXd fresh_temperature =
+          interpolate_nodal(part, Eigen::Map<const Eigen::VectorXd>(part_temperature, range.node_count), 1, at);
       if (const auto& body_thermal = scene.bodies[b].thermal) {
         const double before = thermal::enthalpy(nodal_mass(part, *body_thermal), mesh::whole_range(part),
                                                 {part_temperature, std::size_t(range.node_count)});
@@ -444,6 +452,14 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
                   interpolated - before, shift, after - before, 100.0 * relative(after, before));
       }
       append_values(temperature, fresh_temperature.data(), fresh_temperature.size());
+    }
+    if (flow_lines) {
+      // Where the new nodes' material started: interpolated linearly (and
+      // extended linearly to a new surface node off the old surface), exact
+      // where the flow so far was homogeneous (docs/reading-a-run.md §4).
+      const Eigen::VectorXd fresh_material =
+          interpolate_nodal(part, Eigen::Map<const Eigen::VectorXd>(part_material, 3 * range.node_count), 3, at, true);
+      append_values(material, fresh_material.data(), fresh_material.size());
     }
     append_values(strain, fresh_strain.data(), fresh_strain.size());
     if (carries_stress) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // a flowing body carries none
@@ -491,6 +507,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
   state.equivalent_strain = std::move(strain);
   state.elastic_stress = std::move(stress);
   if (thermal) state.temperature = std::move(temperature);
+  if (flow_lines) state.material_position = std::move(material);
   {
     Timers::Scope overlap(timers, "die overlap");
     state.inside_dies = scene::inside_dies(scene, state);

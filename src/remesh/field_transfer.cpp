@@ -87,7 +87,10 @@ Location PointLocator::locate(const mesh::Point& p) const {
     const double lowest = *std::min_element(w.begin(), w.end());
     if (lowest > most_inside || (lowest == most_inside && e < best)) most_inside = lowest, best = e;
   }
-  if (best >= 0 && most_inside >= -kOnFace) return {best, clamped(barycentric(mesh_, best, p)), true};
+  if (best >= 0 && most_inside >= -kOnFace) {
+    const std::array<double, 4> w = barycentric(mesh_, best, p);
+    return {best, clamped(w), true, w};
+  }
   // Outside the mesh (a boundary node a hair off the old surface): the tets
   // within VTK's closest distance, and among them the nearest by the clamped
   // weights' point.
@@ -108,8 +111,8 @@ Location PointLocator::locate(const mesh::Point& p) const {
     const double d = (at - p).squaredNorm();
     if (d < nearest || (d == nearest && e < best)) nearest = d, best = e, weights = w;
   }
-  if (best < 0) return {static_cast<int>(tet), clamped(barycentric(mesh_, static_cast<int>(tet), p)), false};
-  return {best, weights, false};
+  if (best < 0) best = static_cast<int>(tet), weights = clamped(barycentric(mesh_, best, p));
+  return {best, weights, false, barycentric(mesh_, best, p)};
 }
 
 std::vector<Location> PointLocator::locate(const std::vector<mesh::Point>& points) const {
@@ -138,12 +141,12 @@ std::vector<mesh::Point> centroids(const mesh::TetMesh& m) {
 }
 
 Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::VectorXd& values, int stride,
-                                  const std::vector<Location>& at) {
+                                  const std::vector<Location>& at, bool extend) {
   Eigen::VectorXd out = Eigen::VectorXd::Zero(stride * static_cast<Eigen::Index>(at.size()));
   for (std::size_t i = 0; i < at.size(); ++i)
     for (int a = 0; a < 4; ++a)
       out.segment(stride * i, stride) +=
-          at[i].weights[a] * values.segment(stride * old_mesh.tets[at[i].tet][a], stride);
+          (extend ? at[i].linear[a] : at[i].weights[a]) * values.segment(stride * old_mesh.tets[at[i].tet][a], stride);
   return out;
 }
 

@@ -11,13 +11,17 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellData.h>
+#include <vtkContourFilter.h>
+#include <vtkCutter.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkFieldData.h>
 #include <vtkImageAppend.h>
 #include <vtkImageData.h>
 #include <vtkImageResize.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
+#include <vtkPlane.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -45,17 +49,32 @@
 
 namespace {
 
-/// The field to colour by: `asked`, else temperature, ε̄, von Mises stress, in that order.
-std::string choose_field(vtkUnstructuredGrid* grid, const std::string& asked) {
-  auto has = [&](const std::string& name) {
-    return grid->GetPointData()->HasArray(name.c_str()) || grid->GetCellData()->HasArray(name.c_str());
-  };
+bool has_field(vtkUnstructuredGrid* grid, const std::string& name) {
+  return grid->GetPointData()->HasArray(name.c_str()) || grid->GetCellData()->HasArray(name.c_str());
+}
+
+/// A written increment's grids: the bodies, then each die.
+using Grids = std::vector<vtkSmartPointer<vtkUnstructuredGrid>>;
+
+/// The grids of `grids` that carry `field`: the bodies, or else the dies
+/// that have it (a die field: underfill).
+std::vector<vtkUnstructuredGrid*> carriers(const Grids& grids, const std::string& field) {
+  if (has_field(grids.front(), field)) return {grids.front()};
+  std::vector<vtkUnstructuredGrid*> dies;
+  for (std::size_t p = 1; p < grids.size(); ++p)
+    if (has_field(grids[p], field)) dies.push_back(grids[p]);
+  return dies;
+}
+
+/// The field to colour by: `asked` (on the bodies or on dies), else
+/// temperature, ε̄, von Mises stress of the bodies, in that order.
+std::string choose_field(const Grids& grids, const std::string& asked) {
   if (!asked.empty()) {
-    if (!has(asked)) throw std::runtime_error("field '" + asked + "' is not in the series");
+    if (carriers(grids, asked).empty()) throw std::runtime_error("field '" + asked + "' is not in the series");
     return asked;
   }
   for (const char* name : {"temperature", "equivalent_strain", "von_mises_stress"})
-    if (has(name)) return name;
+    if (has_field(grids.front(), name)) return name;
   throw std::runtime_error("the series has none of temperature, equivalent_strain, von_mises_stress");
 }
 
@@ -65,11 +84,15 @@ vtkDataArray* field_values(vtkUnstructuredGrid* grid, const std::string& field) 
   return points ? points : grid->GetCellData()->GetArray(field.c_str());
 }
 
-/// [low, high] of `field` on `grid` (the magnitude of a vector field).
-std::array<double, 2> field_range(vtkUnstructuredGrid* grid, const std::string& field) {
-  vtkDataArray* values = field_values(grid, field);
-  std::array<double, 2> range{};
-  values->GetRange(range.data(), values->GetNumberOfComponents() > 1 ? -1 : 0);
+/// [low, high] of `field` over the grids that carry it (the magnitude of a vector field).
+std::array<double, 2> field_range(const Grids& grids, const std::string& field) {
+  std::array<double, 2> range{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (vtkUnstructuredGrid* grid : carriers(grids, field)) {
+    vtkDataArray* values = field_values(grid, field);
+    std::array<double, 2> r{};
+    values->GetRange(r.data(), values->GetNumberOfComponents() > 1 ? -1 : 0);
+    range = {std::min(range[0], r[0]), std::max(range[1], r[1])};
+  }
   return range;
 }
 
@@ -137,6 +160,15 @@ bool animate_mp4(const std::vector<std::string>& frames, const std::filesystem::
 }
 
 /// The value of --frames: a whole number from 1 to 10000.
+/// A bound of --range: a finite number.
+double range_end(const std::string& text) {
+  double x = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), x);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(x))
+    throw std::runtime_error("--range needs two numbers, not '" + text + "'");
+  return x;
+}
+
 int frame_count(const std::string& text) {
   int n = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
@@ -152,6 +184,8 @@ struct Options {
   bool sheet = false;           ///< also a contact sheet of the frames
   std::string out;              ///< the last frame only, to this file
   double range[2] = {0.0, 0.0}; ///< colour bar range shared by the frames; empty: each frame's own
+  bool fixed_range = false;     ///< --range: the user's, beyond it the colours saturate
+  bool flow_lines = false;      ///< --flow-lines: a cut through the part with its flow lines
   int width = 1000, height = 750;
 };
 
@@ -174,43 +208,160 @@ vtkSmartPointer<vtkPolyData> surface_of(vtkUnstructuredGrid* grid, bool mirror) 
   return surface->GetOutput();
 }
 
-/// The picture of one written increment, its bodies read into `bodies`.
-vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEntry& frame, vtkUnstructuredGrid* bodies,
-                                     const std::vector<anvil::io::LoadRow>& loads, const std::string& load_surface) {
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(1.0, 1.0, 1.0);
-  const std::string field = choose_field(bodies, o.field);
+/// A mapper colouring `grid`'s surface by `field` over `range` with `colours`.
+vtkSmartPointer<vtkPolyDataMapper> coloured(vtkUnstructuredGrid* grid, const std::string& field, bool mirror,
+                                            const std::array<double, 2>& range, vtkLookupTable* colours) {
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(surface_of(bodies, o.mirror));
-  const bool on_points = bodies->GetPointData()->HasArray(field.c_str());
-  std::array<double, 2> range{o.range[0], o.range[1]};
-  if (!(range[1] > range[0])) range = field_range(bodies, field);
-  range = readable(range);
-  vtkNew<vtkLookupTable> colours;
-  colours->SetHueRange(0.667, 0.0); // blue (low) to red (high)
-  colours->Build();
+  mapper->SetInputData(surface_of(grid, mirror));
   mapper->SetLookupTable(colours);
   mapper->SetScalarRange(range.data());
-  if (on_points)
+  if (grid->GetPointData()->HasArray(field.c_str()))
     mapper->SetScalarModeToUsePointFieldData();
   else
     mapper->SetScalarModeToUseCellFieldData();
   mapper->SelectColorArray(field.c_str());
   mapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> part;
-  part->SetMapper(mapper);
-  renderer->AddActor(part);
-  // The dies: grey, semi-transparent, so the part shows through them.
-  for (std::size_t p = 1; p < frame.parts.size(); ++p) {
-    const std::string file = o.directory + "/" + frame.parts[p];
-    vtkNew<vtkPolyDataMapper> die_mapper;
-    die_mapper->SetInputData(surface_of(anvil::io::read_grid(file), o.mirror));
-    die_mapper->ScalarVisibilityOff();
-    vtkNew<vtkActor> die;
-    die->SetMapper(die_mapper);
-    die->GetProperty()->SetColor(0.6, 0.6, 0.65);
-    die->GetProperty()->SetOpacity(0.2);
-    renderer->AddActor(die);
+  return mapper;
+}
+
+/// `data` mirrored across the plane x = 0 too, when `mirror`, as surfaces and lines.
+vtkSmartPointer<vtkPolyData> mirrored_across_x(vtkPolyData* data, bool mirror) {
+  if (!mirror) return data;
+  vtkNew<vtkReflectionFilter> reflect;
+  reflect->SetInputData(data);
+  reflect->SetPlane(vtkReflectionFilter::USE_X);
+  reflect->SetCenter(0.0);
+  reflect->CopyInputOn();
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputConnection(reflect->GetOutputPort());
+  surface->Update();
+  return surface->GetOutput();
+}
+
+/// The flow lines (docs/reading-a-run.md §4): the bodies cut by a plane
+/// through the press axis, normal to y (to x for planes of material normal
+/// to y): just inside a model cut at 0 by a symmetry plane, else through the
+/// middle. The section is coloured by `field`; the planes of material (the
+/// level sets of material_<axis> at the series' flow_line_levels) are black
+/// lines on it, the dies' profiles grey. Returns the section's actor, which
+/// the camera frames; `normal` is the cut's axis.
+vtkSmartPointer<vtkActor> add_flow_lines(vtkRenderer* renderer, const Options& o, const Grids& grids,
+                                         const std::string& field, const std::array<double, 2>& range,
+                                         vtkLookupTable* colours, int& normal) {
+  vtkUnstructuredGrid* bodies = grids.front();
+  int axis = -1;
+  for (int k = 0; k < 3 && axis < 0; ++k)
+    if (bodies->GetPointData()->HasArray((std::string("material_") + char('x' + k)).c_str())) axis = k;
+  vtkDataArray* levels = bodies->GetFieldData()->GetArray("flow_line_levels");
+  if (axis < 0 || !levels || levels->GetNumberOfTuples() == 0)
+    throw std::runtime_error("the series has no flow lines (the case asks for them with output.flow_lines)");
+  const std::string started = std::string("material_") + char('x' + axis);
+  normal = axis == 1 ? 0 : 1;
+  double bounds[6];
+  bodies->GetBounds(bounds);
+  const double low = bounds[2 * normal], high = bounds[2 * normal + 1], extent = high - low;
+  const double at = std::abs(low) <= 1e-6 * extent ? low + 1e-3 * extent : 0.5 * (low + high);
+  vtkNew<vtkPlane> plane;
+  double origin[3] = {0.0, 0.0, 0.0}, direction[3] = {0.0, 0.0, 0.0};
+  origin[normal] = at;
+  direction[normal] = 1.0;
+  plane->SetOrigin(origin);
+  plane->SetNormal(direction);
+  const bool mirror = o.mirror && normal == 1; // the section of a quarter model, drawn across x = 0 too
+  auto cut = [&](vtkUnstructuredGrid* grid) {
+    vtkNew<vtkCutter> cutter;
+    cutter->SetCutFunction(plane);
+    cutter->SetInputData(grid);
+    cutter->Update();
+    return vtkSmartPointer<vtkPolyData>(cutter->GetOutput());
+  };
+  const vtkSmartPointer<vtkPolyData> section = cut(bodies);
+  vtkNew<vtkPolyDataMapper> section_mapper;
+  section_mapper->SetInputData(mirrored_across_x(section, mirror));
+  section_mapper->SetLookupTable(colours);
+  section_mapper->SetScalarRange(range.data());
+  if (section->GetPointData()->HasArray(field.c_str()))
+    section_mapper->SetScalarModeToUsePointFieldData();
+  else
+    section_mapper->SetScalarModeToUseCellFieldData();
+  section_mapper->SelectColorArray(field.c_str());
+  section_mapper->SetResolveCoincidentTopologyToPolygonOffset(); // the lines in front of the section they lie on
+  vtkNew<vtkActor> section_actor;
+  section_actor->SetMapper(section_mapper);
+  section_actor->GetProperty()->SetOpacity(0.6); // the lines read over it
+  renderer->AddActor(section_actor);
+  vtkNew<vtkContourFilter> lines;
+  lines->SetInputData(section);
+  lines->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, started.c_str());
+  for (vtkIdType k = 0; k < levels->GetNumberOfTuples(); ++k)
+    lines->SetValue(static_cast<int>(k), levels->GetTuple1(k));
+  lines->Update();
+  auto draw_lines = [&](vtkPolyData* data, double shade, float width) {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(mirrored_across_x(data, mirror));
+    mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(shade, shade, shade);
+    actor->GetProperty()->SetLineWidth(width);
+    renderer->AddActor(actor);
+  };
+  draw_lines(lines->GetOutput(), 0.0, 2.0f);
+  for (std::size_t p = 1; p < grids.size(); ++p)
+    draw_lines(cut(grids[p]), 0.45, 3.0f);
+  return vtkSmartPointer<vtkActor>(section_actor.GetPointer());
+}
+
+/// The picture of one written increment, its grids read into `grids`. A
+/// body field colours the bodies, the dies grey and see-through over them; a
+/// die field (underfill) colours the dies, the part grey and see-through.
+/// With --flow-lines: a cut through the part (add_flow_lines), seen along
+/// the cut's normal.
+vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEntry& frame, const Grids& grids,
+                                     const std::vector<anvil::io::LoadRow>& loads, const std::string& load_surface) {
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  const std::string field = choose_field(grids, o.field);
+  const bool on_dies = !has_field(grids.front(), field);
+  std::array<double, 2> range{o.range[0], o.range[1]};
+  if (!(range[1] > range[0])) range = field_range(grids, field);
+  range = readable(range);
+  vtkNew<vtkLookupTable> colours;
+  colours->SetHueRange(0.667, 0.0); // blue (low) to red (high)
+  colours->Build();
+  auto grey = [&](vtkUnstructuredGrid* grid, double opacity) {
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(surface_of(grid, o.mirror));
+    mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(0.6, 0.6, 0.65);
+    actor->GetProperty()->SetOpacity(opacity);
+    renderer->AddActor(actor);
+    return vtkSmartPointer<vtkActor>(actor.GetPointer());
+  };
+  vtkSmartPointer<vtkActor> part;
+  std::string view = o.view;
+  if (o.flow_lines) {
+    if (on_dies) throw std::runtime_error("--flow-lines colours the part's section: '" + field + "' is a die field");
+    int normal = 1;
+    part = add_flow_lines(renderer, o, grids, field, range, colours, normal);
+    view = normal == 1 ? "front" : "side";
+  } else {
+    if (on_dies)
+      part = grey(grids.front(), 0.3);
+    else {
+      part = vtkSmartPointer<vtkActor>::New();
+      part->SetMapper(coloured(grids.front(), field, o.mirror, range, colours));
+      renderer->AddActor(part);
+    }
+    for (std::size_t p = 1; p < grids.size(); ++p)
+      if (on_dies && has_field(grids[p], field)) {
+        vtkNew<vtkActor> die;
+        die->SetMapper(coloured(grids[p], field, o.mirror, range, colours));
+        renderer->AddActor(die);
+      } else
+        grey(grids[p], 0.2);
   }
   vtkNew<vtkScalarBarActor> bar;
   bar->SetLookupTable(colours);
@@ -240,11 +391,14 @@ vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEn
 
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(0, 0, 0);
-  if (o.view == "top") {
+  if (view == "top") {
     camera->SetPosition(0, 0, 1);
     camera->SetViewUp(0, 1, 0);
-  } else if (o.view == "front") {
+  } else if (view == "front") {
     camera->SetPosition(0, -1, 0);
+    camera->SetViewUp(0, 0, 1);
+  } else if (view == "side") {
+    camera->SetPosition(1, 0, 0);
     camera->SetViewUp(0, 0, 1);
   } else {
     camera->SetPosition(1, -1.4, 0.9);
@@ -335,9 +489,16 @@ int main(int argc, char** argv) {
         o.mirror = true;
       else if (arg == "--sheet")
         o.sheet = true;
+      else if (arg == "--flow-lines")
+        o.flow_lines = true;
       else if (arg == "--out")
         o.out = value();
-      else if (arg[0] == '-')
+      else if (arg == "--range") {
+        o.range[0] = range_end(value());
+        o.range[1] = range_end(value());
+        if (!(o.range[1] > o.range[0])) throw std::runtime_error("--range needs LOW below HIGH");
+        o.fixed_range = true;
+      } else if (arg[0] == '-')
         throw std::runtime_error("unknown option '" + arg + "'");
       else
         o.directory = arg;
@@ -348,7 +509,8 @@ int main(int argc, char** argv) {
   }
   if (o.directory.empty() || !(o.view == "iso" || o.view == "front" || o.view == "top") || o.frames < 1) {
     std::fprintf(stderr,
-                 "usage: anvil render DIR [--field NAME] [--view iso|front|top] [--frames N] [--mirror] [--sheet]\n");
+                 "usage: anvil render DIR [--field NAME] [--range LOW HIGH] [--view iso|front|top] [--frames N] "
+                 "[--mirror] [--sheet] [--flow-lines]\n");
     return 2;
   }
   try {
@@ -357,29 +519,33 @@ int main(int argc, char** argv) {
     const std::string load_surface = surfaces.empty() ? "" : surfaces.front();
     const std::vector<anvil::io::LoadRow> loads =
         surfaces.empty() ? std::vector<anvil::io::LoadRow>{} : anvil::io::read_loads(o.directory, load_surface);
-    auto bodies_of = [&](const anvil::io::SeriesEntry& frame) {
-      return anvil::io::read_grid(o.directory + "/" + frame.parts.front());
+    auto grids_of = [&](const anvil::io::SeriesEntry& frame) {
+      Grids grids;
+      for (const std::string& file : frame.parts)
+        grids.push_back(anvil::io::read_grid(o.directory + "/" + file));
+      return grids;
     };
     if (!o.out.empty()) {
-      write_png(render(o, frames.back(), bodies_of(frames.back()), loads, load_surface), o.out);
+      write_png(render(o, frames.back(), grids_of(frames.back()), loads, load_surface), o.out);
       std::printf("%s\n", o.out.c_str());
       return 0;
     }
+    const std::string picture_name = o.flow_lines ? "flow_lines" : o.field.empty() ? "default" : o.field;
     const std::filesystem::path folder = std::filesystem::path(o.directory) / "render";
     std::filesystem::create_directories(folder);
     const int count = std::min<int>(o.frames, int(frames.size()));
     std::vector<const anvil::io::SeriesEntry*> chosen;
-    std::vector<vtkSmartPointer<vtkUnstructuredGrid>> bodies;
+    std::vector<Grids> grids;
     for (int k = 0; k < count; ++k) { // evenly spread over the series, the last one always included
       chosen.push_back(&frames[count == 1 ? frames.size() - 1 : k * (frames.size() - 1) / (count - 1)]);
-      bodies.push_back(bodies_of(*chosen.back()));
+      grids.push_back(grids_of(*chosen.back()));
     }
-    if (count > 1) {
+    if (count > 1 && !o.fixed_range) {
       // One colour bar for every frame, so the animation and the sheet compare.
       o.range[0] = std::numeric_limits<double>::infinity();
       o.range[1] = -o.range[0];
-      for (const auto& grid : bodies) {
-        const std::array<double, 2> r = field_range(grid, choose_field(grid, o.field));
+      for (const Grids& g : grids) {
+        const std::array<double, 2> r = field_range(g, choose_field(g, o.field));
         o.range[0] = std::min(o.range[0], r[0]);
         o.range[1] = std::max(o.range[1], r[1]);
       }
@@ -388,20 +554,19 @@ int main(int argc, char** argv) {
     std::vector<std::string> files; // in `folder`
     for (std::size_t k = 0; k < chosen.size(); ++k) {
       char name[64];
-      std::snprintf(name, sizeof name, "%s_%06d.png", o.field.empty() ? "default" : o.field.c_str(),
-                    chosen[k]->increment);
-      pictures.push_back(render(o, *chosen[k], bodies[k], loads, load_surface));
+      std::snprintf(name, sizeof name, "%s_%06d.png", picture_name.c_str(), chosen[k]->increment);
+      pictures.push_back(render(o, *chosen[k], grids[k], loads, load_surface));
       files.push_back(name);
       write_png(pictures.back(), (folder / name).string());
       std::printf("%s\n", (folder / name).c_str());
     }
-    const std::string stem = (folder / (o.field.empty() ? "default" : o.field)).string();
+    const std::string stem = (folder / picture_name).string();
     if (o.sheet && pictures.size() > 1) {
       write_png(contact_sheet(pictures), stem + "_sheet.png");
       std::printf("%s\n", (stem + "_sheet.png").c_str());
     }
     if (pictures.size() > 1) {
-      const std::string animation = o.field.empty() ? "default" : o.field;
+      const std::string& animation = picture_name;
       bool made = animate_gif(files, folder, animation + ".gif");
       if (anvil::subprocess::on_path("ffmpeg")) made = animate_mp4(files, folder, animation + ".mp4") && made;
       if (!made) return 1;

@@ -126,13 +126,27 @@ std::vector<Eigen::Vector3d> surface_forces(const Scene& scene, const Discretisa
 }
 
 /// The loads.csv records of `forces`, solved on the geometry after
-/// `increment` increments (time `time`, the dies at `dies`); they replace
-/// records of that geometry already there (a resumed run's last ones).
-void append_loads(const Scene& scene, std::span<const DieState> dies, int increment, double time,
-                  const std::vector<Eigen::Vector3d>& forces, std::vector<LoadRecord>& loads) {
+/// `increment` increments (`mesh` at time `time`, the dies at `dies`), with
+/// the dies' fill there (die_fill); they replace records of that geometry
+/// already there (a resumed run's last ones).
+void append_loads(const Scene& scene, const mesh::TetMesh& mesh, std::span<const DieState> dies, int increment,
+                  double time, const std::vector<Eigen::Vector3d>& forces, std::vector<LoadRecord>& loads,
+                  Timers& timers) {
+  std::vector<std::optional<contact::DieFill>> fills(scene.dies.size());
+  if (std::find(scene.effects.begin(), scene.effects.end(), "die_fill") != scene.effects.end()) {
+    Timers::Scope scope(timers, "effect die_fill");
+    fills = die_fills(scene, mesh, dies, false);
+  }
   std::erase_if(loads, [&](const LoadRecord& r) { return r.increment == increment; });
-  for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
-    loads.push_back({increment, time, int(s), surface_stroke(scene, dies, int(s), time), forces[s]});
+  for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+    LoadRecord record{increment, time, int(s), surface_stroke(scene, dies, int(s), time), forces[s]};
+    const int die = scene.surfaces[s].die;
+    if (die >= 0 && fills[die]) {
+      record.contact_area = fills[die]->contact_area;
+      record.fill = fills[die]->fraction();
+    }
+    loads.push_back(record);
+  }
 }
 
 void count_iterations(const solver::NewtonReport& report, RunState& state) {
@@ -256,11 +270,13 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
   // A flow's loads were solved on the geometry where the increment starts
   // (its strain rates there, ε̄ and T at its start): they are recorded at
   // its stroke and time. Elastic bodies' loads hold at its end.
-  if (!scene.all_elastic) append_loads(scene, state.dies, state.increment, state.time, inc.forces, state.loads);
+  if (!scene.all_elastic)
+    append_loads(scene, state.mesh, state.dies, state.increment, state.time, inc.forces, state.loads, timers);
   state.mesh.nodes = std::move(moved.nodes); // the elements stay: the discretisation holds on to them
   state.dies = std::move(dies);
   state.unknowns = std::move(inc.unknowns);
-  if (scene.all_elastic) append_loads(scene, state.dies, state.increment + 1, state.time + dt, inc.forces, state.loads);
+  if (scene.all_elastic)
+    append_loads(scene, state.mesh, state.dies, state.increment + 1, state.time + dt, inc.forces, state.loads, timers);
   state.volume.solver += volume_flow - volume_before;
   state.volume.compensation += inc.compensation;
   state.volume.projection += volume_after - volume_flow;
@@ -335,16 +351,16 @@ void record_final_loads(const Scene& scene, Discretisation& disc, RunState& stat
     inc = solve_increment(scene, disc, end, step, timers, ContactEvents::ignore, on_its_way ? &stopped_at : nullptr);
   }
   if (inc.converged())
-    append_loads(scene, state.dies, state.increment, state.time, inc.forces, state.loads);
+    append_loads(scene, state.mesh, state.dies, state.increment, state.time, inc.forces, state.loads, timers);
   else
     log::info("the loads at the final geometry are not recorded: %s", inc.failure.c_str());
 }
 
-void accept_without_motion(const Scene& scene, const IncrementOutcome& inc, RunState& state) {
+void accept_without_motion(const Scene& scene, const IncrementOutcome& inc, RunState& state, Timers& timers) {
   state.increment = 1;
   state.unknowns = inc.unknowns;
   count_iterations(inc.report, state);
-  append_loads(scene, state.dies, 1, 0.0, inc.forces, state.loads);
+  append_loads(scene, state.mesh, state.dies, 1, 0.0, inc.forces, state.loads, timers);
 }
 
 Advance advance(const Scene& scene, Discretisation& disc, RunState& state, const TimeStepControl& clock, TimeStep step,

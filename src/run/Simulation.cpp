@@ -265,7 +265,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
     const IncrementOutcome inc =
         solve_increment(scene, disc, state, {.nominal = 0.0, .planned = 1.0, .length = 1.0}, timers);
     if (!inc.converged()) throw RunError("increment 1: " + inc.failure);
-    accept_without_motion(scene, inc, state);
+    accept_without_motion(scene, inc, state, timers);
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
       const Eigen::Vector3d& f = state.loads[s].force;
       log::info("  load on '%s': Fx %.6g N  Fy %.6g N  Fz %.6g N", scene.surfaces[s].name.c_str(), f.x(), f.y(), f.z());

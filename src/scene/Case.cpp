@@ -185,6 +185,32 @@ void read_dies(const CheckedYaml& doc, Case& c) {
     }
     if (d.direction.norm() == 0.0) doc.fail(n["direction"], shown + ".direction", "the direction must not be zero");
     d.friction = read_friction(doc, n, "dies", shown);
+    if (const YAML::Node fill = n["fill"]) {
+      d.fill = true;
+      if (const YAML::Node region = fill["region"]) {
+        if (static_cast<bool>(region["min"]) != static_cast<bool>(region["max"]))
+          doc.fail(region, shown + ".fill.region", "a box needs both 'min' and 'max'");
+        if (!region["min"] && !region["radius"])
+          doc.fail(region, shown + ".fill.region", "give a box ('min' and 'max'), a 'radius', or both");
+        if (region["min"]) {
+          const mesh::Point low = doc.vector(region, "min", "dies[].fill.region.min");
+          const mesh::Point high = doc.vector(region, "max", "dies[].fill.region.max");
+          if (!(low.array() < high.array()).all())
+            doc.fail(region, shown + ".fill.region", "'min' must be below 'max' in x, y and z");
+          d.fill_region.box = Eigen::AlignedBox3d(low, high);
+        }
+        if (region["radius"]) {
+          d.fill_region.radius = doc.number(region, "radius", "dies[].fill.region.radius");
+          const std::vector<double> axis = doc.numbers(region, "axis");
+          if (!axis.empty() && axis.size() != 2)
+            doc.fail(region["axis"], shown + ".fill.region.axis",
+                     "needs 2 numbers (x, y), not " + std::to_string(axis.size()));
+          if (axis.size() == 2) d.fill_region.axis = {axis[0], axis[1]};
+        } else
+          doc.forbid(region, "axis", shown + ".fill.region", "a region without a 'radius'");
+      }
+      if (fill["tolerance"]) d.fill_tolerance = doc.number(fill, "tolerance", "dies[].fill.tolerance");
+    }
     c.dies.push_back(d);
   });
 }
@@ -312,6 +338,12 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.picture_mirror = doc.boolean(output, "picture_mirror", "output.picture_mirror");
   c.vtk_every = doc.integer(output, "vtk_every", "output.vtk_every");
   c.checkpoint_every = doc.integer(output, "checkpoint_every", "output.checkpoint_every");
+  if (const YAML::Node lines = output["flow_lines"]) {
+    if (!root["time"])
+      doc.fail(lines, "output.flow_lines", "flow lines follow the material over time: the case needs a 'time' section");
+    c.flow_line_axis = doc.text(lines, "axis", "output.flow_lines.axis")[0] - 'x';
+    c.flow_line_count = doc.integer(lines, "count", "output.flow_lines.count");
+  }
   const YAML::Node solver = section(root, "solver");
   c.newton.tolerance = doc.number(solver, "tolerance", "solver.tolerance");
   c.newton.increment_tolerance = doc.number(solver, "increment_tolerance", "solver.increment_tolerance");

@@ -55,6 +55,17 @@ std::vector<char> symmetry_faces(const Scene& scene, const RunState& state) {
   return on_plane;
 }
 
+/// `conditions` as a remeshed body's faces find them at `time`: a plane
+/// that chose a moving face (a plate, an imposed velocity) has moved with
+/// it; its nodes moved by their prescribed velocity, increment by increment.
+std::vector<BoundaryCondition> at_time(std::vector<BoundaryCondition> conditions, double time) {
+  for (BoundaryCondition& c : conditions)
+    if (c.faces.tag < 0 && c.prescribes_velocity())
+      for (int k = 0; k < 3; ++k)
+        c.faces.plane_point[k] += time * c.velocity[k].value_or(0.0);
+  return conditions;
+}
+
 } // namespace
 
 Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
@@ -67,7 +78,9 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
     const bool remeshed = std::any_of(state.remeshes.begin(), state.remeshes.end(),
                                       [&](const RemeshRecord& r) { return r.body == static_cast<int>(b); });
     Timers::Scope scope(timers, "effect boundary_conditions");
-    append(imposed, remeshed ? impose(mesh::extract(state.mesh, range), body.conditions) : body.initial_imposed,
+    append(imposed,
+           remeshed ? impose(mesh::extract(state.mesh, range), at_time(body.conditions, state.time))
+                    : body.initial_imposed,
            range.first_node);
   }
   std::vector<char> on_symmetry_plane = symmetry_faces(scene, state);

@@ -203,8 +203,19 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
       Timers::Scope scope(timers, "effect boundary_conditions");
       body.initial_imposed = impose(part, body.conditions);
     }
-    for (const int axis : body.initial_imposed.symmetry_axis)
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero(); // of the nodes: which side of a plane the body is on
+    for (const mesh::Point& x : part.nodes)
+      centre += x / part.node_count();
+    for (std::size_t i = 0; i < body.conditions.size(); ++i) {
+      const int axis = body.initial_imposed.symmetry_axis[i];
+      if (axis < 0) continue;
       if (axis == 0 || axis == 1) symmetric_about[axis] = true;
+      const double plane = part.nodes[body.initial_imposed.nodes_of_condition[i].front()][axis];
+      if (centre[axis] > plane)
+        model_side.min()[axis] = plane;
+      else
+        model_side.max()[axis] = plane;
+    }
     body.initial_volume = mesh::volume(part);
     body.remesh_size = c.remeshing.element_size > 0.0 ? c.remeshing.element_size : mean_boundary_edge(part);
     if (c.remeshing.enabled && c.remeshing.element_size > 0.0) {
@@ -232,6 +243,13 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     bodies.push_back(std::move(body));
   }
   symmetry_copies = (symmetric_about[0] ? 2 : 1) * (symmetric_about[1] ? 2 : 1);
+  if (const int axis = c.flow_line_axis; axis >= 0) {
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const mesh::Point& x : initial_mesh.nodes)
+      low = std::min(low, x[axis]), high = std::max(high, x[axis]);
+    for (int k = 0; k < c.flow_line_count; ++k)
+      flow_line_levels.push_back(low + (k + 0.5) * (high - low) / c.flow_line_count);
+  }
   std::vector<const material::Material*> laws;
   for (const Body& body : bodies)
     laws.push_back(body.law.get());
@@ -306,6 +324,9 @@ RunState initial_state(const Scene& scene) {
   if (scene.thermal)
     for (std::size_t b = 0; b < scene.bodies.size(); ++b)
       state.temperature.insert(state.temperature.end(), state.bodies[b].node_count, scene.bodies[b].state.temperature);
+  if (scene.input.flow_line_axis >= 0)
+    for (const mesh::Point& x : state.mesh.nodes)
+      state.material_position.insert(state.material_position.end(), x.data(), x.data() + 3);
   state.volume.initial = mesh::volume(state.mesh);
   state.inside_dies = inside_dies(scene, state);
   return state;
@@ -326,6 +347,10 @@ void check_resumable(const Scene& scene, const RunState& state, const std::strin
   if (scene.thermal == state.temperature.empty())
     throw InputError(path + (scene.thermal ? ": the case is thermal, the checkpoint holds no temperatures"
                                            : ": the checkpoint holds temperatures, the case has no 'thermal' section"));
+  if ((scene.input.flow_line_axis >= 0) == state.material_position.empty())
+    throw InputError(path + (state.material_position.empty()
+                                 ? ": the case asks for flow lines, the checkpoint holds no material positions"
+                                 : ": the checkpoint holds material positions, the case asks for no flow lines"));
   if (scene.carries_stress != !state.elastic_stress.empty())
     throw InputError(path + ": checkpoint dataset 'elastic_stress' does not match the case's bodies (was the case "
                             "changed?)");
@@ -359,6 +384,32 @@ std::vector<double> inside_dies(const Scene& scene, const RunState& state) {
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     inside[b] = inside_dies(scene, state.mesh, state.bodies[b], int(b), state.dies);
   return inside;
+}
+
+double fill_tolerance(const Scene& scene, int die) {
+  // A tenth of an edge covers the chord of a facet over a die radius of
+  // about an edge (sagitta h²/8R).
+  const double given = scene.input.dies[die].fill_tolerance;
+  return given > 0.0 ? given : 0.1 * scene.reference_length;
+}
+
+std::vector<std::optional<contact::DieFill>> die_fills(const Scene& scene, const mesh::TetMesh& mesh,
+                                                       std::span<const DieState> dies_now, bool with_underfill) {
+  std::vector<std::optional<contact::DieFill>> fills(scene.dies.size());
+  const auto asks = [&](std::size_t d) { return scene.input.dies[d].fill; };
+  bool any = false;
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    any = any || asks(d);
+  if (!any) return fills;
+  const contact::PartSurface part(mesh);
+  // Samples half an edge apart resolve the touching area to about the
+  // mesh's own resolution.
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    if (asks(d))
+      fills[d] = contact::measure_die_fill(scene.dies[d].surface->triangles(), dies_now[d].displacement,
+                                           scene.input.dies[d].fill_region, scene.model_side, part,
+                                           fill_tolerance(scene, int(d)), 0.5 * scene.reference_length, with_underfill);
+  return fills;
 }
 
 } // namespace anvil::scene

@@ -33,6 +33,10 @@ const std::vector<Effect>& effect_registry() {
       {"contact_heat_transfer", "heat exchange between bodies in contact, through the contact pairs"},
       {"friction_heating", "friction heat on die and pair contact, split between the two surfaces"},
       {"thermal_softening", "flow stress at the local temperature (Hansel-Spittel T terms, Norton-Hoff K(T))"},
+      {"flow_lines", "material lines: each node carries where its material started, interpolated through remeshes "
+                     "(docs/reading-a-run.md §4)"},
+      {"die_fill", "die fill: each asking die's area touching the part, its share of a region, the underfill field "
+                   "(docs/reading-a-run.md §3)"},
   };
   return registry;
 }
@@ -81,6 +85,9 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
   for (const material::Material* law : laws)
     if (law->hardens()) add("hardening");
   if (c.remeshing.enabled) add("remeshing");
+  for (const DieSpec& d : c.dies)
+    if (d.fill) add("die_fill");
+  if (c.flow_line_axis >= 0) add("flow_lines");
   if (c.thermal.enabled) {
     add("heat");
     add("air_cooling");

@@ -17,11 +17,14 @@ namespace {
 /// Keys a resumed run may change without a word: they stop, show or solve
 /// the same problem differently, not another problem.
 bool free_to_change(const std::string& key) {
+  if (key.rfind("output.flow_lines", 0) == 0) return false; // the checkpoint carries them or not
   for (const char* prefix :
        {"title", "output.", "time.stop.", "time.max_increments", "solver.linear_solver", "solver.schur",
         "solver.krylov_tolerance", "solver.reuse_preconditioner", "solver.petsc_options"})
     if (key.rfind(prefix, 0) == 0) return true;
-  return false;
+  // A die's fill is measured, not solved for.
+  const auto fill = key.find("].fill");
+  return key.rfind("dies[", 0) == 0 && fill != std::string::npos && key.find('.') == fill + 1;
 }
 
 /// FNV-1a hash of a file's bytes, as 16 hex digits.

@@ -126,6 +126,15 @@ const std::vector<KeySpec>& case_schema() {
             key("output.picture_mirror", T::boolean,
                 "final.png draws a quarter model (symmetry planes x = 0 and y = 0) whole: anvil render --mirror"),
             "false"),
+        key("output.flow_lines", T::map,
+            "flow lines (effect flow_lines): each node carries where its material started, through remeshes; "
+            "the planes of material normal to `axis` at `count` heights are the flow lines "
+            "(anvil render --flow-lines draws them on a cut; docs/reading-a-run.md §4)"),
+        with_default(choices(key("output.flow_lines.axis", T::string, "the planes' normal"), {"x", "y", "z"}), "z"),
+        with_default(range(key("output.flow_lines.count", T::integer,
+                               "planes, evenly spaced through the bodies' extent along the axis at the start"),
+                           1, 200),
+                     "12"),
         key("solver", T::map, "Newton and linear solver settings"),
         with_default(
             range(key("solver.tolerance", T::number, "Newton: relative tolerance on the force and div residuals"),
@@ -270,6 +279,24 @@ const std::vector<KeySpec>& case_schema() {
         range(key("dies[].load_limit", T::number,
                   "hydraulic: press capacity, for the whole part; above it the press slows down as (limit/load)^(1/m)",
                   "N"),
+              0, kInf, true),
+        key("dies[].fill", T::map,
+            "die fill (effect die_fill): the die's area touching the part and its share of a region, per increment "
+            "in loads.csv and at the end in summary.json; the underfill field (distance from the part) on the die "
+            "in the VTK series; 'fill: {}' measures the whole die with the default tolerance"),
+        key("dies[].fill.region", T::map,
+            "the cavity whose fill is asked, in the die's start position (the coordinates of the series' first "
+            "frame): a box (min, max), a cylinder about the press axis (radius, axis), or both; default the whole "
+            "die"),
+        key("dies[].fill.region.min", T::vector3, "box: lowest corner", "mm"),
+        key("dies[].fill.region.max", T::vector3, "box: highest corner", "mm"),
+        range(key("dies[].fill.region.radius", T::number, "cylinder: radius about the axis", "mm"), 0, kInf, true),
+        with_default(key("dies[].fill.region.axis", T::numbers, "cylinder: (x, y) of its axis, parallel to z", "mm"),
+                     "[0, 0]"),
+        range(key("dies[].fill.tolerance", T::number,
+                  "a die point this close to the part is filled; default a tenth of the bodies' mean boundary edge "
+                  "as built (it covers the chord of the part's facets on a curved die)",
+                  "mm"),
               0, kInf, true),
         key("contact_pairs", T::list, "contact between two deformable bodies (node-to-facet, Fourment 2008)"),
         required(key("contact_pairs[].master", T::string, "master body (a name from bodies)")),

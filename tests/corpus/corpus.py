@@ -229,6 +229,23 @@ case_error("type-choice", swap("law: tresca", "law: glue"), ["dies[0].friction.l
 case_error("type-generate-choice", swap("generate: quarter_cylinder", "generate: sphere"), ["bodies[0].mesh.generate"])
 case_error("type-motion-choice", swap("motion: constant", "motion: teleport"), ["dies[0].motion"])
 case_error("type-title-map", swap("title: corpus base case", "title: {a: 1}"), ["title"])
+case_error("fill-region-inverted",
+           swap("    friction: {law: tresca, factor: 0.3}\n  - name: bottom",
+                "    friction: {law: tresca, factor: 0.3}\n    fill: {region: {min: [0, 0, 5], max: [9, 9, 1]}}\n"
+                "  - name: bottom"),
+           ["dies[0].fill.region", "'min' must be below 'max'"])
+case_error("fill-region-without-max",
+           swap("    friction: {law: tresca, factor: 0.3}\n  - name: bottom",
+                "    friction: {law: tresca, factor: 0.3}\n    fill: {region: {min: [0, 0, 0]}}\n  - name: bottom"),
+           ["dies[0].fill.region", "both 'min' and 'max'"])
+case_error("fill-region-axis-without-radius",
+           swap("    friction: {law: tresca, factor: 0.3}\n  - name: bottom",
+                "    friction: {law: tresca, factor: 0.3}\n    fill: {region: {axis: [1, 2]}}\n  - name: bottom"),
+           ["dies[0].fill.region", "'radius'"])
+case_error("fill-tolerance-negative",
+           swap("    friction: {law: tresca, factor: 0.3}\n  - name: bottom",
+                "    friction: {law: tresca, factor: 0.3}\n    fill: {tolerance: -0.1}\n  - name: bottom"),
+           ["dies[0].fill.tolerance", "'-0.1'"])
 
 # --- numbers out of range -----------------------------------------------------
 for key, old, new, words in [

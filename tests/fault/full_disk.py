@@ -51,7 +51,7 @@ def torn_files(out):
                 torn.append(name)
         elif name == "loads.csv":
             lines = data.decode(errors="replace").split("\n")
-            if lines[-1] != "" or any(len(line.split(",")) != 8 for line in lines[:-1]):
+            if lines[-1] != "" or any(len(line.split(",")) != 10 for line in lines[:-1]):  # io::kLoadsColumns
                 torn.append(name)
         elif name == "summary.json":
             if not data.rstrip().endswith(b"}"):

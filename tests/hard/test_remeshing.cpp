@@ -83,12 +83,18 @@ void check_load_jump(const RemeshedRun& run, double bound) {
 
 /// The load on `surface` just after each remesh within `bound` of the straight
 /// line through the two loads before: the jump and the curve's own bend
-/// over one increment together.
+/// over one increment together. A remesh right after another has no two
+/// loads before it on one mesh (the line would run through the other's
+/// jump): check_load_jump alone judges it.
 void check_load_trend(const RemeshedRun& run, const std::string& surface, double bound) {
   const std::vector<LoadRow> load = run.out.loads(surface);
   for (const scene::RemeshRecord& r : run.end.remeshes) {
     const std::size_t k = static_cast<std::size_t>(r.increment) - 1; // row of the remesh increment
     if (k < 1 || k + 1 >= load.size()) continue;
+    const bool after_another =
+        std::any_of(run.end.remeshes.begin(), run.end.remeshes.end(),
+                    [&](const scene::RemeshRecord& o) { return o.increment == r.increment - 1; });
+    if (after_another) continue;
     const LoadRow &a = load[k - 1], &b = load[k], &after = load[k + 1];
     const double predicted =
         b.force.z() + (b.force.z() - a.force.z()) / (b.stroke - a.stroke) * (after.stroke - b.stroke);
@@ -114,9 +120,11 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
 }
 
 // The aim for a remesh's load jump at equal geometry is 3 %; this case is
-// bounded at its measured worst instead, so that a regression fails: 8.28 %
-// for the jump and 6.0 % for the trend just after a remesh, in a
-// single-threaded-BLAS run as the suite runs. The jump is the difference
+// bounded above its measured worst instead, so that a regression fails:
+// 5.8 % for the jump and 6.9 % for the trend just after a remesh (8.3 % and
+// 6.0 % in earlier builds: each remesh's mesh, and so its jump, changes with
+// any change to the flow's round-off; a run is reproducible on one process
+// whatever its threads). The jump is the difference
 // between two meshes of one body at h 1 mm (two fresh meshes differ by
 // 1.5-4.9 % between themselves); finer meshes lower it at a cost beyond the
 // suite's (docs/remeshing.md). Full stroke is asserted: a node the

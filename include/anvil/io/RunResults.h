@@ -3,6 +3,7 @@
 #pragma once
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -11,20 +12,30 @@ template <class T> class vtkSmartPointer;
 
 namespace anvil::io {
 
-/// One row of loads.csv.
 /// The columns of loads.csv: the forces on the model (a symmetry model's
-/// share of the part), then the press load of the whole part.
-inline constexpr const char* kLoadsHeader =
-    "increment,time_s,surface,stroke_mm,model_Fx_N,model_Fy_N,model_Fz_N,whole_part_press_load_N";
-inline constexpr std::size_t kLoadsColumns = 8;
+/// share of the part), the press load of the whole part, then a die's fill
+/// of the model (empty where not asked for: the die_fill effect).
+inline constexpr const char* kLoadsHeader = "increment,time_s,surface,stroke_mm,model_Fx_N,model_Fy_N,model_Fz_N,"
+                                            "whole_part_press_load_N,model_die_contact_area_mm2,die_fill";
+inline constexpr std::size_t kLoadsColumns = 10;
+/// Runs written before the fill columns.
+inline constexpr std::size_t kLoadsColumnsWithoutFill = 8;
 
+/// One row of loads.csv.
 struct LoadRow {
   int increment = 0;
   double time = 0.0;                               ///< s, at which the load was solved
   double stroke = 0.0;                             ///< mm, of the surface, at which the load was solved
   Eigen::Vector3d force = Eigen::Vector3d::Zero(); ///< N, on the body's model (quarter model: a quarter)
   double whole_part_load = 0.0;                    ///< N, the press load of the whole part
+  double contact_area =
+      std::numeric_limits<double>::quiet_NaN(); ///< mm², of the die touching the model; NaN: not measured
+  double fill =
+      std::numeric_limits<double>::quiet_NaN(); ///< share of the die's fill region touching; NaN: not measured
 };
+
+/// The comma-separated fields of `line`, empty ones included ("1,,2," has four).
+std::vector<std::string> csv_fields(const std::string& line);
 
 /// The rows of `directory`/loads.csv for one surface, in order. Throws
 /// InputError naming file and line when the file is missing or malformed.

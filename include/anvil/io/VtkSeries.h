@@ -24,15 +24,19 @@ public:
   /// Files go to `directory` (created beforehand); the collection is `<name>.pvd`.
   VtkSeries(std::string directory, std::string name);
 
-  /// Writes `<name>_<body>_<increment>.vtu` and refreshes the .pvd. Throws
-  /// RunError if VTK cannot write, or if a value is not finite (no NaN is
-  /// ever written: the run stops before).
+  /// Writes `<name>_<body>_<increment>.vtu` and refreshes the .pvd, with
+  /// `field_data` on the whole dataset. Throws RunError if VTK cannot
+  /// write, or if a value is not finite (no NaN is ever written: the run
+  /// stops before).
   void write(int increment, double time, int body, const std::string& body_name, const mesh::TetMesh& mesh,
-             const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields);
+             const std::vector<Field>& point_fields, const std::vector<Field>& cell_fields,
+             const std::vector<Field>& field_data = {});
 
-  /// Writes a triangulated surface (a die) as `<name>_<part_name>_<increment>.vtu`.
+  /// Writes a triangulated surface (a die) as `<name>_<part_name>_<increment>.vtu`,
+  /// with fields on its vertices.
   void write_surface(int increment, double time, int part, const std::string& part_name,
-                     const std::vector<mesh::Point>& vertices, const std::vector<std::array<int, 3>>& faces);
+                     const std::vector<mesh::Point>& vertices, const std::vector<std::array<int, 3>>& faces,
+                     const std::vector<Field>& point_fields = {});
 
   /// One dataset of the collection.
   using Entry = scene::OutputFrame;
@@ -46,7 +50,7 @@ private:
   void write_grid(int increment, double time, int part, const std::string& part_name,
                   const std::vector<mesh::Point>& points, int cell_type, int nodes_per_cell,
                   const std::vector<long>& connectivity, const std::vector<Field>& point_fields,
-                  const std::vector<Field>& cell_fields);
+                  const std::vector<Field>& cell_fields, const std::vector<Field>& field_data);
   void write_collection() const;
 
   std::string directory_, name_;

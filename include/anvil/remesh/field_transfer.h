@@ -19,6 +19,9 @@ struct Location {
   int tet;
   std::array<double, 4> weights;
   bool inside; ///< the point is in the tet (not the closest tet to a point outside the mesh)
+  /// The barycentric coordinates themselves, negative ones too: `weights`
+  /// inside, the tet's linear field extended outside.
+  std::array<double, 4> linear;
 };
 
 /// Finds points in an old mesh: a VTK static cell locator built once.
@@ -44,9 +47,11 @@ private:
 std::vector<mesh::Point> centroids(const mesh::TetMesh& m);
 
 /// Nodal field with `stride` values per node (e.g. 4: velocity and pressure),
-/// interpolated linearly at `at`.
+/// interpolated linearly at `at`; outside the old mesh the nearest tet's
+/// values bounded (clamped weights), or with `extend` its linear field
+/// extended (for a smooth map, such as where the material started).
 Eigen::VectorXd interpolate_nodal(const mesh::TetMesh& old_mesh, const Eigen::VectorXd& values, int stride,
-                                  const std::vector<Location>& at);
+                                  const std::vector<Location>& at, bool extend = false);
 
 /// Element field (one value per tet, e.g. ε̄) onto the elements of
 /// `new_mesh` by a conservative remap (Dukowicz and Kodis 1987; Farrell et

@@ -102,6 +102,7 @@ void record_final_loads(const scene::Scene& scene, scene::Discretisation& disc, 
 
 /// Accepts the solution of a case without a time loop: increment 1 at t = 0,
 /// the geometry as it is.
-void accept_without_motion(const scene::Scene& scene, const IncrementOutcome& inc, scene::RunState& state);
+void accept_without_motion(const scene::Scene& scene, const IncrementOutcome& inc, scene::RunState& state,
+                           Timers& timers);
 
 } // namespace anvil::run

@@ -2,11 +2,13 @@
 #pragma once
 #include "anvil/contact/BodyContact.h"
 #include "anvil/contact/Friction.h"
+#include "anvil/contact/die_fill.h"
 #include "anvil/material/Material.h"
 #include "anvil/scene/BoundaryCondition.h"
 #include "anvil/solver/IncrementSolver.h"
 #include "anvil/thermal/ThermalMaterial.h"
 
+#include <Eigen/Geometry>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -57,6 +59,10 @@ struct DieSpec {
   double temperature = 20.0;          ///< °C, held (a die is a heat sink)
   ContactHeatSpec heat;               ///< to the bodies it touches
   double friction_heat_to_body = 0.5; ///< share of the friction heat into the body
+  // Die fill (effect die_fill), when `fill`.
+  bool fill = false;
+  contact::FillRegion fill_region; ///< die at its start position; unbounded: the whole die
+  double fill_tolerance = 0.0;     ///< mm; 0: a tenth of the bodies' mean boundary edge as built
   std::string source;
 };
 
@@ -147,6 +153,8 @@ struct Case {
   ThermalSpec thermal;
   int vtk_every = 1;         ///< write the VTK series every N increments (and the last)
   int checkpoint_every = 10; ///< HDF5 checkpoint every N increments (and the last); 0 = never
+  int flow_line_axis = -1;   ///< output.flow_lines: 0, 1, 2 for planes normal to x, y, z; −1: none
+  int flow_line_count = 12;  ///< planes of material
 };
 
 /// Reads and checks a case file, with command-line `overrides` applied first:

@@ -44,6 +44,11 @@ struct LoadRecord {
   /// friction forces that the whole part would balance: they are in `force`
   /// only.
   double press_load() const { return std::abs(force.z()); }
+  /// Die fill of a die that asks for it (effect die_fill) at the same
+  /// geometry: mm² touching the part, and that area's share of the fill
+  /// region; NaN otherwise (an empty cell in loads.csv).
+  double contact_area = std::numeric_limits<double>::quiet_NaN();
+  double fill = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Volume budget (mm³): where volume went, by cause.
@@ -108,6 +113,9 @@ struct RunState {
   std::vector<double> elastic_stress;
   /// T (°C) per node in a thermal scene; empty otherwise.
   std::vector<double> temperature;
+  /// (x, y, z) per node: where its material was at the start (mm), carried
+  /// through remeshes (output.flow_lines); empty otherwise.
+  std::vector<double> material_position;
   HeatBudget heat;
   double transfer_time = 0.0; ///< s of the transfer phase done (thermal.transfer_time), before increment 1
   std::vector<DieState> dies;

@@ -3,6 +3,7 @@
 // dies, the load surfaces of loads.csv, the effects and the process scales.
 // The time loop reads it and never changes it.
 #pragma once
+#include "anvil/contact/die_fill.h"
 #include "anvil/core/Timers.h"
 #include "anvil/material/Material.h"
 #include "anvil/mesh/TetMesh.h"
@@ -80,6 +81,14 @@ struct Scene {
   /// normal to one of its symmetry planes, which contain the press axis z. A
   /// plane normal to z halves the part's height, not the press load.
   int symmetry_copies = 1;
+  /// output.flow_lines: the coordinates along its axis of the planes of
+  /// material drawn as flow lines, evenly through the bodies' extent at the
+  /// start; empty without flow lines.
+  std::vector<double> flow_line_levels;
+  /// The model's side of its symmetry planes (unbounded along an axis
+  /// without one): the whole part is its mirror images.
+  Eigen::AlignedBox3d model_side{Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity()),
+                                 Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity())};
 
   bool has_contact() const { return !dies.empty() || !input.contact_pairs.empty(); }
   /// ε̇ of the process (1/s): v_ref over the scene size.
@@ -91,6 +100,14 @@ struct Scene {
   /// "quarter model (symmetry planes normal to x and y)", "half model (...)", "whole part".
   std::string model_text() const;
 };
+
+/// mm: a point of die `die` this close to the part is filled (dies[].fill.tolerance).
+double fill_tolerance(const Scene& scene, int die);
+
+/// The fill of each die at the geometry `mesh`, the dies at `dies_now`
+/// (docs/reading-a-run.md §3); empty for a die that does not ask for it.
+std::vector<std::optional<contact::DieFill>> die_fills(const Scene& scene, const mesh::TetMesh& mesh,
+                                                       std::span<const DieState> dies_now, bool with_underfill);
 
 /// The state of a run that starts: the bodies as built, at rest, t = 0.
 RunState initial_state(const Scene& scene);
