@@ -1,39 +1,13 @@
 #include "anvil/contact/die_fill.h"
 
 #include "anvil/contact/SurfaceSearch.h"
+#include "anvil/mesh/triangle_geometry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace anvil::contact {
-
-namespace {
-
-/// The point of triangle abc nearest to p (Ericson, Real-Time Collision
-/// Detection, 2005, §5.1.5: by the Voronoi regions of its corners and edges).
-mesh::Point nearest_on_triangle(const mesh::Point& p, const mesh::Point& a, const mesh::Point& b,
-                                const mesh::Point& c) {
-  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return a;
-  const Eigen::Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
-  const Eigen::Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  const double scale = 1.0 / (va + vb + vc);
-  return a + ab * (vb * scale) + ac * (vc * scale);
-}
-
-} // namespace
 
 PartSurface::PartSurface(const mesh::TetMesh& mesh)
     : mesh_(&mesh), search_(std::make_unique<SurfaceSearch>(mesh.nodes, mesh.boundary_faces)) {}
@@ -52,14 +26,14 @@ PartSurface::Nearest PartSurface::nearest(const mesh::Point& x, const std::vecto
     const mesh::Triangle& f = mesh_->boundary_faces[face];
     nearest = std::min(
         nearest,
-        (x - nearest_on_triangle(x, mesh_->nodes[f[0]], mesh_->nodes[f[1]], mesh_->nodes[f[2]])).squaredNorm());
+        (x - mesh::nearest_on_triangle(x, mesh_->nodes[f[0]], mesh_->nodes[f[1]], mesh_->nodes[f[2]])).squaredNorm());
   }
   const double distance = std::sqrt(nearest);
   bool behind = false, in_front = false;
   for (const int face : faces) {
     const mesh::Triangle& f = mesh_->boundary_faces[face];
     const mesh::Point &a = mesh_->nodes[f[0]], &b = mesh_->nodes[f[1]], &c = mesh_->nodes[f[2]];
-    const mesh::Point on = nearest_on_triangle(x, a, b, c);
+    const mesh::Point on = mesh::nearest_on_triangle(x, a, b, c);
     if ((x - on).norm() > distance + 1e-9 * (b - a).norm()) continue; // not a nearest face
     ((x - on).dot((b - a).cross(c - a)) >= 0.0 ? in_front : behind) = true;
   }

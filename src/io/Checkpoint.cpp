@@ -12,7 +12,8 @@
 // compares it), /temperature (n, thermal scenes; empty otherwise) and /heat
 // (8: the heat budget and the transfer time done; both absent before they
 // were kept), /material_position (n×3, flow lines; empty otherwise, absent
-// before them), scalar attributes on the root group.
+// before them), /folds (r×6: increment, body, centre, area; absent before
+// them), scalar attributes on the root group.
 #include "anvil/io/Checkpoint.h"
 
 #include "anvil/core/error.h"
@@ -235,6 +236,11 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
     write_array(file, "temperature", H5T_NATIVE_DOUBLE, s.temperature.data(), s.temperature.size(), 0);
     write_array(file, "material_position", H5T_NATIVE_DOUBLE, s.material_position.data(),
                 s.material_position.size() / 3, 3);
+    std::vector<double> folds;
+    for (const scene::FoldRecord& f : s.folds)
+      folds.insert(folds.end(),
+                   {double(f.increment), double(f.body), f.centre.x(), f.centre.y(), f.centre.z(), f.area});
+    write_array(file, "folds", H5T_NATIVE_DOUBLE, folds.data(), s.folds.size(), 6);
     const scene::HeatBudget& h = s.heat;
     const std::array<double, 8> heat{h.plastic, h.friction,  h.to_dies,      h.to_environment,
                                      h.stored,  h.remeshing, h.initial_heat, s.transfer_time};
@@ -395,6 +401,17 @@ RunState read_state(hid_t file, const std::string& path) {
   }
   if (H5Lexists(file, "material_position", H5P_DEFAULT) > 0) // absent before flow lines
     read_finite_array(file, path, "material_position", s.material_position, 3);
+  if (H5Lexists(file, "folds", H5P_DEFAULT) > 0) { // absent before folds
+    std::vector<double> folds;
+    read_finite_array(file, path, "folds", folds, 6);
+    for (std::size_t i = 0; i < folds.size(); i += 6) {
+      if (!(folds[i] >= 0.0 && folds[i] <= s.increment && folds[i + 1] >= 0.0 && folds[i + 1] < 1e6 &&
+            folds[i + 5] >= 0.0))
+        throw InputError(path + ": checkpoint dataset 'folds', record " + std::to_string(i / 6 + 1) +
+                         ": increment, body or area out of range (damaged file)");
+      s.folds.push_back({int(folds[i]), int(folds[i + 1]), {folds[i + 2], folds[i + 3], folds[i + 4]}, folds[i + 5]});
+    }
+  }
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
       (!s.temperature.empty() && s.temperature.size() != s.mesh.nodes.size()) ||
       (!s.material_position.empty() && s.material_position.size() != 3 * s.mesh.nodes.size()) ||

@@ -4,6 +4,8 @@
 
 #include "anvil/io/RunResults.h"
 
+#include "anvil/contact/folds.h"
+
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
@@ -153,6 +155,16 @@ void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation
   std::vector<Field> point_fields{velocity, pressure};
   if (scene.has_contact()) point_fields.insert(point_fields.end(), {contact_status, contact_pressure, gap});
   if (!state.temperature.empty()) point_fields.push_back({"temperature", 1, state.temperature});
+  // Folds: 1 on the nodes of the faces where a body's surface meets itself.
+  if (scene.input.detect_folds && scene.input.time.enabled) {
+    Field fold{"fold", 1, std::vector<double>(mesh.nodes.size(), 0.0)};
+    const contact::FoldScan scan = contact::find_folds(mesh, state.bodies, disc.symmetry_faces, scene.reference_length);
+    for (std::size_t f = 0; f < scan.faces.size(); ++f)
+      if (scan.faces[f])
+        for (const int n : mesh.boundary_faces[f])
+          fold.values[n] = 1.0;
+    point_fields.push_back(std::move(fold));
+  }
   // Flow lines: the coordinate along the planes' normal where each node's
   // material started, and the planes' levels (docs/reading-a-run.md §4).
   std::vector<Field> field_data;
@@ -355,6 +367,24 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
   // The press load (along z) of each load surface, of the whole part and of
   // the model (a symmetry model's share): its peak and its last value.
   json.end_array().member("model", scene.model_text()).member("symmetry_copies", scene.symmetry_copies);
+  if (scene.input.detect_folds) {
+    // Each fold: the increment after which it was first found, where it was
+    // last found and the largest area it covered (both sides).
+    json.key("folds").begin_array();
+    for (const scene::FoldRecord& f : state.folds)
+      json.begin_object()
+          .member("increment", f.increment)
+          .member("body", scene.bodies[f.body].name)
+          .key("centre_mm")
+          .begin_array()
+          .value(f.centre.x())
+          .value(f.centre.y())
+          .value(f.centre.z())
+          .end_array()
+          .member("area_model_mm2", f.area)
+          .end_object();
+    json.end_array();
+  }
   json.key("press_loads_N").begin_array();
   for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
     double peak = 0.0, last_load = 0.0;

@@ -14,6 +14,7 @@
 #include "anvil/remesh/Remesher.h"
 #include "anvil/run/Increment.h"
 #include "anvil/run/TimeStepControl.h"
+#include "anvil/run/fold_watch.h"
 #include "anvil/run/load_check.h"
 #include "anvil/scene/Discretisation.h"
 #include "anvil/scene/Scene.h"
@@ -316,6 +317,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
     if (disc.heat) advance_heat(scene, disc, inc, state, timers);
     log_progress(scene, disc, state, inc, time_left.update(clock.progress(state), seconds_since(start)),
                  (timers.seconds("effect heat") - heat_before) / seconds_since(increment_start));
+    if (c.detect_folds) watch_folds(scene, disc, state, timers);
     if (c.remeshing.enabled && !clock.stop(state)) {
       const std::vector<remesh::RemeshDue> due = remesh::remesh_due(scene, state, inc.time_step);
       if (!due.empty()) {

@@ -338,6 +338,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.picture_mirror = doc.boolean(output, "picture_mirror", "output.picture_mirror");
   c.vtk_every = doc.integer(output, "vtk_every", "output.vtk_every");
   c.checkpoint_every = doc.integer(output, "checkpoint_every", "output.checkpoint_every");
+  c.detect_folds = doc.boolean(output, "folds", "output.folds");
   if (const YAML::Node lines = output["flow_lines"]) {
     if (!root["time"])
       doc.fail(lines, "output.flow_lines", "flow lines follow the material over time: the case needs a 'time' section");

@@ -364,6 +364,10 @@ void check_resumable(const Scene& scene, const RunState& state, const std::strin
       throw InputError(path + ": checkpoint dataset 'outputs', record " + std::to_string(i + 1) + ": part " +
                        std::to_string(state.outputs[i].part) + " out of range (the bodies and " +
                        std::to_string(scene.dies.size()) + " dies; damaged file)");
+  for (std::size_t i = 0; i < state.folds.size(); ++i)
+    if (state.folds[i].body >= static_cast<int>(scene.bodies.size()))
+      throw InputError(path + ": checkpoint dataset 'folds', record " + std::to_string(i + 1) + ": body " +
+                       std::to_string(state.folds[i].body) + " out of range (damaged file)");
   for (std::size_t i = 0; i < state.remeshes.size(); ++i)
     if (state.remeshes[i].body >= static_cast<int>(scene.bodies.size()))
       throw InputError(path + ": checkpoint dataset 'remeshes', record " + std::to_string(i + 1) + ": body " +

@@ -35,6 +35,8 @@ const std::vector<Effect>& effect_registry() {
       {"thermal_softening", "flow stress at the local temperature (Hansel-Spittel T terms, Norton-Hoff K(T))"},
       {"flow_lines", "material lines: each node carries where its material started, interpolated through remeshes "
                      "(docs/reading-a-run.md §4)"},
+      {"folds", "folds and laps: a body's surface meeting itself, found after each increment "
+                "(docs/reading-a-run.md §5)"},
       {"die_fill", "die fill: each asking die's area touching the part, its share of a region, the underfill field "
                    "(docs/reading-a-run.md §3)"},
   };
@@ -88,6 +90,7 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
   for (const DieSpec& d : c.dies)
     if (d.fill) add("die_fill");
   if (c.flow_line_axis >= 0) add("flow_lines");
+  if (c.detect_folds && c.time.enabled) add("folds");
   if (c.thermal.enabled) {
     add("heat");
     add("air_cooling");

@@ -135,6 +135,10 @@ const std::vector<KeySpec>& case_schema() {
                                "planes, evenly spaced through the bodies' extent along the axis at the start"),
                            1, 200),
                      "12"),
+        with_default(key("output.folds", T::boolean,
+                         "folds and laps (effect folds): a body's surface meeting itself, found after each "
+                         "increment, logged, in summary.json and marked in the VTK series (docs/reading-a-run.md §5)"),
+                     "false"),
         key("solver", T::map, "Newton and linear solver settings"),
         with_default(
             range(key("solver.tolerance", T::number, "Newton: relative tolerance on the force and div residuals"),

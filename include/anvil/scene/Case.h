@@ -155,6 +155,7 @@ struct Case {
   int checkpoint_every = 10; ///< HDF5 checkpoint every N increments (and the last); 0 = never
   int flow_line_axis = -1;   ///< output.flow_lines: 0, 1, 2 for planes normal to x, y, z; −1: none
   int flow_line_count = 12;  ///< planes of material
+  bool detect_folds = false; ///< output.folds
 };
 
 /// Reads and checks a case file, with command-line `overrides` applied first:

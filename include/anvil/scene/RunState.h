@@ -85,6 +85,14 @@ struct RemeshRecord {
   double material_change = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// A fold (effect folds): where a body's surface met itself.
+struct FoldRecord {
+  int increment; ///< first found after this increment
+  int body;
+  Eigen::Vector3d centre; ///< mm, where it was last found
+  double area;            ///< mm², the largest it was found, both sides
+};
+
 /// Heat budget of a thermal run (mJ), summed over its heat steps
 /// (summary.json "heat"). The bodies' balance is
 ///   stored = plastic + friction − to_dies − to_environment,
@@ -125,6 +133,7 @@ struct RunState {
   /// Per increment: Newton iterations and Krylov iterations (0 with a direct solver).
   std::vector<std::array<int, 2>> iterations;
   std::vector<RemeshRecord> remeshes;
+  std::vector<FoldRecord> folds;
   std::vector<OutputFrame> outputs; ///< the VTK series written so far (io::VtkSeries)
   /// mm³ per body of its mesh inside the dies (die::overlap_volume), measured
   /// whenever the mesh or the dies move; not stored: measured again on resume.
