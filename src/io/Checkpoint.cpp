@@ -199,6 +199,10 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
                        r.worst_quality_before, r.worst_quality_after, r.volume_change, r.strain_integral_change,
                        r.strain_max_change, r.seconds, r.load_old_mesh, r.load_new_mesh, r.material_change});
     write_array(file, "remeshes", H5T_NATIVE_DOUBLE, remeshes.data(), s.remeshes.size(), 13);
+    std::vector<double> die_depths;
+    for (const RemeshRecord& r : s.remeshes)
+      die_depths.push_back(r.die_depth_after);
+    write_array(file, "remesh_die_depth", H5T_NATIVE_DOUBLE, die_depths.data(), die_depths.size(), 0);
 
     std::vector<double> nodes;
     for (const mesh::Point& p : s.mesh.nodes)
@@ -309,6 +313,19 @@ RunState read_state(hid_t file, const std::string& path) {
     s.remeshes.push_back({int(r[0]), int(r[1]), int(r[2]), int(r[3]), r[4], r[5], r[6], r[7], r[8], r[9]});
     if (per_remesh >= 12) s.remeshes.back().load_old_mesh = r[10], s.remeshes.back().load_new_mesh = r[11];
     if (per_remesh >= 13) s.remeshes.back().material_change = r[12];
+  }
+  if (H5Lexists(file, "remesh_die_depth", H5P_DEFAULT) > 0) { // absent before it was kept
+    std::vector<double> depths;
+    read_array(file, path, "remesh_die_depth", H5T_NATIVE_DOUBLE, depths, 1);
+    if (depths.size() != s.remeshes.size())
+      throw InputError(path + ": checkpoint dataset 'remesh_die_depth' has " + std::to_string(depths.size()) +
+                       " records for " + std::to_string(s.remeshes.size()) + " remeshes (damaged file)");
+    for (std::size_t i = 0; i < depths.size(); ++i) {
+      if (!std::isnan(depths[i]) && !(depths[i] >= 0.0 && std::isfinite(depths[i])))
+        throw InputError(path + ": checkpoint dataset 'remesh_die_depth', record " + std::to_string(i + 1) +
+                         ": expected a depth >= 0 (damaged file)");
+      s.remeshes[i].die_depth_after = depths[i];
+    }
   }
   read_finite_array(file, path, "nodes", nodes, 3);
   for (std::size_t i = 0; i < nodes.size(); i += 3)

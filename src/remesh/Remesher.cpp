@@ -313,6 +313,17 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, cons
   return out;
 }
 
+/// Each die's surface vertices where the die is now.
+std::vector<std::vector<mesh::Point>> dies_in_place(const scene::Scene& scene, const scene::RunState& state) {
+  std::vector<std::vector<mesh::Point>> vertices;
+  for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+    vertices.push_back(scene.dies[d].surface->triangles().vertices);
+    for (mesh::Point& x : vertices.back())
+      x += state.dies[d].displacement;
+  }
+  return vertices;
+}
+
 void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
                    std::span<const int> touching_die, std::span<const double> rate, double time_step, Timers& timers) {
   Timers::Scope scope(timers, "remeshing");
@@ -512,11 +523,17 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     Timers::Scope overlap(timers, "die overlap");
     state.inside_dies = scene::inside_dies(scene, state);
   }
+  const std::vector<std::vector<mesh::Point>> die_vertices = dies_in_place(scene, state);
   for (std::size_t r = first_record; r < state.remeshes.size(); ++r) {
     scene::RemeshRecord& record = state.remeshes[r];
     const int b = record.body;
     record.material_change =
         (mesh::volume(state.mesh, state.bodies[b]) - state.inside_dies[b]) / material_before[b] - 1.0;
+    if (!scene.dies.empty()) {
+      record.die_depth_after = 0.0;
+      for (const DieFeature& f : die_feature_depths(state.mesh, state.bodies[b], die_vertices))
+        record.die_depth_after = std::max(record.die_depth_after, f.depth);
+    }
     if (!scene.dies.empty())
       log::info("    '%s' inside the dies: %.3f%% of its initial volume (%.3f%% before the remesh); material %+.4f%%",
                 scene.bodies[b].name.c_str(), 100.0 * state.inside_dies[b] / scene.bodies[b].initial_volume,
@@ -530,6 +547,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
   const scene::RemeshSpec& spec = scene.input.remeshing;
   std::vector<RemeshDue> due;
   std::vector<std::vector<mesh::Point>> die_vertices; // in place, gathered once when a body needs them
+  bool dies_gathered = false;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& body = scene.bodies[b];
     if (body.law->is_elastic()) continue; // an elastic die keeps its mesh
@@ -549,14 +567,19 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     else if (spec.every > 0 && state.increment % spec.every == 0)
       std::snprintf(why, sizeof why, "every %d increments", spec.every);
     else if (!scene.dies.empty()) {
-      for (std::size_t d = die_vertices.size(); d < scene.dies.size(); ++d) {
-        die_vertices.push_back(scene.dies[d].surface->triangles().vertices);
-        for (mesh::Point& x : die_vertices.back())
-          x += state.dies[d].displacement;
-      }
+      if (!dies_gathered) die_vertices = dies_in_place(scene, state), dies_gathered = true;
+      // A die edge the last remesh could not fit (it left it this deep) is
+      // remeshed for again only once it has sunk half a trigger's depth
+      // further: else the body would be remeshed every increment for
+      // nothing. (A whole trigger's depth let elements under a rib's edge of
+      // the connecting rod be crushed inside out before the remesh came.)
+      const double trigger = spec.die_penetration * body.remesh_size;
+      double left = 0.0;
+      for (const scene::RemeshRecord& r : state.remeshes)
+        if (r.body == int(b)) left = std::isnan(r.die_depth_after) ? 0.0 : r.die_depth_after;
       const std::vector<DieFeature> inside = die_feature_depths(state.mesh, state.bodies[b], die_vertices);
       for (std::size_t d = 0; d < scene.dies.size() && !why[0]; ++d)
-        if (inside[d].depth > spec.die_penetration * body.remesh_size) {
+        if (inside[d].depth > std::max(trigger, left + 0.5 * trigger)) {
           const mesh::Point& x = inside[d].vertex;
           std::snprintf(why, sizeof why, "the vertex of die '%s' at %.3g, %.3g, %.3g mm is %.3g mm inside",
                         scene.dies[d].name.c_str(), x.x(), x.y(), x.z(), inside[d].depth);

@@ -83,6 +83,9 @@ struct RemeshRecord {
   /// the dies) by the remesh, put-back and give-back included; NaN from a
   /// checkpoint written before it was kept.
   double material_change = std::numeric_limits<double>::quiet_NaN();
+  /// mm, the deepest die vertex inside the body after the remesh (what the
+  /// remesh could not fit); NaN without dies or from an older checkpoint.
+  double die_depth_after = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A fold (effect folds): where a body's surface met itself.
