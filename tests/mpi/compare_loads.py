@@ -52,7 +52,10 @@ def largest_difference(reference, other, columns=("model_Fx_N", "model_Fy_N", "m
 
 
 def first_remesh(loads):
-    """Increment of the first remesh of the run that wrote `loads`, or None."""
+    """Increment of the first remesh of the run that wrote `loads`, or None.
+    The remesh follows that increment: row k of loads.csv is the geometry
+    after k increments, so from that increment's row on the loads are
+    solved on the new mesh."""
     try:
         with open(os.path.join(os.path.dirname(loads), "summary.json")) as f:
             remeshes = json.load(f).get("remeshing", {}).get("remeshes", [])
@@ -94,11 +97,11 @@ def main():
         return 2
     everything = rows(sys.argv[1])
     remesh = first_remesh(sys.argv[1])
-    reference = everything if remesh is None else up_to(everything, remesh)
+    reference = everything if remesh is None else up_to(everything, remesh - 1)
     status = 0
     for path in sys.argv[2:]:
         other_everything = rows(path)
-        other = other_everything if remesh is None else up_to(other_everything, remesh)
+        other = other_everything if remesh is None else up_to(other_everything, remesh - 1)
         worst, where, same = largest_difference(reference, other)
         at = f" ({where[0]}, increment {where[1]}, {where[2]})" if where else ""
         press = largest_difference(reference, other, ("model_Fz_N",))[0]
@@ -108,7 +111,7 @@ def main():
         line += f", largest difference {worst:.2e} of the peak load{at}; press load Fz {press:.2e}"
         line += "" if same else " (the rows differ)"
         if remesh is not None:
-            differences = at_equal_time(everything, other_everything, remesh)
+            differences = at_equal_time(everything, other_everything, remesh - 1)
             press = differences["model_Fz_N"]
             largest = max((d for column in differences.values() for d in column), default=0.0)
             line += (f"; after it, at equal time ({len(everything) - len(reference)} / "
