@@ -93,18 +93,10 @@ std::vector<std::string> renderer_command(const std::vector<std::string>& argume
   return args;
 }
 
-std::vector<char*> c_arguments(std::vector<std::string>& args) {
-  std::vector<char*> c_args;
-  for (std::string& a : args)
-    c_args.push_back(a.data());
-  c_args.push_back(nullptr);
-  return c_args;
-}
-
 /// `anvil render ...`: becomes anvil_render with the same arguments.
 int render(int argc, char** argv) {
   std::vector<std::string> args = renderer_command(std::vector<std::string>(argv + 2, argv + argc));
-  std::vector<char*> c_args = c_arguments(args);
+  std::vector<char*> c_args = anvil::subprocess::argument_vector(args);
   execvp(c_args[0], c_args.data());
   return usage_error("cannot start " + args.front() + ": " + std::strerror(errno) +
                      (args.front() == "xvfb-run" ? " (tools/setup installs xvfb)" : ""));

@@ -13,8 +13,7 @@
 extern char** environ;
 
 namespace anvil::subprocess {
-namespace {
-/// execve's argv over `arguments` (which must outlive it), null-terminated.
+
 std::vector<char*> argument_vector(std::vector<std::string>& arguments) {
   std::vector<char*> argv;
   for (std::string& a : arguments)
@@ -22,7 +21,6 @@ std::vector<char*> argument_vector(std::vector<std::string>& arguments) {
   argv.push_back(nullptr);
   return argv;
 }
-} // namespace
 
 int run(const std::vector<std::string>& arguments, const Options& options) {
   if (arguments.empty()) return -1;

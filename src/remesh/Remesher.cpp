@@ -547,7 +547,6 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
   const scene::RemeshSpec& spec = scene.input.remeshing;
   std::vector<RemeshDue> due;
   std::vector<std::vector<mesh::Point>> die_vertices; // in place, gathered once when a body needs them
-  bool dies_gathered = false;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const scene::Body& body = scene.bodies[b];
     if (body.law->is_elastic()) continue; // an elastic die keeps its mesh
@@ -567,7 +566,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     else if (spec.every > 0 && state.increment % spec.every == 0)
       std::snprintf(why, sizeof why, "every %d increments", spec.every);
     else if (!scene.dies.empty()) {
-      if (!dies_gathered) die_vertices = dies_in_place(scene, state), dies_gathered = true;
+      if (die_vertices.empty()) die_vertices = dies_in_place(scene, state); // the scene has dies here
       // A die edge the last remesh could not fit (it left it this deep) is
       // remeshed for again only once it has sunk half a trigger's depth
       // further: else the body would be remeshed every increment for

@@ -82,15 +82,13 @@ Location PointLocator::locate(const mesh::Point& p) const {
   tets_in_box(p, p, candidates);
   int best = -1;
   double most_inside = -std::numeric_limits<double>::infinity();
+  std::array<double, 4> linear{}; // the best tet's barycentric coordinates
   for (const int e : candidates) {
     const std::array<double, 4> w = barycentric(mesh_, e, p);
     const double lowest = *std::min_element(w.begin(), w.end());
-    if (lowest > most_inside || (lowest == most_inside && e < best)) most_inside = lowest, best = e;
+    if (lowest > most_inside || (lowest == most_inside && e < best)) most_inside = lowest, best = e, linear = w;
   }
-  if (best >= 0 && most_inside >= -kOnFace) {
-    const std::array<double, 4> w = barycentric(mesh_, best, p);
-    return {best, clamped(w), true, w};
-  }
+  if (best >= 0 && most_inside >= -kOnFace) return {best, clamped(linear), true, linear};
   // Outside the mesh (a boundary node a hair off the old surface): the tets
   // within VTK's closest distance, and among them the nearest by the clamped
   // weights' point.
@@ -104,15 +102,15 @@ Location PointLocator::locate(const mesh::Point& p) const {
   double nearest = std::numeric_limits<double>::infinity();
   std::array<double, 4> weights{};
   for (const int e : candidates) {
-    const std::array<double, 4> w = clamped(barycentric(mesh_, e, p));
+    const std::array<double, 4> unclamped = barycentric(mesh_, e, p), w = clamped(unclamped);
     mesh::Point at = mesh::Point::Zero();
     for (int a = 0; a < 4; ++a)
       at += w[a] * mesh_.nodes[mesh_.tets[e][a]];
     const double d = (at - p).squaredNorm();
-    if (d < nearest || (d == nearest && e < best)) nearest = d, best = e, weights = w;
+    if (d < nearest || (d == nearest && e < best)) nearest = d, best = e, weights = w, linear = unclamped;
   }
-  if (best < 0) best = static_cast<int>(tet), weights = clamped(barycentric(mesh_, best, p));
-  return {best, weights, false, barycentric(mesh_, best, p)};
+  if (best < 0) best = static_cast<int>(tet), linear = barycentric(mesh_, best, p), weights = clamped(linear);
+  return {best, weights, false, linear};
 }
 
 std::vector<Location> PointLocator::locate(const std::vector<mesh::Point>& points) const {

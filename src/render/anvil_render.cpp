@@ -208,14 +208,14 @@ vtkSmartPointer<vtkPolyData> surface_of(vtkUnstructuredGrid* grid, bool mirror) 
   return surface->GetOutput();
 }
 
-/// A mapper colouring `grid`'s surface by `field` over `range` with `colours`.
-vtkSmartPointer<vtkPolyDataMapper> coloured(vtkUnstructuredGrid* grid, const std::string& field, bool mirror,
+/// A mapper colouring `shown` (a surface or a section) by `field` over `range` with `colours`.
+vtkSmartPointer<vtkPolyDataMapper> coloured(vtkPolyData* shown, const std::string& field,
                                             const std::array<double, 2>& range, vtkLookupTable* colours) {
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(surface_of(grid, mirror));
+  mapper->SetInputData(shown);
   mapper->SetLookupTable(colours);
   mapper->SetScalarRange(range.data());
-  if (grid->GetPointData()->HasArray(field.c_str()))
+  if (shown->GetPointData()->HasArray(field.c_str()))
     mapper->SetScalarModeToUsePointFieldData();
   else
     mapper->SetScalarModeToUseCellFieldData();
@@ -276,15 +276,8 @@ vtkSmartPointer<vtkActor> add_flow_lines(vtkRenderer* renderer, const Options& o
     return vtkSmartPointer<vtkPolyData>(cutter->GetOutput());
   };
   const vtkSmartPointer<vtkPolyData> section = cut(bodies);
-  vtkNew<vtkPolyDataMapper> section_mapper;
-  section_mapper->SetInputData(mirrored_across_x(section, mirror));
-  section_mapper->SetLookupTable(colours);
-  section_mapper->SetScalarRange(range.data());
-  if (section->GetPointData()->HasArray(field.c_str()))
-    section_mapper->SetScalarModeToUsePointFieldData();
-  else
-    section_mapper->SetScalarModeToUseCellFieldData();
-  section_mapper->SelectColorArray(field.c_str());
+  const vtkSmartPointer<vtkPolyDataMapper> section_mapper =
+      coloured(mirrored_across_x(section, mirror), field, range, colours);
   section_mapper->SetResolveCoincidentTopologyToPolygonOffset(); // the lines in front of the section they lie on
   vtkNew<vtkActor> section_actor;
   section_actor->SetMapper(section_mapper);
@@ -352,13 +345,13 @@ vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEn
       part = grey(grids.front(), 0.3);
     else {
       part = vtkSmartPointer<vtkActor>::New();
-      part->SetMapper(coloured(grids.front(), field, o.mirror, range, colours));
+      part->SetMapper(coloured(surface_of(grids.front(), o.mirror), field, range, colours));
       renderer->AddActor(part);
     }
     for (std::size_t p = 1; p < grids.size(); ++p)
       if (on_dies && has_field(grids[p], field)) {
         vtkNew<vtkActor> die;
-        die->SetMapper(coloured(grids[p], field, o.mirror, range, colours));
+        die->SetMapper(coloured(surface_of(grids[p], o.mirror), field, range, colours));
         renderer->AddActor(die);
       } else
         grey(grids[p], 0.2);

@@ -14,6 +14,9 @@ struct Options {
   bool quiet_errors = true; ///< standard error to /dev/null
 };
 
+/// execve's argv over `arguments` (which must outlive it), null-terminated.
+std::vector<char*> argument_vector(std::vector<std::string>& arguments);
+
 /// Runs `arguments` (arguments[0] looked up on PATH) and waits for it.
 /// Returns its exit status, or -1 when it could not be started or was killed
 /// by a signal.
