@@ -213,6 +213,7 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
           in.bubble_velocity = unknowns.bubble.segment<3>(3 * e);
           in.state = states.empty() ? material::PointState{} : states[e];
           in.tangent_sensitivity_floor = tangent_sensitivity_floor_;
+          in.quadrature_degree = quadrature_degree_;
           if (!mini_element(in, *laws[e], with_tangent, body_force, system)) {
             bad_[k] = 1;
             bubble_sq_[k] = 0.0;

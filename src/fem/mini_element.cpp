@@ -116,7 +116,7 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
   Eigen::Matrix<double, 12, 1> r_l_force = Eigen::Matrix<double, 12, 1>::Zero();
   Vec6 stress;
   material::J2Tangent tangent;
-  for (const TetQuadraturePoint& q : tet_quadrature()) {
+  for (const TetQuadraturePoint& q : tet_quadrature(in.quadrature_degree)) {
     const auto& l = q.barycentric;
     const Vec3 grad_b = bubble_gradient(l, g.grad_rows);
     const Vec6 strain = strain_l + strain_of(grad_b, in.bubble_velocity);

@@ -16,19 +16,15 @@
 #include "anvil/run/TimeStepControl.h"
 #include "anvil/run/fold_watch.h"
 #include "anvil/run/load_check.h"
+#include "anvil/run/run_log.h"
 #include "anvil/scene/Discretisation.h"
 #include "anvil/scene/Scene.h"
 #include "anvil/scene/fingerprint.h"
 #include "anvil/solver/PetscSession.h"
 
-#include <tbb/info.h>
-
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <filesystem>
-#include <limits>
-#include <numeric>
 
 namespace anvil::run {
 
@@ -39,126 +35,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string clock_text(double seconds) {
-  char text[32];
-  const long s = std::lround(seconds);
-  std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
-  return text;
-}
-
-/// The time a run has left (s): the pace (wall time per unit of progress)
-/// over the last 10 increments, so that it follows the run as the contact
-/// grows or the mesh is refined, and a remesh or a cut increment weighs one
-/// in ten. The first 3 increments of a run (or of a resumed run) are left
-/// out, their Newton counts are not the run's (the contact settles, the
-/// first preconditioner is built); unknown (NaN) until 3 more are done.
-class TimeLeft {
-public:
-  double update(double progress, double now) {
-    if (++updates_ <= kSettling) return std::numeric_limits<double>::quiet_NaN();
-    points_.push_back({progress, now});
-    if (points_.size() > kWindow + 1) points_.pop_front();
-    if (points_.size() <= kFirst) return std::numeric_limits<double>::quiet_NaN();
-    const auto& [p0, t0] = points_.front();
-    if (progress <= p0) return std::numeric_limits<double>::quiet_NaN();
-    return (now - t0) / (progress - p0) * (1.0 - progress);
-  }
-
-private:
-  static constexpr std::size_t kSettling = 4, kWindow = 10, kFirst = 3;
-  std::size_t updates_ = 0;                      ///< calls so far: the start, then one per increment
-  std::deque<std::pair<double, double>> points_; ///< (progress, wall time s) after each increment
-};
-
-void log_header(const Scene& scene, const Discretisation& disc, const RunState& state, const RunOptions& options) {
-  const Case& c = scene.input;
-  log::info("anvil %s — %s%s", ANVIL_VERSION, c.path.c_str(), options.resume ? " (resumed)" : "");
-  if (!c.title.empty()) log::info("  %s", c.title.c_str());
-  for (const std::string& change : c.overrides)
-    log::info("  --set %s", change.c_str());
-  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-    const Body& body = scene.bodies[b];
-    log::info("body '%s': %d nodes, %d tetrahedra, volume %.6g mm3", body.name.c_str(), state.bodies[b].node_count,
-              state.bodies[b].tet_count, mesh::volume(state.mesh, state.bodies[b]));
-    log::info("  material %s: %s, at %g C", body.material_file.c_str(), body.law->describe().c_str(),
-              body.state.temperature);
-  }
-  for (std::size_t i = 0; i < scene.conditions.size(); ++i)
-    log::info("  boundary '%s': %zu nodes", scene.conditions[i].name.c_str(),
-              disc.imposed.nodes_of_condition[i].size());
-  for (const Die& d : scene.dies)
-    log::info("  die '%s': %s; %s; friction %s%s", d.name.c_str(), d.surface->describe().c_str(),
-              d.kinematics ? d.kinematics->describe().c_str() : "fixed", contact::describe(d.friction).c_str(),
-              std::isfinite(d.load_limit) ? (", load limit " + std::to_string(d.load_limit) + " N").c_str() : "");
-  for (std::size_t p = 0; p < c.contact_pairs.size(); ++p)
-    log::info("  contact pair '%s' (master '%s', slave '%s'): %s; friction %s",
-              disc.pair_contact->pairs()[p].name.c_str(), scene.bodies[c.contact_pairs[p].master].name.c_str(),
-              scene.bodies[c.contact_pairs[p].slave].name.c_str(), contact::describe(c.contact_pairs[p].method).c_str(),
-              contact::describe(c.contact_pairs[p].friction).c_str());
-  if (scene.has_contact())
-    log::info("  contact: penalty %g x 3 x secant viscosity of the softest body / scene size (set each increment), "
-              "friction regularisation %.3g mm/s",
-              c.contact.penalty, c.contact.regularisation * scene.reference_velocity);
-  log::info("loads: %s", scene.model_text().c_str());
-  std::string effect_list;
-  for (const auto& e : scene.effects)
-    effect_list += " " + e;
-  log::info("effects:%s", effect_list.c_str());
-  const int free = disc.solver->free_count();
-  log::info("unknowns: %d (velocity and pressure, after %d prescribed)", free,
-            static_cast<int>(disc.imposed.prescribed.size()) - free);
-  log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d process%s x %d thread%s",
-            solver::to_string(disc.solver->linear_solver().kind()).c_str(),
-            solver::to_string(c.linear_solver.kind).c_str(), c.newton.tolerance, c.newton.increment_tolerance,
-            processes::count(), processes::count() > 1 ? "es" : "", tbb::info::default_concurrency(),
-            tbb::info::default_concurrency() > 1 ? "s" : "");
-  if (c.time.enabled) {
-    const TimeSpec& t = c.time;
-    log::info(
-        "time loop: stroke increment %g mm, nodal displacement <= %g x element size, stop: %s%s%s%s",
-        t.stroke_increment, t.max_displacement,
-        std::isfinite(t.final_stroke)
-            ? ("stroke " + std::to_string(t.final_stroke) + " mm of '" + scene.dies[t.stroke_die].name + "' ").c_str()
-            : "",
-        t.final_gap > 0.0 ? ("gap " + std::to_string(t.final_gap) + " mm ").c_str() : "",
-        std::isfinite(t.max_load) ? ("load " + std::to_string(t.max_load) + " N ").c_str() : "",
-        std::isfinite(t.end_time) ? ("time " + std::to_string(t.end_time) + " s").c_str() : "");
-  }
-}
-
-/// "  T 812..1143 C (heat 6 %)": the bodies' temperature range and the heat
-/// step's share `heat_share` of the increment's wall time; empty when isothermal.
-std::string temperature_text(const RunState& state, double heat_share) {
-  if (state.temperature.empty()) return "";
-  const auto [low, high] = std::minmax_element(state.temperature.begin(), state.temperature.end());
-  char text[80];
-  std::snprintf(text, sizeof text, "  T %.0f..%.0f C (heat %.0f %%)", *low, *high, 100.0 * heat_share);
-  return text;
-}
-
-/// The progress line of an accepted increment: its columns are explained in the README.
-void log_progress(const Scene& scene, const Discretisation& disc, const RunState& state, const IncrementOutcome& inc,
-                  double time_left, double heat_share) {
-  const LoadRecord& lead = state.loads[state.loads.size() - scene.surfaces.size()];
-  const int contacts = (scene.dies.empty() ? 0 : disc.die_contact.active_count()) +
-                       (disc.pair_contact ? disc.pair_contact->active_count() : 0);
-  std::string krylov =
-      disc.solver->linear_solver().iterative() ? " krylov " + std::to_string(inc.report.linear_iterations) : "";
-  if (inc.couplings > 0) krylov += " coupled " + std::to_string(inc.couplings);
-  // The load of the whole part, and of the model when it is a symmetry model's share.
-  char model[48] = "";
-  if (scene.symmetry_copies > 1)
-    std::snprintf(model, sizeof model, " (%d x %.5g)", scene.symmetry_copies, lead.press_load() / 1e3);
-  log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN%s at %.4g mm  newton %zu%s  contact %d  "
-            "volume %+.3f%% (%.3f%% inside dies)%s  left ~%s",
-            state.increment, state.time, surface_stroke(scene, state.dies, lead.surface, state.time), inc.time_step,
-            scene.surfaces[lead.surface].name.c_str(), scene.whole_part_load(lead) / 1e3, model, lead.stroke,
-            inc.report.iterations.size(), krylov.c_str(), contacts,
-            100.0 * (mesh::volume(state.mesh) / state.volume.initial - 1.0),
-            100.0 * std::accumulate(state.inside_dies.begin(), state.inside_dies.end(), 0.0) / state.volume.initial,
-            temperature_text(state, heat_share).c_str(), std::isnan(time_left) ? "?" : clock_text(time_left).c_str());
 }
 
 void finish(const Scene& scene, const Discretisation& disc, RunState& state, io::RunWriter& writer,

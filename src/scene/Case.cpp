@@ -350,6 +350,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   c.newton.increment_tolerance = doc.number(solver, "increment_tolerance", "solver.increment_tolerance");
   c.newton.max_iterations = doc.integer(solver, "max_iterations", "solver.max_iterations");
   c.newton.krylov_tolerance_max = doc.number(solver, "krylov_tolerance", "solver.krylov_tolerance");
+  c.quadrature_degree = doc.integer(solver, "quadrature_degree", "solver.quadrature_degree");
   c.linear_solver.kind = solver::linear_solver_kind(doc.text(solver, "linear_solver", "solver.linear_solver"));
   c.linear_solver.reuse_preconditioner = doc.boolean(solver, "reuse_preconditioner", "solver.reuse_preconditioner");
   c.linear_solver.schur = solver::schur_approximation(doc.text(solver, "schur", "solver.schur"));

@@ -108,6 +108,7 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
     if (imposed.prescribed[k]) state.unknowns.nodal[k] = imposed.values[k];
   auto solver =
       std::make_unique<solver::IncrementSolver>(state.mesh, imposed.prescribed, scene.input.linear_solver, timers);
+  solver->set_quadrature_degree(scene.input.quadrature_degree);
   return Discretisation{std::move(laws),   std::move(imposed),
                         std::move(states), contact::RigidContact{},
                         std::move(pairs),  mesh::QualityGuard(state.mesh),

@@ -169,6 +169,13 @@ const std::vector<KeySpec>& case_schema() {
                       "iterates, 1e-5 for the predictor from rest"),
                   1e-12, 0.5),
             "1e-2"),
+        with_default(range(key("solver.quadrature_degree", T::integer,
+                               "degree of the quadrature over each element: 5 (14 points) integrates the bubble's "
+                               "coupling with the linear velocity exactly; 6 (24 points) also the bubble-bubble "
+                               "stiffness of a linear law (Newtonian, elastic), at more element work (measured: "
+                               "docs/method.md, Element quadrature). No rule is exact for a power law"),
+                           5, 6),
+                     "5"),
         with_default(choices(key("solver.schur", T::string,
                                  "fgmres: pressure block of the preconditioner; bfbt: stabilised BFBT (follows the "
                                  "pressure of a layer squeezed between dies); mass: condensed-bubble block plus the "

@@ -96,6 +96,9 @@ public:
   /// The tangents of the next assemble() calls are built with a rate
   /// sensitivity of at least `floor` (MiniElementInput); 0: consistent.
   void set_tangent_sensitivity_floor(double floor) { tangent_sensitivity_floor_ = floor; }
+  /// The elements of the next assemble() calls are integrated by the rule of
+  /// this degree (fem::tet_quadrature: 5 or 6).
+  void set_quadrature_degree(int degree) { quadrature_degree_ = degree; }
   const Partition& partition() const { return partition_; }
 
 private:
@@ -106,6 +109,7 @@ private:
 
   DofMap dofs_;
   double tangent_sensitivity_floor_ = 0.0;
+  int quadrature_degree_ = 5;
   const Partition& partition_;
   std::vector<mesh::Tet> tets_; ///< the elements the pattern is built on: partition_.elements
   SparseMatrix tangent_;

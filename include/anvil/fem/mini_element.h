@@ -38,6 +38,7 @@ struct MiniElementInput {
   /// The rank-one term of the nodes' tangent is built with max(m, this) for m
   /// (0: the consistent tangent); Newton's far phase (IncrementSolver).
   double tangent_sensitivity_floor = 0.0;
+  int quadrature_degree = 5; ///< of the rule over the element (fem::tet_quadrature)
 };
 
 /// Condensed element system. Residual sign: R = internal − external, so

@@ -141,6 +141,7 @@ struct Case {
   bool picture_mirror = false; ///< final.png: a quarter model drawn whole (anvil render --mirror)
   solver::NewtonSettings newton;
   solver::LinearSolverSettings linear_solver;
+  int quadrature_degree = 5; ///< solver.quadrature_degree: of the rule over each element (fem::tet_quadrature)
   std::string petsc_options; ///< solver.petsc_options, for ScopedPetscOptions
   std::vector<BodySpec> bodies;
   std::vector<BoundaryCondition> boundary;

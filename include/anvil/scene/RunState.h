@@ -31,7 +31,7 @@ struct OutputFrame {
   std::string file; ///< relative to the run's folder
 };
 
-/// One line of loads.csv: the load on a die (or velocity plate) at the end of an increment.
+/// One line of loads.csv: the load on a die (or velocity plate) solved on the geometry after `increment` increments.
 struct LoadRecord {
   int increment;
   double time;           ///< s

@@ -100,6 +100,8 @@ public:
   int free_count() const { return dofs().free_count(); }
   const LinearSolver& linear_solver() const { return linear_solver_; }
   void restart_linear_solver() { linear_solver_.restart(); } ///< see LinearSolver::restart
+  /// The elements are integrated by the rule of this degree (fem::tet_quadrature: 5 or 6).
+  void set_quadrature_degree(int degree) { assembler_.set_quadrature_degree(degree); }
 
 private:
   /// Squared residual norms, absolute: velocity rows (N²), pressure rows

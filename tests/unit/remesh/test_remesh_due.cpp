@@ -1,0 +1,98 @@
+// When the time loop remeshes a body (remesh::remesh_due): poor elements,
+// every N increments, a die vertex sunk into the body, and a die edge the
+// last remesh could not fit that has not sunk further.
+#include "test_common.h"
+
+#include "anvil/core/Timers.h"
+#include "anvil/remesh/Remesher.h"
+#include "anvil/remesh/die_feature_depth.h"
+#include "anvil/scene/Case.h"
+#include "anvil/scene/Scene.h"
+
+using namespace anvil;
+
+namespace {
+
+struct Run {
+  Timers timers;
+  scene::Case input; // the scene keeps a reference to it
+  scene::Scene scene;
+  scene::RunState state;
+  Run(const std::string& file, const std::vector<std::string>& overrides)
+      : input(scene::read_case(source_path(file), overrides)), scene(input, timers),
+        state(scene::initial_state(scene)) {}
+};
+
+constexpr double kStep = 1e-3; // s, the Δt over which the next increment is looked ahead (nothing moves)
+
+/// The deepest vertex of the upper die of cases/closed_die_flash.yaml inside the billet.
+double upper_die_depth(const Run& r) {
+  std::vector<mesh::Point> vertices = r.scene.dies[0].surface->triangles().vertices;
+  for (mesh::Point& x : vertices)
+    x += r.state.dies[0].displacement;
+  return remesh::die_feature_depths(r.state.mesh, r.state.bodies[0], {vertices})[0].depth;
+}
+
+} // namespace
+
+TEST_CASE("A body is remeshed when an element is poor, and every N increments when asked", "[unit][remesh]") {
+  Run r("cases/upsetting_75.yaml", {"bodies[].mesh.element_size=2", "remeshing.every=3"});
+  r.state.increment = 1;
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty()); // a fresh mesh
+
+  r.state.increment = 3;
+  auto due = remesh::remesh_due(r.scene, r.state, kStep);
+  REQUIRE(due.size() == 1);
+  CHECK(due[0].why == "every 3 increments");
+
+  // Element 1's first vertex moved most of the way to its opposite face: quality far below 0.15.
+  r.state.increment = 4;
+  const mesh::Tet& t = r.state.mesh.tets[0];
+  const mesh::Point opposite = (r.state.mesh.nodes[t[1]] + r.state.mesh.nodes[t[2]] + r.state.mesh.nodes[t[3]]) / 3.0;
+  r.state.mesh.nodes[t[0]] = opposite + 0.05 * (r.state.mesh.nodes[t[0]] - opposite);
+  due = remesh::remesh_due(r.scene, r.state, kStep);
+  REQUIRE(due.size() == 1);
+  CHECK(due[0].body == 0);
+  CHECK(due[0].why.find("worst quality") == 0);
+}
+
+TEST_CASE("A die vertex sunk into the body asks for a remesh, and once a remesh has left it in, only half a trigger "
+          "deeper again",
+          "[unit][remesh]") {
+  // closed_die_flash: billet R 8 mm at 1 mm elements; its upper die's cavity
+  // vertices sink into the billet as the die comes down. Trigger: 0.5 mm.
+  Run r("cases/closed_die_flash.yaml", {"remeshing.die_penetration=0.5", "remeshing.check_load=false"});
+  const double trigger = 0.5 * r.scene.bodies[0].remesh_size;
+  r.state.increment = 1;
+  REQUIRE(upper_die_depth(r) == 0.0);
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
+
+  // The die lowered until one of its vertices is deeper than the trigger.
+  double lowered = 0.0;
+  while (upper_die_depth(r) <= trigger && lowered < 20.0) {
+    lowered += 0.05;
+    r.state.dies[0].displacement.z() = -lowered;
+  }
+  const double depth = upper_die_depth(r);
+  REQUIRE(depth > trigger);
+  auto due = remesh::remesh_due(r.scene, r.state, kStep);
+  REQUIRE(due.size() == 1);
+  CHECK(due[0].why.find("the vertex of die 'upper'") == 0);
+  CHECK_FALSE(due[0].local); // a die corner needs new surface nodes: the whole body
+
+  // A remesh that could not fit that vertex left it this deep: not due again at once …
+  scene::RemeshRecord record{};
+  record.body = 0;
+  record.die_depth_after = depth;
+  r.state.remeshes.push_back(record);
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
+  // … and due once it is half a trigger deeper than it was left.
+  while (upper_die_depth(r) <= depth + 0.5 * trigger && lowered < 20.0) {
+    lowered += 0.01;
+    r.state.dies[0].displacement.z() = -lowered;
+  }
+  REQUIRE(upper_die_depth(r) > depth + 0.5 * trigger);
+  due = remesh::remesh_due(r.scene, r.state, kStep);
+  REQUIRE(due.size() == 1);
+  CHECK(due[0].why.find("the vertex of die 'upper'") == 0);
+}

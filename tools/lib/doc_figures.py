@@ -1,0 +1,61 @@
+"""Measured figures in docs/ are written by the tool that measures them.
+
+A block of figures in a page of docs/ sits between two markers that name the
+tool and the block:
+
+    <!-- figures: tools/quadrature_study (newtonian) -->
+    ...table, written by the tool...
+    <!-- end figures -->
+
+write_block(page, tool, name, text) replaces what is between them (the
+markers stay) and adds the machine and the date, so a rerun of the tool
+updates the page and nobody types a figure.
+
+As a command (for tools written in bash): doc_figures.py PAGE TOOL NAME < TEXT
+"""
+import datetime
+import os
+import platform
+import re
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def machine():
+    cores = os.cpu_count() or 0
+    model = ""
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    model = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    return f"{platform.node() or 'this machine'}, {cores} cores{', ' + model if model else ''}"
+
+
+def write_block(page, tool, name, text):
+    """Puts `text` (Markdown) in block `name` of `tool` in docs/`page`."""
+    path = os.path.join(ROOT, "docs", page)
+    with open(path, encoding="utf-8") as f:
+        doc = f.read()
+    begin = f"<!-- figures: {tool} ({name}) -->"
+    pattern = re.compile(re.escape(begin) + r"\n.*?<!-- end figures -->", re.S)
+    if not pattern.search(doc):
+        sys.exit(f"{path}: no block '{begin}' ... '<!-- end figures -->' to write")
+    stamp = f"_Written by `{tool}` on {datetime.date.today().isoformat()}, {machine()}._"
+    block = f"{begin}\n{text.rstrip()}\n\n{stamp}\n<!-- end figures -->"
+    doc = pattern.sub(lambda _: block, doc, count=1)
+    tmp = path + ".tmp"
+    with open(tmp, "w", encoding="utf-8") as f:
+        f.write(doc)
+    os.replace(tmp, path)
+    print(f"wrote block '{name}' of {os.path.relpath(path, ROOT)}")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4:
+        sys.exit("usage: doc_figures.py PAGE TOOL NAME < TEXT")
+    write_block(sys.argv[1], sys.argv[2], sys.argv[3], sys.stdin.read())
