@@ -112,10 +112,11 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
     const BodyPair& pair = pairs_[q];
     const bool one_sided = pair.method.formulation == PairFormulation::master_slave;
     const double share = one_sided ? 1.0 : 0.5; // f_p: eqs. 10, 19 against the ½ of eqs. 12, 14, 20, 21
-    // The surfaces projected onto: the master's, and the slave's unless master/slave.
+    // The surfaces projected onto: the master's, and the slave's unless
+    // master/slave or the body's own (self-contact).
     const ContactSurface master(boundary, pair.master);
     const std::optional<ContactSurface> slave =
-        one_sided ? std::nullopt : std::optional<ContactSurface>(std::in_place, boundary, pair.slave);
+        one_sided || pair.self() ? std::nullopt : std::optional<ContactSurface>(std::in_place, boundary, pair.slave);
     // A point of `from` (own nodes and shape functions, area A_p) projected as `hit`.
     auto point = [&](const std::array<int, 3>& own, const Eigen::Vector3d& own_shape, const SurfaceProjection& hit,
                      double area, double gap_weight, bool on_slave) {
@@ -131,16 +132,21 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
                           .gap_weight = gap_weight,
                           .on_slave = on_slave};
     };
-    auto project_nodes = [&](const mesh::MeshRange& from, const ContactSurface& onto, bool on_slave) {
+    // The boundary nodes of `from`, each projected by `project(node, its outward normal)`.
+    auto project_nodes = [&](const mesh::MeshRange& from, auto&& project, bool on_slave) {
       for (int node = from.first_node; node < from.first_node + from.node_count; ++node) {
         const Eigen::Vector3d own = boundary.own_normal(node);
         if (own.isZero()) continue; // an interior node, or one on symmetry planes only
-        const std::optional<SurfaceProjection> hit = onto.project(mesh.nodes[node], own, search_distance);
+        const std::optional<SurfaceProjection> hit = project(node, own);
         if (!hit) continue;
         const double area = boundary.tributary_area(node, hit->normal);
         if (area == 0.0) continue; // no face looks at the other body: not on its contact surface
         nodes_.push_back(point({node, -1, -1}, Eigen::Vector3d::UnitX(), *hit, area, share, on_slave));
       }
+    };
+    auto onto = [&](const ContactSurface& surface) {
+      return
+          [&](int node, const Eigen::Vector3d& own) { return surface.project(mesh.nodes[node], own, search_distance); };
     };
     // The quadrature points of the facets of `from`, grouped by the facet
     // of the other body they fall on, so that add() sums their friction
@@ -157,8 +163,13 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
       }
     };
     const std::size_t first_node = nodes_.size();
-    project_nodes(pair.slave, master, true);
-    if (slave) project_nodes(pair.master, *slave, false);
+    if (pair.self())
+      project_nodes(
+          pair.slave, [&](int node, const Eigen::Vector3d&) { return master.project_self(node, search_distance); },
+          true);
+    else
+      project_nodes(pair.slave, onto(master), true);
+    if (slave) project_nodes(pair.master, onto(*slave), false);
     if (pair.method.integration == PairIntegration::nodal) {
       points_.insert(points_.end(), nodes_.begin() + static_cast<std::ptrdiff_t>(first_node), nodes_.end());
       continue;

@@ -147,6 +147,40 @@ std::optional<SurfaceProjection> ContactSurface::project_onto(const mesh::Point&
   return within_reach({facet, shape, normal, (x - point_on(mesh, t, shape)).dot(normal)}, x, search_distance);
 }
 
+std::optional<SurfaceProjection> ContactSurface::project_self(int node, double search_distance) const {
+  const mesh::TetMesh& mesh = boundary_.mesh();
+  const mesh::Point& x = mesh.nodes[node];
+  search_.overlapping({x - Eigen::Vector3d::Constant(search_distance), x + Eigen::Vector3d::Constant(search_distance)},
+                      near_);
+  std::optional<SurfaceProjection> best;
+  double best_distance = search_distance;
+  for (int index : near_) {
+    const int facet = facets_[index];
+    const mesh::Triangle& t = mesh.boundary_faces[facet];
+    if (std::find(t.begin(), t.end(), node) != t.end()) continue;
+    const Eigen::Vector3d normal = mesh::area_vector(mesh, t).normalized();
+    const std::vector<int>& around = boundary_.faces_of(node);
+    if (std::none_of(around.begin(), around.end(), [&](int f) {
+          return holds(f) && mesh::area_vector(mesh, mesh.boundary_faces[f]).normalized().dot(normal) < -0.5;
+        }))
+      continue;
+    const Eigen::Vector3d shape = barycentric(x, mesh, t);
+    const Eigen::Vector3d offset = x - point_on(mesh, t, shape);
+    const double gap = offset.dot(normal), distance = offset.norm();
+    const double edge = ((mesh.nodes[t[1]] - mesh.nodes[t[0]]).norm() + (mesh.nodes[t[2]] - mesh.nodes[t[1]]).norm() +
+                         (mesh.nodes[t[0]] - mesh.nodes[t[2]]).norm()) /
+                        3.0;
+    // Over the facet, or off its edge by a little where the surface it faces
+    // is convex (off the edge of a facet facing the other way is off the surface).
+    const bool over = (offset - gap * normal).norm() <= 0.1 * edge;
+    if (!over || gap <= -0.1 * edge || distance >= best_distance) continue;
+    best = SurfaceProjection{facet, shape, normal, gap};
+    best_distance = distance;
+  }
+  if (best) return within_reach(*best, x, search_distance);
+  return best;
+}
+
 void ContactSurface::facet_points(int f, const PairMethod& method, double search_distance,
                                   std::vector<FacetPoint>& points) const {
   points.clear();

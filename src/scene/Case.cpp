@@ -101,7 +101,6 @@ void read_contact_pairs(const CheckedYaml& doc, Case& c) {
     ContactPairSpec pair;
     pair.master = body_index(doc, c, n, "master", shown);
     pair.slave = body_index(doc, c, n, "slave", shown);
-    if (pair.master == pair.slave) doc.fail(n["slave"], shown + ".slave", "a body cannot be in contact with itself");
     for (const ContactPairSpec& other : c.contact_pairs)
       if (std::minmax(other.master, other.slave) == std::minmax(pair.master, pair.slave))
         doc.fail(n, shown,
@@ -112,6 +111,15 @@ void read_contact_pairs(const CheckedYaml& doc, Case& c) {
     pair.method.quadrature =
         contact::facet_quadrature(doc.text(n, "facet_quadrature", "contact_pairs[].facet_quadrature"));
     pair.method.facet_subdivision = doc.integer(n, "facet_subdivision", "contact_pairs[].facet_subdivision");
+    if (pair.master == pair.slave) { // self-contact: symmetric and nodal (contact::BodyPair)
+      for (const char* key : {"formulation", "integration", "facet_quadrature", "facet_subdivision"})
+        if (n[key])
+          doc.fail(n[key], shown + "." + key,
+                   "a body's contact with itself (master and slave '" + c.bodies[pair.master].name +
+                       "') is symmetric and nodal: leave out '" + key + "'");
+      pair.method = {.formulation = contact::PairFormulation::symmetric,
+                     .integration = contact::PairIntegration::nodal};
+    }
     pair.friction = read_friction(doc, n, "contact_pairs", shown);
     pair.source = doc.at(n);
     c.contact_pairs.push_back(pair);

@@ -88,8 +88,9 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
   if (!scene.input.contact_pairs.empty()) {
     std::vector<contact::BodyPair> list;
     for (const ContactPairSpec& p : scene.input.contact_pairs)
-      list.push_back({scene.bodies[p.master].name + "/" + scene.bodies[p.slave].name, state.bodies[p.master],
-                      state.bodies[p.slave], p.method, p.friction});
+      list.push_back({p.master == p.slave ? scene.bodies[p.master].name + " (self-contact)"
+                                          : scene.bodies[p.master].name + "/" + scene.bodies[p.slave].name,
+                      state.bodies[p.master], state.bodies[p.slave], p.method, p.friction});
     pairs = std::make_unique<contact::BodyContact>(std::move(list), on_symmetry_plane);
   }
   std::vector<material::PointState> states(state.mesh.tets.size());

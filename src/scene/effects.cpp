@@ -21,6 +21,8 @@ const std::vector<Effect>& effect_registry() {
        "incompressible bodies in the time loop: each increment's flow restores the volume lost so far"},
       {"rigid_dies", "contact with rigid dies (plane or STL): search, penalty, active set, projection"},
       {"body_contact", "contact between deformable bodies: master/slave, symmetric or quasi-symmetric (Fourment 2008)"},
+      {"self_contact", "a body's contact with itself (a contact pair of one body): the sides of a fold or lap kept "
+                       "from passing through each other (docs/reading-a-run.md §5)"},
       {"friction", "friction on die or body contact (sticking, Tresca, Coulomb, Norton), regularised near zero slip"},
       {"hardening", "flow stress depending on ε̄ (Hansel-Spittel)"},
       {"remeshing",
@@ -79,7 +81,8 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
         if (!std::isfinite(law->bulk_modulus())) add("volume_compensation");
   }
   if (!c.dies.empty()) add("rigid_dies");
-  if (!c.contact_pairs.empty()) add("body_contact");
+  for (const ContactPairSpec& p : c.contact_pairs)
+    add(p.master == p.slave ? "self_contact" : "body_contact");
   for (const DieSpec& d : c.dies)
     if (d.friction.kind != contact::FrictionKind::frictionless) add("friction");
   for (const ContactPairSpec& p : c.contact_pairs)

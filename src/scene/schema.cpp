@@ -309,9 +309,12 @@ const std::vector<KeySpec>& case_schema() {
                   "as built (it covers the chord of the part's facets on a curved die)",
                   "mm"),
               0, kInf, true),
-        key("contact_pairs", T::list, "contact between two deformable bodies (node-to-facet, Fourment 2008)"),
+        key("contact_pairs", T::list,
+            "contact between two deformable bodies (node-to-facet, Fourment 2008), or of a body with itself "
+            "(master and slave the same body: the sides of a fold or lap kept apart; symmetric, nodal)"),
         required(key("contact_pairs[].master", T::string, "master body (a name from bodies)")),
-        required(key("contact_pairs[].slave", T::string, "slave body (a name from bodies)")),
+        required(
+            key("contact_pairs[].slave", T::string, "slave body (a name from bodies; the master's: self-contact)")),
         with_default(choices(key("contact_pairs[].formulation", T::string,
                                  "master_slave: conditions at slave nodes (paper eq. 19); symmetric: at the nodes of "
                                  "both bodies (eq. 20); quasi_symmetric: both, with the master nodes' conditions "

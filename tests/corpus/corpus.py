@@ -234,6 +234,14 @@ case_error("fill-region-inverted",
                 "    friction: {law: tresca, factor: 0.3}\n    fill: {region: {min: [0, 0, 5], max: [9, 9, 1]}}\n"
                 "  - name: bottom"),
            ["dies[0].fill.region", "'min' must be below 'max'"])
+case_error("self-contact-formulation",
+           base() + "contact_pairs:\n  - {master: billet, slave: billet, formulation: master_slave}\n",
+           ["case.yaml:", "contact_pairs[0].formulation", "itself", "symmetric and nodal"])
+case_error("self-contact-quadrature",
+           base() + "contact_pairs:\n  - {master: billet, slave: billet, facet_quadrature: subdivision}\n",
+           ["case.yaml:", "contact_pairs[0].facet_quadrature", "leave out"])
+case_error("quadrature-degree-out-of-range", base() + "solver: {quadrature_degree: 7}\n",
+           ["case.yaml:", "solver.quadrature_degree", "7"])
 case_error("fill-region-without-max",
            swap("    friction: {law: tresca, factor: 0.3}\n  - name: bottom",
                 "    friction: {law: tresca, factor: 0.3}\n    fill: {region: {min: [0, 0, 0]}}\n  - name: bottom"),

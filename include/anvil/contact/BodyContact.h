@@ -72,12 +72,18 @@ struct PairMethod {
 };
 std::string describe(const PairMethod& method);
 
-/// A contact pair as contact sees it.
+/// A contact pair as contact sees it. A body paired with itself is in
+/// self-contact: each of its boundary nodes is projected onto the facets of
+/// the body that face it (ContactSurface::project_self), as the symmetric
+/// nodal form (eq. 20) would do between two bodies: each node its own λ,
+/// f = ½, since the nodes of both sides of a fold take part.
 struct BodyPair {
   std::string name;
   mesh::MeshRange master, slave;
   PairMethod method;
   FrictionLaw friction;
+
+  bool self() const { return master.first_node == slave.first_node; }
 };
 
 /// λ_m weighted into a point's constraint.

@@ -67,6 +67,15 @@ public:
   std::optional<SurfaceProjection> project(const mesh::Point& x, const Eigen::Vector3d& own,
                                            double search_distance) const;
 
+  /// Self-contact: projects boundary node `node` of this surface's own body
+  /// onto the closest facet of the body that faces one of the node's faces
+  /// (outward normals opposing, n·n' < −½: across a fold, never the facets
+  /// around the node) and does not hold it, the node over that facet, in
+  /// front of it within `search_distance` or behind it by less than a tenth
+  /// of its edge (a fold's sides pressed together; deeper is the body's
+  /// other side across a thin section, not a contact). Nothing when none.
+  std::optional<SurfaceProjection> project_self(int node, double search_distance) const;
+
   /// The quadrature points of facet f of the other body that lie over this
   /// surface within `search_distance`, with their projections, into
   /// `points` (cleared first), grouped by the facet they fall on.
