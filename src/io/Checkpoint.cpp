@@ -199,10 +199,13 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
                        r.worst_quality_before, r.worst_quality_after, r.volume_change, r.strain_integral_change,
                        r.strain_max_change, r.seconds, r.load_old_mesh, r.load_new_mesh, r.material_change});
     write_array(file, "remeshes", H5T_NATIVE_DOUBLE, remeshes.data(), s.remeshes.size(), 13);
-    std::vector<double> die_depths;
-    for (const RemeshRecord& r : s.remeshes)
+    std::vector<double> die_depths, die_overlaps;
+    for (const RemeshRecord& r : s.remeshes) {
       die_depths.push_back(r.die_depth_after);
+      die_overlaps.push_back(r.die_overlap_after);
+    }
     write_array(file, "remesh_die_depth", H5T_NATIVE_DOUBLE, die_depths.data(), die_depths.size(), 0);
+    write_array(file, "remesh_die_overlap", H5T_NATIVE_DOUBLE, die_overlaps.data(), die_overlaps.size(), 0);
 
     std::vector<double> nodes;
     for (const mesh::Point& p : s.mesh.nodes)
@@ -314,19 +317,23 @@ RunState read_state(hid_t file, const std::string& path) {
     if (per_remesh >= 12) s.remeshes.back().load_old_mesh = r[10], s.remeshes.back().load_new_mesh = r[11];
     if (per_remesh >= 13) s.remeshes.back().material_change = r[12];
   }
-  if (H5Lexists(file, "remesh_die_depth", H5P_DEFAULT) > 0) { // absent before it was kept
-    std::vector<double> depths;
-    read_array(file, path, "remesh_die_depth", H5T_NATIVE_DOUBLE, depths, 1);
-    if (depths.size() != s.remeshes.size())
-      throw InputError(path + ": checkpoint dataset 'remesh_die_depth' has " + std::to_string(depths.size()) +
+  // One value per remesh, NaN where unknown; datasets absent before they were kept.
+  auto per_remesh_value = [&](const char* name, const char* what, double RemeshRecord::*field) {
+    if (H5Lexists(file, name, H5P_DEFAULT) <= 0) return;
+    std::vector<double> values;
+    read_array(file, path, name, H5T_NATIVE_DOUBLE, values, 1);
+    if (values.size() != s.remeshes.size())
+      throw InputError(path + ": checkpoint dataset '" + name + "' has " + std::to_string(values.size()) +
                        " records for " + std::to_string(s.remeshes.size()) + " remeshes (damaged file)");
-    for (std::size_t i = 0; i < depths.size(); ++i) {
-      if (!std::isnan(depths[i]) && !(depths[i] >= 0.0 && std::isfinite(depths[i])))
-        throw InputError(path + ": checkpoint dataset 'remesh_die_depth', record " + std::to_string(i + 1) +
-                         ": expected a depth >= 0 (damaged file)");
-      s.remeshes[i].die_depth_after = depths[i];
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!std::isnan(values[i]) && !(values[i] >= 0.0 && std::isfinite(values[i])))
+        throw InputError(path + ": checkpoint dataset '" + name + "', record " + std::to_string(i + 1) + ": expected " +
+                         what + " >= 0 (damaged file)");
+      s.remeshes[i].*field = values[i];
     }
-  }
+  };
+  per_remesh_value("remesh_die_depth", "a depth", &RemeshRecord::die_depth_after);
+  per_remesh_value("remesh_die_overlap", "a volume", &RemeshRecord::die_overlap_after);
   read_finite_array(file, path, "nodes", nodes, 3);
   for (std::size_t i = 0; i < nodes.size(); i += 3)
     s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);

@@ -530,6 +530,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     record.material_change =
         (mesh::volume(state.mesh, state.bodies[b]) - state.inside_dies[b]) / material_before[b] - 1.0;
     if (!scene.dies.empty()) {
+      record.die_overlap_after = state.inside_dies[b];
       record.die_depth_after = 0.0;
       for (const DieFeature& f : die_feature_depths(state.mesh, state.bodies[b], die_vertices))
         record.die_depth_after = std::max(record.die_depth_after, f.depth);
@@ -573,9 +574,16 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
       // nothing. (A whole trigger's depth let elements under a rib's edge of
       // the connecting rod be crushed inside out before the remesh came.)
       const double trigger = spec.die_penetration * body.remesh_size;
-      double left = 0.0;
+      // The same for the body's overlap with the dies (die fillets sunk
+      // between contact nodes): a local remesh keeps that surface, and the
+      // overlap grows between whole remeshes.
+      const double overlap_trigger = spec.die_overlap * body.initial_volume;
+      double left = 0.0, overlap_left = 0.0;
       for (const scene::RemeshRecord& r : state.remeshes)
-        if (r.body == int(b)) left = std::isnan(r.die_depth_after) ? 0.0 : r.die_depth_after;
+        if (r.body == int(b)) {
+          left = std::isnan(r.die_depth_after) ? 0.0 : r.die_depth_after;
+          overlap_left = std::isnan(r.die_overlap_after) ? 0.0 : r.die_overlap_after;
+        }
       const std::vector<DieFeature> inside = die_feature_depths(state.mesh, state.bodies[b], die_vertices);
       for (std::size_t d = 0; d < scene.dies.size() && !why[0]; ++d)
         if (inside[d].depth > std::max(trigger, left + 0.5 * trigger)) {
@@ -583,6 +591,10 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
           std::snprintf(why, sizeof why, "the vertex of die '%s' at %.3g, %.3g, %.3g mm is %.3g mm inside",
                         scene.dies[d].name.c_str(), x.x(), x.y(), x.z(), inside[d].depth);
         }
+      const double overlap = state.inside_dies[b];
+      if (!why[0] && overlap > std::max(overlap_trigger, overlap_left + 0.5 * overlap_trigger))
+        std::snprintf(why, sizeof why, "%.3g%% of its initial volume lies inside the dies",
+                      100.0 * overlap / body.initial_volume);
     }
     if (why[0]) due.push_back({int(b), why, local});
   }

@@ -471,6 +471,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     m.quality = doc.number(r, "quality", "remeshing.quality");
     m.every = doc.integer(r, "every", "remeshing.every");
     m.die_penetration = doc.number(r, "die_penetration", "remeshing.die_penetration");
+    m.die_overlap = doc.number(r, "die_overlap", "remeshing.die_overlap");
     if (r["element_size"]) m.element_size = doc.number(r, "element_size", "remeshing.element_size");
     m.feature_angle = doc.number(r, "feature_angle", "remeshing.feature_angle");
     m.iterations = doc.integer(r, "iterations", "remeshing.iterations");

@@ -387,6 +387,12 @@ const std::vector<KeySpec>& case_schema() {
                       "also remesh when a die vertex lies this deep inside a body, relative to its element size"),
                   0, kInf, true),
             "0.25"),
+        with_default(range(key("remeshing.die_overlap", T::number,
+                               "also remesh the whole body when this share of its initial volume lies inside the "
+                               "dies (die fillets sunk between contact nodes: a local remesh keeps that surface)",
+                               "-"),
+                           0, 1, true),
+                     "0.01"),
         range(key("remeshing.element_size", T::number,
                   "target edge length, at most a third of the body's smallest extent; default each body's initial "
                   "mean boundary edge",

@@ -114,6 +114,7 @@ struct RemeshSpec {
   double quality = 0.1;          ///< trigger: worst volume-edge ratio below this (or ≤ 0 predicted next increment)
   int every = 0;                 ///< trigger: every N increments (0 = off)
   double die_penetration = 0.25; ///< trigger: a die vertex this deep inside the body, × element size
+  double die_overlap = 0.01;     ///< trigger: this share of the body's initial volume inside the dies
   double element_size = 0.0;     ///< mm, target edge length; 0 = the body's initial mean boundary edge
   double feature_angle = 40.0;   ///< degrees
   int iterations = 3;            ///< CGAL passes

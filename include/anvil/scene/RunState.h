@@ -86,6 +86,9 @@ struct RemeshRecord {
   /// mm, the deepest die vertex inside the body after the remesh (what the
   /// remesh could not fit); NaN without dies or from an older checkpoint.
   double die_depth_after = std::numeric_limits<double>::quiet_NaN();
+  /// mm³, the body's overlap with the dies after the remesh (what its
+  /// put-back left); NaN without dies or from an older checkpoint.
+  double die_overlap_after = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A fold (effect folds): where a body's surface met itself.

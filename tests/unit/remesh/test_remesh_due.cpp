@@ -1,6 +1,7 @@
 // When the time loop remeshes a body (remesh::remesh_due): poor elements,
-// every N increments, a die vertex sunk into the body, and a die edge the
-// last remesh could not fit that has not sunk further.
+// every N increments, a die vertex sunk into the body, a die edge the last
+// remesh could not fit that has not sunk further, and the body's overlap
+// with the dies, alike.
 #include "test_common.h"
 
 #include "anvil/core/Timers.h"
@@ -95,4 +96,29 @@ TEST_CASE("A die vertex sunk into the body asks for a remesh, and once a remesh 
   due = remesh::remesh_due(r.scene, r.state, kStep);
   REQUIRE(due.size() == 1);
   CHECK(due[0].why.find("the vertex of die 'upper'") == 0);
+}
+
+TEST_CASE("A body overlapping the dies by more than remeshing.die_overlap of its volume is remeshed whole, and once "
+          "a remesh has left an overlap, only half a trigger more again",
+          "[unit][remesh]") {
+  Run r("cases/closed_die_flash.yaml", {"remeshing.die_overlap=0.01", "remeshing.check_load=false"});
+  r.state.increment = 1;
+  const double trigger = 0.01 * r.scene.bodies[0].initial_volume; // mm³
+  r.state.inside_dies[0] = 0.9 * trigger;
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
+  r.state.inside_dies[0] = 1.1 * trigger;
+  auto due = remesh::remesh_due(r.scene, r.state, kStep);
+  REQUIRE(due.size() == 1);
+  CHECK(due[0].why == "1.1% of its initial volume lies inside the dies");
+  CHECK_FALSE(due[0].local);
+
+  scene::RemeshRecord record{};
+  record.body = 0;
+  record.die_overlap_after = 1.1 * trigger; // a remesh that could not reduce it
+  r.state.remeshes.push_back(record);
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
+  r.state.inside_dies[0] = 1.55 * trigger;
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
+  r.state.inside_dies[0] = 1.65 * trigger;
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).size() == 1);
 }
