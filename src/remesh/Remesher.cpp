@@ -313,17 +313,6 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, cons
   return out;
 }
 
-/// Each die's surface vertices where the die is now.
-std::vector<std::vector<mesh::Point>> dies_in_place(const scene::Scene& scene, const scene::RunState& state) {
-  std::vector<std::vector<mesh::Point>> vertices;
-  for (std::size_t d = 0; d < scene.dies.size(); ++d) {
-    vertices.push_back(scene.dies[d].surface->triangles().vertices);
-    for (mesh::Point& x : vertices.back())
-      x += state.dies[d].displacement;
-  }
-  return vertices;
-}
-
 void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
                    std::span<const int> touching_die, std::span<const double> rate, double time_step, Timers& timers) {
   Timers::Scope scope(timers, "remeshing");
@@ -529,77 +518,18 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     const int b = record.body;
     record.material_change =
         (mesh::volume(state.mesh, state.bodies[b]) - state.inside_dies[b]) / material_before[b] - 1.0;
-    if (!scene.dies.empty()) {
-      record.die_overlap_after = state.inside_dies[b];
-      record.die_depth_after = 0.0;
-      for (const DieFeature& f : die_feature_depths(state.mesh, state.bodies[b], die_vertices))
-        record.die_depth_after = std::max(record.die_depth_after, f.depth);
-    }
-    if (!scene.dies.empty())
-      log::info("    '%s' inside the dies: %.3f%% of its initial volume (%.3f%% before the remesh); material %+.4f%%",
-                scene.bodies[b].name.c_str(), 100.0 * state.inside_dies[b] / scene.bodies[b].initial_volume,
-                100.0 * inside_before[b] / scene.bodies[b].initial_volume, 100.0 * record.material_change);
+    if (scene.dies.empty()) continue;
+    record.die_overlap_after = state.inside_dies[b];
+    record.die_depth_after = 0.0;
+    for (const DieFeature& f : die_feature_depths(state.mesh, state.bodies[b], die_vertices))
+      record.die_depth_after = std::max(record.die_depth_after, f.depth);
+    log::info("    '%s' inside the dies: %.3f%% of its initial volume (%.3f%% before the remesh); material %+.4f%%",
+              scene.bodies[b].name.c_str(), 100.0 * state.inside_dies[b] / scene.bodies[b].initial_volume,
+              100.0 * inside_before[b] / scene.bodies[b].initial_volume, 100.0 * record.material_change);
   }
 }
 
 } // namespace
-
-std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt) {
-  const scene::RemeshSpec& spec = scene.input.remeshing;
-  std::vector<RemeshDue> due;
-  std::vector<std::vector<mesh::Point>> die_vertices; // in place, gathered once when a body needs them
-  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-    const scene::Body& body = scene.bodies[b];
-    if (body.law->is_elastic()) continue; // an elastic die keeps its mesh
-    const QualityReport q = assess_quality(state.mesh, state.bodies[b], state.unknowns.nodal, dt, spec.quality);
-    const mesh::Point& at = q.worst_at;
-    log::detail("  quality '%s': worst %.3f (element %d at %.3g, %.3g, %.3g mm), %d below %g; next increment %.3f",
-                body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
-                q.predicted_worst);
-    char why[160] = "";
-    // A local remesh may do for poor elements (it keeps the surface: a die
-    // corner sunk into the body, or a periodic remesh, takes the whole body).
-    const bool local = spec.local && (q.worst < spec.quality || q.predicted_worst <= 0.0);
-    if (q.worst < spec.quality)
-      std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
-    else if (q.predicted_worst <= 0.0)
-      std::snprintf(why, sizeof why, "element %d would invert in the next increment", q.predicted_tet + 1);
-    else if (spec.every > 0 && state.increment % spec.every == 0)
-      std::snprintf(why, sizeof why, "every %d increments", spec.every);
-    else if (!scene.dies.empty()) {
-      if (die_vertices.empty()) die_vertices = dies_in_place(scene, state); // the scene has dies here
-      // A die edge the last remesh could not fit (it left it this deep) is
-      // remeshed for again only once it has sunk half a trigger's depth
-      // further: else the body would be remeshed every increment for
-      // nothing. (A whole trigger's depth let elements under a rib's edge of
-      // the connecting rod be crushed inside out before the remesh came.)
-      const double trigger = spec.die_penetration * body.remesh_size;
-      // The same for the body's overlap with the dies (die fillets sunk
-      // between contact nodes): a local remesh keeps that surface, and the
-      // overlap grows between whole remeshes.
-      const double overlap_trigger = spec.die_overlap * body.initial_volume;
-      double left = 0.0, overlap_left = 0.0;
-      for (const scene::RemeshRecord& r : state.remeshes)
-        if (r.body == int(b)) {
-          left = std::isnan(r.die_depth_after) ? 0.0 : r.die_depth_after;
-          overlap_left = std::isnan(r.die_overlap_after) ? 0.0 : r.die_overlap_after;
-        }
-      const std::vector<DieFeature> inside = die_feature_depths(state.mesh, state.bodies[b], die_vertices);
-      for (std::size_t d = 0; d < scene.dies.size() && !why[0]; ++d)
-        if (inside[d].depth > std::max(trigger, left + 0.5 * trigger)) {
-          const mesh::Point& x = inside[d].vertex;
-          std::snprintf(why, sizeof why, "the vertex of die '%s' at %.3g, %.3g, %.3g mm is %.3g mm inside",
-                        scene.dies[d].name.c_str(), x.x(), x.y(), x.z(), inside[d].depth);
-        }
-      const double overlap = state.inside_dies[b];
-      if (!why[0] && overlap > std::max(overlap_trigger, overlap_left + 0.5 * overlap_trigger))
-        std::snprintf(why, sizeof why, "%.3g%% of its initial volume lies inside the dies",
-                      100.0 * overlap / body.initial_volume);
-    }
-    if (why[0]) due.push_back({int(b), why, local});
-  }
-  return due;
-}
 
 void remesh(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
             std::span<const int> touching_die, std::span<const double> rate, double next_step, Timers& timers) {

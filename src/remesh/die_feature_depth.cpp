@@ -36,4 +36,14 @@ std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh
   return deepest;
 }
 
+std::vector<std::vector<mesh::Point>> dies_in_place(const scene::Scene& scene, const scene::RunState& state) {
+  std::vector<std::vector<mesh::Point>> vertices;
+  for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+    vertices.push_back(scene.dies[d].surface->triangles().vertices);
+    for (mesh::Point& x : vertices.back())
+      x += state.dies[d].displacement;
+  }
+  return vertices;
+}
+
 } // namespace anvil::remesh

@@ -2,6 +2,7 @@
 
 #include "anvil/contact/facet_quadrature.h"
 #include "anvil/core/input_file.h"
+#include "schema_keys.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,45 +11,7 @@
 namespace anvil::scene {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Physical ranges of the thermal keys: wide enough for every metal forged
-// and every die, narrow enough that a slip of units or sign is caught here,
-// not as a numerical failure later.
-constexpr double kAbsoluteZero = -273.15; ///< °C, excluded
-constexpr double kHottest = 3500.0;       ///< °C: above tungsten's melting point, 3422 °C
-constexpr double kFastest = 1e5;          ///< mm/s, a velocity component: ten times a forging hammer's 10 m/s
-
-KeySpec key(std::string path, KeyType type, std::string doc, std::string unit = "") {
-  KeySpec k;
-  k.path = std::move(path);
-  k.type = type;
-  k.doc = std::move(doc);
-  k.unit = std::move(unit);
-  if (type == KeyType::integer) { // what the reader stores them in: int
-    k.min = std::numeric_limits<int>::min();
-    k.max = std::numeric_limits<int>::max();
-  }
-  return k;
-}
-KeySpec required(KeySpec k) {
-  k.required = true;
-  return k;
-}
-KeySpec with_default(KeySpec k, std::string value) {
-  k.default_value = std::move(value);
-  return k;
-}
-KeySpec range(KeySpec k, double min, double max, bool min_exclusive = false) {
-  k.min = std::max(k.min, min);
-  k.max = std::min(k.max, max);
-  k.min_exclusive = min_exclusive && k.min == min;
-  return k;
-}
-KeySpec choices(KeySpec k, std::vector<std::string> values) {
-  k.choices = std::move(values);
-  return k;
-}
+using namespace schema_keys;
 
 /// "a regular file of at most 2 GiB": what an input file key takes (core/input_file).
 std::string regular_file(std::uintmax_t max_bytes) {
@@ -499,65 +462,6 @@ const std::vector<KeySpec>& case_schema() {
     return keys;
   }();
   return schema;
-}
-
-const std::vector<KeySpec>& material_schema() {
-  using T = KeyType;
-  static const std::vector<KeySpec> schema = {
-      required(range(key("format", T::integer, "material card format version"), 1, 1)),
-      required(key("name", T::string, "material name and condition")),
-      required(choices(key("law", T::string, "constitutive law"),
-                       {"newtonian", "norton_hoff", "hansel_spittel", "linear_elastic"})),
-      range(key("temperature", T::number, "temperature at which the numbers hold", "°C"), kAbsoluteZero, kHottest,
-            true),
-      range(key("viscosity", T::number, "newtonian: viscosity η", "MPa.s"), 0, kInf, true),
-      range(key("consistency", T::number, "norton_hoff: consistency K", "MPa.s^m"), 0, kInf, true),
-      range(key("sensitivity", T::number, "norton_hoff: strain-rate sensitivity m", "-"), 0, 1, true),
-      with_default(range(key("regularisation_rate", T::number,
-                             "norton_hoff: ε̄̇₀ in sqrt(ε̄̇² + ε̄̇₀²), keeps rigid zones finite", "1/s"),
-                         0, kInf, true),
-                   "1e-4"),
-      range(key("A", T::number, "hansel_spittel: A", "MPa"), 0, kInf, true),
-      key("m1", T::number, "hansel_spittel: temperature exponent m1 (T in °C)", "1/°C"),
-      key("m2", T::number, "hansel_spittel: strain exponent m2", "-"),
-      key("m3", T::number, "hansel_spittel: strain-rate exponent m3", "-"),
-      key("m4", T::number, "hansel_spittel: m4 in exp(m4/ε̄)", "-"),
-      key("m5", T::number, "hansel_spittel: m5 in (1+ε̄)^(m5 T)", "1/°C"),
-      key("m7", T::number, "hansel_spittel: m7 in exp(m7 ε̄)", "-"),
-      key("m8", T::number, "hansel_spittel: m8 in ε̄̇^(m8 T)", "1/°C"),
-      key("m9", T::number, "hansel_spittel: m9 in T^m9", "-"),
-      with_default(
-          range(key("minimum_strain", T::number, "hansel_spittel: ε̄ floor (ε̄^m2 and exp(m4/ε̄) are singular at 0)", "-"),
-                0, 1, true),
-          "0.01"),
-      key("activation_temperature", T::number,
-          "norton_hoff: β of K(T) = K exp(β (1/T − 1/T_ref)), T in kelvin, T_ref the card's temperature", "K"),
-      range(key("conductivity", T::numbers,
-                "thermal: k, one value or one per thermal_temperatures (from insulators' 0.01 to beyond silver's 429)",
-                "W/(m.K)"),
-            0.01, 1000),
-      range(key("specific_heat", T::numbers,
-                "thermal: c, one value or one per thermal_temperatures (from below lead's 129 to beyond lithium's "
-                "3582)",
-                "J/(kg.K)"),
-            50, 10000),
-      range(key("thermal_temperatures", T::numbers, "thermal: temperatures of the k and c tables, increasing", "°C"),
-            kAbsoluteZero, kHottest, true),
-      range(key("density", T::number, "thermal: ρ (from foams' 100 to beyond osmium's 22,590)", "kg/m3"), 100, 30000),
-      range(key("emissivity", T::number, "thermal: ε of the surface (radiation to the air)", "-"), 0, 1),
-      range(key("young_modulus", T::number, "linear_elastic: E", "MPa"), 0, kInf, true),
-      range(key("poisson_ratio", T::number, "linear_elastic: ν (0.5 allowed: u-p form)", "-"), -1, 0.5, true),
-      required(key("sources", T::map, "where each number comes from: one entry per numeric key")),
-  };
-  // One "sources.<key>" entry per numeric key, so the two lists cannot drift apart.
-  static const std::vector<KeySpec> with_sources = [] {
-    std::vector<KeySpec> all = schema;
-    for (const KeySpec& k : schema)
-      if (k.type == T::number || k.type == T::numbers)
-        all.push_back(key("sources." + k.path, T::string, "source (or reason) of " + k.path));
-    return all;
-  }();
-  return with_sources;
 }
 
 const KeySpec* find_key(const std::vector<KeySpec>& schema, const std::string& path) {

@@ -3,6 +3,8 @@
 // where the die shapes the body.
 #pragma once
 #include "anvil/mesh/TetMesh.h"
+#include "anvil/scene/RunState.h"
+#include "anvil/scene/Scene.h"
 
 #include <vector>
 
@@ -18,5 +20,8 @@ struct DieFeature {
 /// body `body` of `mesh`.
 std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
                                            const std::vector<std::vector<mesh::Point>>& die_vertices);
+
+/// Each die's surface vertices where the die is now.
+std::vector<std::vector<mesh::Point>> dies_in_place(const scene::Scene& scene, const scene::RunState& state);
 
 } // namespace anvil::remesh

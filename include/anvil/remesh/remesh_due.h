@@ -1,0 +1,32 @@
+// When the time loop remeshes a body: the triggers (docs/remeshing.md).
+#pragma once
+#include "anvil/scene/RunState.h"
+#include "anvil/scene/Scene.h"
+
+#include <string>
+#include <vector>
+
+namespace anvil::remesh {
+
+/// A body due for a remesh, and why (for the log).
+struct RemeshDue {
+  int body;
+  std::string why;
+  /// remeshing.local and a trigger that a local remesh may meet: poor
+  /// elements (now or in the next increment). A die corner sunk into the
+  /// body or its overlap with the dies needs new surface nodes, and a
+  /// periodic remesh is of the whole body: they remesh the whole body.
+  bool local = false;
+};
+
+/// The bodies of `state` to remesh after an increment of `dt` (s), by the
+/// case's triggers: worst quality below remeshing.quality, an element that
+/// would invert in a next increment alike, every N increments, a die vertex
+/// deeper than die_penetration × the element size inside the body, more than
+/// die_overlap × its initial volume inside the dies (each of the last two
+/// again only once it has grown by half its trigger beyond what the body's
+/// last remesh left: a remesh that cannot fit a die does not repeat). Elastic
+/// bodies keep their mesh. Logs each body's quality.
+std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt);
+
+} // namespace anvil::remesh

@@ -1,0 +1,85 @@
+#include "anvil/remesh/remesh_due.h"
+
+#include "anvil/core/log.h"
+#include "anvil/remesh/die_feature_depth.h"
+#include "anvil/remesh/quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace anvil::remesh {
+namespace {
+
+/// What body `b`'s last remesh left of the dies inside it (0 before any
+/// remesh, or where an older checkpoint did not keep it).
+struct LeftByRemesh {
+  double die_depth = 0.0;   ///< mm, its deepest die vertex
+  double die_overlap = 0.0; ///< mm³, its overlap with the dies
+};
+LeftByRemesh left_by_last_remesh(const scene::RunState& state, int b) {
+  LeftByRemesh left;
+  for (const scene::RemeshRecord& r : state.remeshes)
+    if (r.body == b)
+      left = {std::isnan(r.die_depth_after) ? 0.0 : r.die_depth_after,
+              std::isnan(r.die_overlap_after) ? 0.0 : r.die_overlap_after};
+  return left;
+}
+
+/// A die trigger on `value` (a die vertex's depth, the body's overlap with
+/// the dies): above `trigger`, and half a trigger beyond what the last remesh
+/// left. A die edge the remesh cannot fit sinks in again at once, and the
+/// body would be remeshed every increment for nothing; a whole trigger's
+/// wait let elements under a rib's edge of the connecting rod be crushed
+/// inside out before the remesh came. Local remeshes keep the surface, so
+/// the overlap grows between whole remeshes alike.
+bool due_again(double value, double trigger, double left) {
+  return value > std::max(trigger, left + 0.5 * trigger);
+}
+
+} // namespace
+
+std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt) {
+  const scene::RemeshSpec& spec = scene.input.remeshing;
+  std::vector<RemeshDue> due;
+  std::vector<std::vector<mesh::Point>> die_vertices; // in place, gathered once when a body needs them
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const scene::Body& body = scene.bodies[b];
+    if (body.law->is_elastic()) continue; // an elastic die keeps its mesh
+    const QualityReport q = assess_quality(state.mesh, state.bodies[b], state.unknowns.nodal, dt, spec.quality);
+    const mesh::Point& at = q.worst_at;
+    log::detail("  quality '%s': worst %.3f (element %d at %.3g, %.3g, %.3g mm), %d below %g; next increment %.3f",
+                body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
+                q.predicted_worst);
+    char why[160] = "";
+    // A local remesh may do for poor elements (it keeps the surface: a die
+    // corner sunk into the body, or a periodic remesh, takes the whole body).
+    const bool local = spec.local && (q.worst < spec.quality || q.predicted_worst <= 0.0);
+    if (q.worst < spec.quality)
+      std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
+    else if (q.predicted_worst <= 0.0)
+      std::snprintf(why, sizeof why, "element %d would invert in the next increment", q.predicted_tet + 1);
+    else if (spec.every > 0 && state.increment % spec.every == 0)
+      std::snprintf(why, sizeof why, "every %d increments", spec.every);
+    else if (!scene.dies.empty()) {
+      if (die_vertices.empty()) die_vertices = dies_in_place(scene, state); // the scene has dies here
+      const std::vector<DieFeature> inside = die_feature_depths(state.mesh, state.bodies[b], die_vertices);
+      const LeftByRemesh left = left_by_last_remesh(state, int(b));
+      const double depth_trigger = spec.die_penetration * body.remesh_size;
+      for (std::size_t d = 0; d < scene.dies.size() && !why[0]; ++d)
+        if (due_again(inside[d].depth, depth_trigger, left.die_depth)) {
+          const mesh::Point& x = inside[d].vertex;
+          std::snprintf(why, sizeof why, "the vertex of die '%s' at %.3g, %.3g, %.3g mm is %.3g mm inside",
+                        scene.dies[d].name.c_str(), x.x(), x.y(), x.z(), inside[d].depth);
+        }
+      const double overlap = state.inside_dies[b];
+      if (!why[0] && due_again(overlap, spec.die_overlap * body.initial_volume, left.die_overlap))
+        std::snprintf(why, sizeof why, "%.3g%% of its initial volume lies inside the dies",
+                      100.0 * overlap / body.initial_volume);
+    }
+    if (why[0]) due.push_back({int(b), why, local});
+  }
+  return due;
+}
+
+} // namespace anvil::remesh
