@@ -246,7 +246,8 @@ int main(int argc, char** argv) {
                 "  --quadrature  facet quadrature levels against error and contact time; DIR/facet_quadrature.csv\n"
                 "  --paper       the blocks of Fourment 2008, nodal contact: 72 runs; DIR/patch_test.csv\n"
                 "  --curved      a cylinder on a block against Hertz: 16 runs; DIR/hertz_cylinder*.csv\n"
-                "  DIR defaults to out/patch_test_table");
+                "  --swap        two cubes with either as master; --interface  one pair drawn (tools/patch_test only)\n"
+                "  DIR defaults to out/patch_test_table; tools/patch_test writes the tables into docs/verification.md");
       return 0;
     }
     if (arg == "--paper" || arg == "--quadrature" || arg == "--curved")

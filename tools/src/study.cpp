@@ -90,7 +90,8 @@ struct Parameter {
 /// A press-load curve as solved: the load of each increment at the stroke
 /// where it was solved (the start of the increment).
 struct LoadCurve {
-  std::vector<double> stroke, load; // mm, N
+  std::vector<double> stroke, load; // mm, N: the whole part's press load
+  int symmetry_copies = 1;          // the model is this share of the whole part
   double at(double s) const {
     if (s <= stroke.front()) return load.front();
     for (std::size_t i = 1; i < stroke.size(); ++i)
@@ -115,6 +116,7 @@ LoadCurve read_curve(const std::string& directory, const std::string& die) {
   const std::vector<io::LoadRow> rows = io::read_loads(directory, die);
   if (rows.empty()) throw RunError(directory + "/loads.csv: no load rows for die '" + die + "'");
   LoadCurve curve;
+  curve.symmetry_copies = static_cast<int>(io::read_summary_number(directory, "symmetry_copies"));
   for (const io::LoadRow& row : rows) { // each load at the stroke it was solved at
     curve.stroke.push_back(row.stroke);
     curve.load.push_back(row.whole_part_load);
@@ -167,8 +169,10 @@ public:
   double error(const LoadCurve& curve) const {
     double worst = 0.0;
     for (std::size_t i = 0; i < curve.stroke.size(); ++i) {
-      const double exact = material::homogeneous_compression_load(*card_.law, volume_, height_ - curve.stroke[i],
-                                                                  height_, speed_, temperature_);
+      // The generated body is the model (a quarter cylinder is a quarter of the part).
+      const double exact =
+          curve.symmetry_copies * material::homogeneous_compression_load(*card_.law, volume_, height_ - curve.stroke[i],
+                                                                         height_, speed_, temperature_);
       worst = std::max(worst, std::abs(curve.load[i] - exact) / exact);
     }
     return worst;
@@ -416,7 +420,7 @@ int study(int argc, char** argv) {
   for (const Row& r : rows) {
     char error[32];
     std::snprintf(error, sizeof error, "%s", no_error_label(kind));
-    if (r.error) std::snprintf(error, sizeof error, "%.3f %%", 100.0 * *r.error);
+    if (r.error) std::snprintf(error, sizeof error, "%.3g %%", 100.0 * *r.error);
     std::printf("| %s | %s | %s | %.1f s | %d | %d | %zu |\n", r.key.c_str(), r.value.c_str(), error, r.run->wall_time,
                 r.run->increments, r.run->nodes, r.run->remeshes);
   }

@@ -61,3 +61,28 @@ TEST_CASE("README and docs/ name only files that exist, and the cases they name 
     CHECK_NOTHROW(anvil::scene::read_case((root / c).string()));
   }
 }
+
+TEST_CASE("docs/ tables of measured figures are written by their tools", "[unit][scene]") {
+  // A table row outside a `<!-- figures: TOOL (NAME) -->` ... `<!-- end
+  // figures -->` block that holds a measured quantity (a number with a unit
+  // of time, memory, force or a percentage) was typed by hand; the tool that
+  // measures it must write it (tools/lib/doc_figures.py).
+  const std::regex measured(R"(\d(?:\.\d+)?(?:e[-+]?\d+)? ?(?:%|s|ms|GB|MB|kN|N)(?:\s|\||$|,|\)))");
+  int blocks = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(source_path("docs"))) {
+    if (entry.path().extension() != ".md") continue;
+    std::ifstream in(entry.path());
+    bool inside = false;
+    int number = 0;
+    for (std::string line; std::getline(in, line);) {
+      ++number;
+      if (line.starts_with("<!-- figures: ")) inside = true, ++blocks;
+      if (line.starts_with("<!-- end figures -->")) inside = false;
+      if (inside || !line.starts_with("|")) continue;
+      INFO(entry.path().filename().string() << ":" << number << ": " << line);
+      CHECK_FALSE(std::regex_search(line, measured));
+    }
+    CHECK_FALSE(inside); // every block closed
+  }
+  CHECK(blocks >= 20);
+}
