@@ -17,8 +17,9 @@ from collections import OrderedDict
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import doc_figures  # noqa: E402
 
-LINE = re.compile(r"(?:(?P<label>[^:]+):\s+)?(?P<problem>\w+)\s+nodes\s+(?P<nodes>\d+)\s+unknowns\s+(?P<unknowns>\d+)\s+"
-                  r"(?P<solver>\w+)\s+newton.*?per solve: assembly\s+(?P<assembly>[\d.]+) s\s+setup\s+(?P<setup>[\d.]+) s"
+LINE = re.compile(r"(?:(?P<label>[^:]+):\s+)?(?P<problem>\w+)\s+nodes\s+(?P<nodes>\d+)\s+"
+                  r"unknowns\s+(?P<unknowns>\d+)\s+(?P<solver>\w+)\s+newton.*?"
+                  r"per solve: assembly\s+(?P<assembly>[\d.]+) s\s+setup\s+(?P<setup>[\d.]+) s"
                   r"\s+solve\s+(?P<solve>[\d.]+) s\s+total\s+(?P<total>[\d.]+) s\s+krylov\s+(?P<krylov>[\d.]+).*?"
                   r"pattern\s+(?P<pattern>[\d.]+) s\s+peak (?P<peak>[\d./]+) GB")
 NAMES = {"newtonian": "Newtonian", "norton_hoff": "Norton-Hoff m = 0.1"}
@@ -27,11 +28,6 @@ NAMES = {"newtonian": "Newtonian", "norton_hoff": "Norton-Hoff m = 0.1"}
 def runs(log):
     with open(log) as f:
         return [m.groupdict() for m in map(LINE.search, f) if m]
-
-
-def table(header, lines):
-    return "\n".join(["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-                     + ["| " + " | ".join(line) + " |" for line in lines])
 
 
 def thousands(n):
@@ -57,7 +53,7 @@ def increment(log):
                       f"**{float(r['total']):.2f} s**" if r["solver"] == "fgmres" else f"{float(r['total']):.2f} s",
                       f"{float(r['krylov']):.0f}" if iterative else "–", f"{float(r['peak']):.2f} GB"])
         last = block
-    doc_figures.write_block("performance.md", "tools/bench_increment", "blocks", table(
+    doc_figures.write_block("performance.md", "tools/bench_increment", "blocks", doc_figures.table(
         ["block", "nodes", "unknowns", "solver", "assembly", "set-up", "solve", "per solve", "Krylov its",
          "peak memory"], lines))
 
@@ -90,7 +86,7 @@ def mpi(log):
             peaks = " / ".join(OrderedDict.fromkeys(r["peak"] for r in rs))
             lines.append([f"{NAMES.get(problem, problem)}, {thousands(nodes)}" if i == 0 else "", label,
                           f("assembly"), f("setup"), f("solve"), f("total"), speed, f("pattern"), f"{peaks} GB"])
-    doc_figures.write_block("parallel-runs.md", "tools/bench_mpi", "blocks", table(
+    doc_figures.write_block("parallel-runs.md", "tools/bench_mpi", "blocks", doc_figures.table(
         ["block, nodes", "run", "assembly", "set-up", "solve", "total", "speed-up", "pattern",
          "peak memory per process"], lines))
 
@@ -109,9 +105,10 @@ def preconditioners(log):
             cells.append(f"{float(r['krylov']):.1f} its, {float(r['solve']):.2f} s" if r else "failed")
         lines.append([amg, schur, *cells])
     nodes = thousands(next(iter(blocks.values()))[problems[0]]["nodes"])
-    doc_figures.write_block("linear-solve.md", "tools/bench_increment --preconditioners", "preconditioners", table(
-        ["velocity AMG", "Schur", *(f"{NAMES.get(p, p)} ({nodes} nodes): Krylov its, solve per Newton iteration"
-                                    for p in problems)], lines))
+    header = ["velocity AMG", "Schur",
+              *(f"{NAMES.get(p, p)} ({nodes} nodes): Krylov its, solve per Newton iteration" for p in problems)]
+    doc_figures.write_block("linear-solve.md", "tools/bench_increment --preconditioners", "preconditioners",
+                            doc_figures.table(header, lines))
 
 
 if __name__ == "__main__":

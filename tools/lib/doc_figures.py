@@ -36,6 +36,12 @@ def machine():
     return f"{platform.node() or 'this machine'}, {cores} cores{', ' + model if model else ''}"
 
 
+def table(header, lines):
+    """A Markdown table: `header` the column names, `lines` the rows' cells (text)."""
+    return "\n".join(["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+                     + ["| " + " | ".join(line) + " |" for line in lines])
+
+
 def write_block(page, tool, name, text):
     """Puts `text` (Markdown) in block `name` of `tool` in docs/`page`."""
     path = os.path.join(ROOT, "docs", page)

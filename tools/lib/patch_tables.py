@@ -31,11 +31,6 @@ def percent(fraction):
     return "0" if abs(p) < 1e-8 else f"{p:.0f}" if abs(p) >= 1000 else f"{p:.3g}"
 
 
-def table(header, lines):
-    return "\n".join(["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-                     + ["| " + " | ".join(line) + " |" for line in lines])
-
-
 def cubes(directory):
     runs = rows(os.path.join(directory, "patch_test_cubes.csv"))
     by = {(r["case"], r["lower_cells"] + "/" + r["upper_cells"], r["master"], r["formulation"], r["integration"]): r
@@ -54,7 +49,7 @@ def cubes(directory):
                       stress(get("symmetric", "nodal")), stress(get("quasi_symmetric", "facet")),
                       f"{float(get('quasi_symmetric', 'nodal')['master_penetration_ratio']):.3g} / "
                       f"{float(get('quasi_symmetric', 'facet')['master_penetration_ratio']):.3g}"])
-    doc_figures.write_block(PAGE, TOOL, "cubes", table(
+    doc_figures.write_block(PAGE, TOOL, "cubes", doc_figures.table(
         ["n_l/n_u", "master", "M/S nodal", "QS nodal", "symmetric nodal", "QS facet",
          "master depth / penalty, QS nodal / facet"], lines))
 
@@ -79,7 +74,7 @@ def cubes(directory):
             f"{percent(n[0])} / {percent(n[1])} %, {n[2]:.4g}", f"{percent(f[0])} / {percent(f[1])} %, {f[2]:.4g}",
             f"{percent(n[3])} % / {percent(f[3])} %"])
     cases = len(OrderedDict.fromkeys(r["case"] for r in runs))
-    doc_figures.write_block(PAGE, TOOL, "cubes worst", f"{len(runs)} runs, {cases} load cases:\n\n" + table(
+    doc_figures.write_block(PAGE, TOOL, "cubes worst", f"{len(runs)} runs, {cases} load cases:\n\n" + doc_figures.table(
         ["formulation", "nodal: pressure / σzz max, depth / penalty", "facet: pressure / σzz max, depth / penalty",
          "swap force change, displacement cases, nodal / facet"], lines))
 
@@ -95,7 +90,7 @@ def paper(directory):
         lines.append([m, f(ms["interface_max"]), f(ms["interface_rms"]), f(qs["interface_max"]),
                       f(qs["interface_rms"]), f(sym["interface_rms"]),
                       f"{100 * float(ms['interior_max']):.2f} / {100 * float(qs['interior_max']):.2f} %"])
-    doc_figures.write_block(PAGE, TOOL + " --paper", "case 1", table(
+    doc_figures.write_block(PAGE, TOOL + " --paper", "case 1", doc_figures.table(
         ["meshes (master/slave cells a side)", "M/S max", "M/S RMS", "QS max", "QS RMS", "symmetric RMS",
          "interior max M/S / QS"], lines))
 
@@ -111,7 +106,7 @@ def quadrature(directory):
              for key, g in groups.items()]
     header = ["n_l/n_u", "master", "formulation"] + [
         c if c == "intersection" else f"subdivision {c} levels" if c == "0" else c for c in columns]
-    doc_figures.write_block(PAGE, TOOL + " --quadrature", "quadrature", table(header, lines))
+    doc_figures.write_block(PAGE, TOOL + " --quadrature", "quadrature", doc_figures.table(header, lines))
 
 
 def curved(directory):
@@ -122,7 +117,7 @@ def curved(directory):
                       f"{float(r['peak_cylinder']):.3f} / {float(r['peak_block']):.3f}",
                       f"{100 * float(r['profile_max']):.1f} / {100 * float(r['profile_rms']):.1f} %",
                       f"{float(r['master_depth_um']):.2g} µm"])
-    doc_figures.write_block(PAGE, TOOL + " --curved", "hertz", table(
+    doc_figures.write_block(PAGE, TOOL + " --curved", "hertz", doc_figures.table(
         ["block facets", "master", "formulation", "integration", "load", "peak / p0, cylinder / block",
          "profile error max / RMS", "deepest master node"], lines))
 
@@ -159,7 +154,7 @@ def swap(directory, anvil):
             vz = " / ".join(f"{100 * change(vl[b], vu[b]):.2g} %" for b in ("lower", "upper"))
             lines.append([f"{lower}/{upper}", SHORT[formulation], f"{fl:.5g} N", f"{fu:.5g} N",
                           f"{100 * change(fl, fu):.2g} %", vz])
-    doc_figures.write_block(PAGE, TOOL + " --swap", "swap", table(
+    doc_figures.write_block(PAGE, TOOL + " --swap", "swap", doc_figures.table(
         ["meshes (lower/upper cells)", "formulation", "load, lower master", "load, upper master", "change",
          "interface vz change lower / upper"], lines))
 
