@@ -13,7 +13,8 @@
 // (8: the heat budget and the transfer time done; both absent before they
 // were kept), /material_position (n×3, flow lines; empty otherwise, absent
 // before them), /folds (r×6: increment, body, centre, area; absent before
-// them), scalar attributes on the root group.
+// them), /damage (k×m: each damage criterion's D per element; absent before
+// damage), scalar attributes on the root group.
 #include "anvil/io/Checkpoint.h"
 
 #include "anvil/core/error.h"
@@ -248,6 +249,10 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
       folds.insert(folds.end(),
                    {double(f.increment), double(f.body), f.centre.x(), f.centre.y(), f.centre.z(), f.area});
     write_array(file, "folds", H5T_NATIVE_DOUBLE, folds.data(), s.folds.size(), 6);
+    std::vector<double> damage;
+    for (const std::vector<double>& d : s.damage)
+      damage.insert(damage.end(), d.begin(), d.end());
+    write_array(file, "damage", H5T_NATIVE_DOUBLE, damage.data(), s.damage.size(), s.mesh.tets.size());
     const scene::HeatBudget& h = s.heat;
     const std::array<double, 8> heat{h.plastic, h.friction,  h.to_dies,      h.to_environment,
                                      h.stored,  h.remeshing, h.initial_heat, s.transfer_time};
@@ -435,6 +440,12 @@ RunState read_state(hid_t file, const std::string& path) {
                          ": increment, body or area out of range (damaged file)");
       s.folds.push_back({int(folds[i]), int(folds[i + 1]), {folds[i + 2], folds[i + 3], folds[i + 4]}, folds[i + 5]});
     }
+  }
+  if (H5Lexists(file, "damage", H5P_DEFAULT) > 0) { // absent before damage
+    std::vector<double> damage;
+    read_finite_array(file, path, "damage", damage, s.mesh.tets.size());
+    for (auto d = damage.begin(); d != damage.end(); d += static_cast<long>(s.mesh.tets.size()))
+      s.damage.emplace_back(d, d + static_cast<long>(s.mesh.tets.size()));
   }
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
       (!s.temperature.empty() && s.temperature.size() != s.mesh.nodes.size()) ||

@@ -5,6 +5,7 @@
 #include "anvil/io/RunResults.h"
 
 #include "anvil/contact/folds.h"
+#include "anvil/scene/damage_peak.h"
 
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
@@ -147,6 +148,8 @@ void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation
     std::fill_n(body_id.values.begin() + state.bodies[b].first_tet, state.bodies[b].tet_count, double(b));
   std::vector<Field> cell_fields{stress, rate, body_id, quality};
   if (!elastic && scene.input.time.enabled) cell_fields.push_back(strain);
+  for (std::size_t k = 0; k < state.damage.size(); ++k)
+    cell_fields.push_back({"damage_" + material::to_string(scene.input.damage[k].criterion), 1, state.damage[k]});
   // Von Mises stress: what a die designer reads off a deformable die.
   Field von_mises{"von_mises_stress", 1, {}};
   for (const material::Vec6& sigma : fields.stress)
@@ -385,6 +388,25 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
           .end_array()
           .member("area_model_mm2", f.area)
           .end_object();
+    json.end_array();
+  }
+  if (!state.damage.empty()) {
+    // Each criterion's largest D and the centroid of the element holding it.
+    json.key("damage").begin_array();
+    for (std::size_t k = 0; k < state.damage.size(); ++k) {
+      const scene::DamagePeak peak = scene::damage_peak(state, k);
+      json.begin_object()
+          .member("criterion", material::to_string(scene.input.damage[k].criterion))
+          .member("max", peak.value)
+          .member("body", scene.bodies[peak.body].name)
+          .key("at_mm")
+          .begin_array()
+          .value(peak.position.x())
+          .value(peak.position.y())
+          .value(peak.position.z())
+          .end_array()
+          .end_object();
+    }
     json.end_array();
   }
   json.key("press_loads_N").begin_array();

@@ -173,12 +173,13 @@ double relative(double after, double before) {
 /// A body remeshed around its poor elements, with its fields.
 struct LocalRemesh {
   mesh::TetMesh mesh;
-  Eigen::VectorXd nodal;       ///< 4 a node: v, p
-  std::vector<double> strain;  ///< ε̄ a tet
-  Eigen::VectorXd temperature; ///< a node; empty when isothermal
-  Eigen::VectorXd material;    ///< 3 a node: where it started; empty without flow lines
-  int rebuilt = 0;             ///< tets of the old mesh rebuilt
-  double worst = 1.0;          ///< worst quality of the rebuilt region
+  Eigen::VectorXd nodal;                   ///< 4 a node: v, p
+  std::vector<double> strain;              ///< ε̄ a tet
+  std::vector<std::vector<double>> damage; ///< D a tet, per damage criterion
+  Eigen::VectorXd temperature;             ///< a node; empty when isothermal
+  Eigen::VectorXd material;                ///< 3 a node: where it started; empty without flow lines
+  int rebuilt = 0;                         ///< tets of the old mesh rebuilt
+  double worst = 1.0;                      ///< worst quality of the rebuilt region
   double strain_integral_change = 0.0, strain_max_change = 0.0; ///< relative, over the body
 };
 
@@ -210,8 +211,10 @@ mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
 /// (its poor elements are held by the surface, which a local remesh keeps).
 std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, const mesh::TetMesh& part,
                                           const Eigen::Ref<const Eigen::VectorXd>& part_nodal,
-                                          const std::vector<double>& part_strain, const double* part_temperature,
-                                          const double* part_material, double time_step, std::string& why_not) {
+                                          const std::vector<double>& part_strain,
+                                          const std::vector<std::vector<double>>& part_damage,
+                                          const double* part_temperature, const double* part_material, double time_step,
+                                          std::string& why_not) {
   const scene::RemeshSpec& spec = scene.input.remeshing;
   const scene::Body& body = scene.bodies[b];
   const std::vector<char> region = rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
@@ -243,20 +246,27 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, cons
     return std::nullopt;
   }
   // Fields: the kept nodes and tets keep theirs; the new ones take them from
-  // the old region, ε̄ by the conservative remap.
+  // the old region, ε̄ and D by the conservative remap.
   const mesh::TetMesh old_region = tets_of(part, region);
   std::vector<char> is_new(local.mesh.tets.size(), 0);
   std::fill(is_new.begin() + local.kept_tets, is_new.end(), 1);
   const mesh::TetMesh new_region = tets_of(local.mesh, is_new);
-  std::vector<double> old_strain;
-  for (int e = 0; e < part.tet_count(); ++e)
-    if (region[e]) old_strain.push_back(part_strain[e]);
   const PointLocator in_old(old_region);
-  const std::vector<double> new_strain = transfer_element(old_region, old_strain, in_old, new_region);
-  out.strain.reserve(local.mesh.tets.size());
-  for (int e = 0; e < part.tet_count(); ++e)
-    if (!region[e]) out.strain.push_back(part_strain[e]);
-  out.strain.insert(out.strain.end(), new_strain.begin(), new_strain.end());
+  // An element field of the body on the local mesh: kept tets first (remesh_region's order), then the new.
+  auto element_field = [&](const std::vector<double>& values) {
+    std::vector<double> old_values, result;
+    for (int e = 0; e < part.tet_count(); ++e)
+      if (region[e]) old_values.push_back(values[e]);
+    const std::vector<double> new_values = transfer_element(old_region, old_values, in_old, new_region);
+    result.reserve(local.mesh.tets.size());
+    for (int e = 0; e < part.tet_count(); ++e)
+      if (!region[e]) result.push_back(values[e]);
+    result.insert(result.end(), new_values.begin(), new_values.end());
+    return result;
+  };
+  out.strain = element_field(part_strain);
+  for (const std::vector<double>& d : part_damage)
+    out.damage.push_back(element_field(d));
   out.strain_integral_change = relative(integral(local.mesh, out.strain), integral(part, part_strain));
   out.strain_max_change = relative(*std::max_element(out.strain.begin(), out.strain.end()),
                                    *std::max_element(part_strain.begin(), part_strain.end()));
@@ -322,6 +332,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
   mesh::TetMesh next;
   std::vector<mesh::MeshRange> ranges;
   std::vector<double> nodal, strain, stress, temperature, material;
+  std::vector<std::vector<double>> damage(state.damage.size());
   auto append_values = [](std::vector<double>& to, const double* first, std::size_t count) {
     to.insert(to.end(), first, first + count);
   };
@@ -338,6 +349,9 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     const double* part_nodal = state.unknowns.nodal.data() + 4 * range.first_node;
     const std::vector<double> part_strain(state.equivalent_strain.begin() + range.first_tet,
                                           state.equivalent_strain.begin() + range.first_tet + range.tet_count);
+    std::vector<std::vector<double>> part_damage;
+    for (const std::vector<double>& d : state.damage)
+      part_damage.emplace_back(d.begin() + range.first_tet, d.begin() + range.first_tet + range.tet_count);
     const auto why = std::find_if(due.begin(), due.end(), [&](const RemeshDue& d) { return d.body == int(b); });
     const double* part_temperature = thermal ? state.temperature.data() + range.first_node : nullptr;
     const double* part_material = flow_lines ? state.material_position.data() + 3 * range.first_node : nullptr;
@@ -347,6 +361,8 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       if (thermal) append_values(temperature, part_temperature, range.node_count);
       if (flow_lines) append_values(material, part_material, 3 * range.node_count);
       append_values(strain, part_strain.data(), part_strain.size());
+      for (std::size_t k = 0; k < damage.size(); ++k)
+        append_values(damage[k], part_damage[k].data(), part_damage[k].size());
       if (carries_stress) append_values(stress, &state.elastic_stress[6 * range.first_tet], 6 * range.tet_count);
     };
     if (why == due.end()) {
@@ -357,13 +373,15 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       std::string whole;
       std::optional<LocalRemesh> local =
           remesh_locally(scene, int(b), part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count),
-                         part_strain, part_temperature, part_material, time_step, whole);
+                         part_strain, part_damage, part_temperature, part_material, time_step, whole);
       if (local) {
         ranges.push_back(mesh::append(next, local->mesh));
         append_values(nodal, local->nodal.data(), local->nodal.size());
         if (thermal) append_values(temperature, local->temperature.data(), local->temperature.size());
         if (flow_lines) append_values(material, local->material.data(), local->material.size());
         append_values(strain, local->strain.data(), local->strain.size());
+        for (std::size_t k = 0; k < damage.size(); ++k)
+          append_values(damage[k], local->damage[k].data(), local->damage[k].size());
         if (carries_stress) stress.insert(stress.end(), 6 * local->mesh.tets.size(), 0.0);
         const scene::RemeshRecord record{
             state.increment,
@@ -414,7 +432,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     const mesh::TetMesh& fresh = best.mesh;
     const double volume_before = mesh::volume(part), volume_remeshed = mesh::volume(best.remeshed);
     const double volume_after = mesh::volume(fresh);
-    // Nodal v and p interpolated: the next Newton's first guess. ε̄ by a
+    // Nodal v and p interpolated: the next Newton's first guess. ε̄ (and D) by a
     // conservative remap onto the mesh CGAL made of the old body (the same
     // domain), its peaks kept; fitting to the dies then moves the elements
     // with their values, as an increment's update does.
@@ -462,6 +480,10 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       append_values(material, fresh_material.data(), fresh_material.size());
     }
     append_values(strain, fresh_strain.data(), fresh_strain.size());
+    for (std::size_t k = 0; k < damage.size(); ++k) {
+      const std::vector<double> fresh_damage = transfer_element(part, part_damage[k], in_old, best.remeshed);
+      append_values(damage[k], fresh_damage.data(), fresh_damage.size());
+    }
     if (carries_stress) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // a flowing body carries none
 
     const double strain_remeshed = integral(best.remeshed, fresh_strain); // ∫ε̄ dV before the fit to the dies
@@ -505,6 +527,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
   state.mesh = std::move(next);
   state.bodies = std::move(ranges);
   state.equivalent_strain = std::move(strain);
+  state.damage = std::move(damage);
   state.elastic_stress = std::move(stress);
   if (thermal) state.temperature = std::move(temperature);
   if (flow_lines) state.material_position = std::move(material);

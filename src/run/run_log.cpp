@@ -112,14 +112,24 @@ void log_progress(const Scene& scene, const Discretisation& disc, const RunState
   char model[48] = "";
   if (scene.symmetry_copies > 1)
     std::snprintf(model, sizeof model, " (%d x %.5g)", scene.symmetry_copies, lead.press_load() / 1e3);
+  // damage.progress: each criterion's largest D so far.
+  std::string damage;
+  if (scene.input.damage_on_progress)
+    for (std::size_t k = 0; k < state.damage.size(); ++k) {
+      char text[64];
+      std::snprintf(text, sizeof text, "  D %s %.3g", material::to_string(scene.input.damage[k].criterion).c_str(),
+                    *std::max_element(state.damage[k].begin(), state.damage[k].end()));
+      damage += text;
+    }
   log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN%s at %.4g mm  newton %zu%s  contact %d  "
-            "volume %+.3f%% (%.3f%% inside dies)%s  left ~%s",
+            "volume %+.3f%% (%.3f%% inside dies)%s%s  left ~%s",
             state.increment, state.time, surface_stroke(scene, state.dies, lead.surface, state.time), inc.time_step,
             scene.surfaces[lead.surface].name.c_str(), scene.whole_part_load(lead) / 1e3, model, lead.stroke,
             inc.report.iterations.size(), krylov.c_str(), contacts,
             100.0 * (mesh::volume(state.mesh) / state.volume.initial - 1.0),
             100.0 * std::accumulate(state.inside_dies.begin(), state.inside_dies.end(), 0.0) / state.volume.initial,
-            temperature_text(state, heat_share).c_str(), std::isnan(time_left) ? "?" : clock_text(time_left).c_str());
+            temperature_text(state, heat_share).c_str(), damage.c_str(),
+            std::isnan(time_left) ? "?" : clock_text(time_left).c_str());
 }
 
 } // namespace anvil::run

@@ -272,6 +272,26 @@ void read_contact_heat(const CheckedYaml& doc, Case& c) {
   });
 }
 
+/// damage: each criterion asked for (true), Oyane's with its constant.
+void read_damage(const CheckedYaml& doc, Case& c) {
+  const YAML::Node d = doc.root()["damage"];
+  if (!d) return;
+  if (!c.time.enabled)
+    doc.fail(d, "damage", "damage is integrated over the deformation: the case needs a 'time' section");
+  for (const auto& [name, criterion] : material::damage_criterion_names()) {
+    if (!doc.boolean(d, name, "damage." + name)) continue;
+    material::DamageModel& m = c.damage.emplace_back();
+    m.criterion = criterion;
+    if (criterion == material::DamageCriterion::oyane) {
+      doc.require(d, "oyane_a", "damage", "Oyane's criterion needs the material's constant a (damage.oyane_a)");
+      m.oyane_a = doc.number(d, "oyane_a", "damage.oyane_a");
+    }
+  }
+  if (c.damage.empty())
+    doc.fail(d, "damage", "no criterion asked for: set one or more of cockcroft_latham, oyane, ayada, brozzo to true");
+  c.damage_on_progress = doc.boolean(d, "progress", "damage.progress");
+}
+
 void read_thermal(const CheckedYaml& doc, Case& c) {
   const YAML::Node t = doc.root()["thermal"];
   if (t) {
@@ -484,6 +504,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
   }
   if (!c.dies.empty() && !c.time.enabled)
     doc.fail(root["dies"], "dies", "dies need a 'time' section (stroke increment and stop criteria)");
+  read_damage(doc, c);
   return c;
 }
 

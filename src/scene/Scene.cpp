@@ -319,6 +319,7 @@ RunState initial_state(const Scene& scene) {
   state.unknowns = {Eigen::VectorXd::Zero(4 * state.mesh.node_count()),
                     Eigen::VectorXd::Zero(3 * state.mesh.tet_count())};
   state.equivalent_strain.assign(state.mesh.tets.size(), 0.0);
+  state.damage.assign(scene.input.damage.size(), std::vector<double>(state.mesh.tets.size(), 0.0));
   if (scene.carries_stress) state.elastic_stress.assign(6 * state.mesh.tets.size(), 0.0);
   state.dies.assign(scene.dies.size(), DieState{});
   if (scene.thermal)
@@ -351,6 +352,10 @@ void check_resumable(const Scene& scene, const RunState& state, const std::strin
     throw InputError(path + (state.material_position.empty()
                                  ? ": the case asks for flow lines, the checkpoint holds no material positions"
                                  : ": the checkpoint holds material positions, the case asks for no flow lines"));
+  if (state.damage.size() != scene.input.damage.size())
+    throw InputError(path + ": the checkpoint holds " + std::to_string(state.damage.size()) +
+                     " damage criteria, the case asks for " + std::to_string(scene.input.damage.size()) +
+                     " (was the case's 'damage' section changed?)");
   if (scene.carries_stress != !state.elastic_stress.empty())
     throw InputError(path + ": checkpoint dataset 'elastic_stress' does not match the case's bodies (was the case "
                             "changed?)");

@@ -41,6 +41,8 @@ const std::vector<Effect>& effect_registry() {
                 "(docs/reading-a-run.md §5)"},
       {"die_fill", "die fill: each asking die's area touching the part, its share of a region, the underfill field "
                    "(docs/reading-a-run.md §3)"},
+      {"damage", "ductile damage: D = ∫ f(σ) dε̄ per element of the flowing bodies for each criterion asked, "
+                 "carried through remeshes (docs/method.md, \"Ductile damage\")"},
   };
   return registry;
 }
@@ -94,6 +96,7 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
     if (d.fill) add("die_fill");
   if (c.flow_line_axis >= 0) add("flow_lines");
   if (c.detect_folds && c.time.enabled) add("folds");
+  if (!c.damage.empty()) add("damage");
   if (c.thermal.enabled) {
     add("heat");
     add("air_cooling");

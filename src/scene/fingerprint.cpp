@@ -19,8 +19,8 @@ namespace {
 bool free_to_change(const std::string& key) {
   if (key.rfind("output.flow_lines", 0) == 0) return false; // the checkpoint carries them or not
   for (const char* prefix :
-       {"title", "output.", "time.stop.", "time.max_increments", "solver.linear_solver", "solver.schur",
-        "solver.krylov_tolerance", "solver.reuse_preconditioner", "solver.petsc_options"})
+       {"title", "output.", "damage.progress", "time.stop.", "time.max_increments", "solver.linear_solver",
+        "solver.schur", "solver.krylov_tolerance", "solver.reuse_preconditioner", "solver.petsc_options"})
     if (key.rfind(prefix, 0) == 0) return true;
   // A die's fill is measured, not solved for.
   const auto fill = key.find("].fill");

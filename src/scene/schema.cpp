@@ -337,6 +337,25 @@ const std::vector<KeySpec>& case_schema() {
                   "N"),
               0, kInf, true),
         range(key("time.stop.time", T::number, "end time", "s"), 0, kInf, true),
+        key("damage", T::map,
+            "ductile damage (effect damage): D = ∫ f(σ) dε̄ per element of the flowing bodies, carried through "
+            "remeshes like ε̄, written to the VTK series (damage_<criterion>) and its largest value and where to "
+            "summary.json (docs/method.md, \"Ductile damage\")"),
+        with_default(key("damage.cockcroft_latham", T::boolean,
+                         "normalized Cockcroft-Latham, f = max(σ1, 0)/σ̄ (Oh, Chen, Kobayashi 1979)"),
+                     "false"),
+        with_default(key("damage.oyane", T::boolean, "Oyane, f = 1 + σm/(a σ̄) (Oyane, Sato, Okimoto, Shima 1980)"),
+                     "false"),
+        range(key("damage.oyane_a", T::number,
+                  "Oyane's material constant a (from two tests of the material at different triaxiality; "
+                  "Oyane et al. 1980 §2); needed with damage.oyane",
+                  "-"),
+              0, kInf, true),
+        with_default(key("damage.ayada", T::boolean, "Ayada, f = σm/σ̄ (Ayada, Higashino, Mori 1987)"), "false"),
+        with_default(key("damage.brozzo", T::boolean, "Brozzo, f = 2σ1/(3(σ1 − σm)) (Brozzo, Deluca, Rendina 1972)"),
+                     "false"),
+        with_default(key("damage.progress", T::boolean, "the largest value of each criterion on the progress line"),
+                     "false"),
         key("remeshing", T::map, "automatic remeshing of the flowing bodies (CGAL, fields transferred); absent: never"),
         with_default(range(key("remeshing.quality", T::number,
                                "remesh a body when its worst element's volume-edge ratio 6√2V/l_rms³ falls below this, "

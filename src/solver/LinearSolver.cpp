@@ -90,9 +90,11 @@ void LinearSolver::restart() {
   if (kind_ == LinearSolverKind::fgmres && backend_ && backend_->krylov) {
     backend_->krylov->restart(); // the pattern stays: PETSc's distributed one is dear to make
   } else {
+    // A workspace MUMPS had to raise stays raised: the same matrices need it again.
+    const int workspace = backend_ && backend_->mumps ? backend_->mumps->workspace_percent() : 0;
     backend_ = std::make_unique<Backend>();
     if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings_.schur, partition_, timers_);
-    if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace(partition_, timers_);
+    if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace(partition_, timers_, workspace);
     backend_->minres.setMaxIterations(20000);
   }
   analysed_ = false;

@@ -3,7 +3,11 @@
 #include "petsc_check.h"
 #include "petsc_matrix.h"
 
+#include "anvil/core/log.h"
+
 #include <petscksp.h>
+
+#include <algorithm>
 
 namespace anvil::solver {
 
@@ -14,12 +18,43 @@ struct MumpsSolver::Impl {
   petsc::MatrixView matrix;
   petsc::VectorSlot rhs, solution;
   KSP ksp = nullptr;
-  int symmetric = -1; ///< of the factorisation in place: 1 LDLᵀ, 0 LU, −1 none
+  int symmetric = -1;     ///< of the factorisation in place: 1 LDLᵀ, 0 LU, −1 none
+  PetscInt workspace = 0; ///< ICNTL(14), % added to MUMPS's workspace estimate; 0: MUMPS's default
   ~Impl() { KSPDestroy(&ksp); }
 };
 
-MumpsSolver::MumpsSolver(const fem::Partition& partition, Timers& timers)
-    : impl_(std::make_unique<Impl>(partition, timers)) {}
+namespace {
+
+/// MUMPS's errors of a workspace too small for the factorisation (INFOG(1):
+/// −8 integer, −9 real, −11 and −12 for the solution, −14 integer again).
+bool workspace_too_small(PetscInt infog1) {
+  return infog1 == -8 || infog1 == -9 || infog1 == -11 || infog1 == -12 || infog1 == -14;
+}
+
+/// A new KSP of one factorisation by MUMPS (LDLᵀ or LU), options read.
+KSP new_direct_solver(bool symmetric) {
+  KSP ksp = nullptr;
+  check(KSPCreate(PETSC_COMM_WORLD, &ksp), "creating the direct solver");
+  check(KSPSetOptionsPrefix(ksp, "direct_"), "creating the direct solver");
+  check(KSPSetType(ksp, KSPPREONLY), "creating the direct solver");
+  PC pc = nullptr;
+  check(KSPGetPC(ksp, &pc), "creating the direct solver");
+  check(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU), "creating the direct solver");
+  check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "creating the direct solver");
+  petsc::check_options(KSPSetFromOptions(ksp));
+  return ksp;
+}
+
+} // namespace
+
+MumpsSolver::MumpsSolver(const fem::Partition& partition, Timers& timers, int workspace_percent)
+    : impl_(std::make_unique<Impl>(partition, timers)) {
+  impl_->workspace = workspace_percent;
+}
+
+int MumpsSolver::workspace_percent() const {
+  return static_cast<int>(impl_->workspace);
+}
 MumpsSolver::~MumpsSolver() = default;
 
 bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
@@ -32,26 +67,45 @@ bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
   PetscBool symmetric = PETSC_FALSE;
   check(MatIsSymmetric(m, 1e-13 * largest, &symmetric), "checking the tangent's symmetry");
   check(MatSetOption(m, MAT_SYMMETRIC, symmetric), "checking the tangent's symmetry");
-  if (fresh || s.symmetric != static_cast<int>(symmetric)) {
-    KSPDestroy(&s.ksp);
-    check(KSPCreate(PETSC_COMM_WORLD, &s.ksp), "creating the direct solver");
-    check(KSPSetOptionsPrefix(s.ksp, "direct_"), "creating the direct solver");
-    check(KSPSetType(s.ksp, KSPPREONLY), "creating the direct solver");
+  bool renew = fresh || s.symmetric != static_cast<int>(symmetric);
+  // MUMPS sizes its workspace from the analysis; the delayed pivots of an
+  // indefinite saddle-point matrix, more of them across several processes,
+  // can need more than that (measured: upsetting_75 after a remesh, 2
+  // processes, INFOG(1) = −9). The MUMPS users' guide's remedy is a larger
+  // ICNTL(14): doubled, and the factorisation done again, up to four times;
+  // it stays raised while the mesh does (restarts of the solver included).
+  for (int attempt = 0;; ++attempt) {
+    if (renew) {
+      KSPDestroy(&s.ksp);
+      s.ksp = new_direct_solver(symmetric);
+      s.symmetric = static_cast<int>(symmetric);
+      ++analyses_;
+    }
+    check(KSPSetOperators(s.ksp, m, m), "factorising the tangent (MUMPS)");
     PC pc = nullptr;
-    check(KSPGetPC(s.ksp, &pc), "creating the direct solver");
-    check(PCSetType(pc, symmetric ? PCCHOLESKY : PCLU), "creating the direct solver");
-    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "creating the direct solver");
-    petsc::check_options(KSPSetFromOptions(s.ksp));
-    s.symmetric = static_cast<int>(symmetric);
-    ++analyses_;
+    check(KSPGetPC(s.ksp, &pc), "factorising the tangent (MUMPS)");
+    if (renew && s.workspace > 0) {
+      Mat factor = nullptr;
+      check(PCFactorSetUpMatSolverType(pc), "factorising the tangent (MUMPS)");
+      check(PCFactorGetMatrix(pc, &factor), "factorising the tangent (MUMPS)");
+      check(MatMumpsSetIcntl(factor, 14, s.workspace), "factorising the tangent (MUMPS)");
+    }
+    check(KSPSetUp(s.ksp), "factorising the tangent (MUMPS)");
+    PCFailedReason failed = PC_NOERROR;
+    check(PCGetFailedReason(pc, &failed), "factorising the tangent (MUMPS)");
+    if (failed == PC_NOERROR) return true;
+    Mat factor = nullptr;
+    PetscInt infog1 = 0, percent = 0;
+    check(PCFactorGetMatrix(pc, &factor), "factorising the tangent (MUMPS)");
+    check(MatMumpsGetInfog(factor, 1, &infog1), "factorising the tangent (MUMPS)");
+    if (!workspace_too_small(infog1) || attempt == 4) return false;
+    check(MatMumpsGetIcntl(factor, 14, &percent), "factorising the tangent (MUMPS)");
+    s.workspace = 2 * std::max<PetscInt>(percent, 20);
+    log::info("    MUMPS: workspace too small (INFOG(1) = %d); ICNTL(14) raised from %d to %d %% and the tangent "
+              "factorised again",
+              static_cast<int>(infog1), static_cast<int>(percent), static_cast<int>(s.workspace));
+    renew = true;
   }
-  check(KSPSetOperators(s.ksp, m, m), "factorising the tangent (MUMPS)");
-  check(KSPSetUp(s.ksp), "factorising the tangent (MUMPS)");
-  PC pc = nullptr;
-  check(KSPGetPC(s.ksp, &pc), "factorising the tangent (MUMPS)");
-  PCFailedReason failed = PC_NOERROR;
-  check(PCGetFailedReason(pc, &failed), "factorising the tangent (MUMPS)");
-  return failed == PC_NOERROR;
 }
 
 void MumpsSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {

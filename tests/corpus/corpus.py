@@ -240,6 +240,15 @@ case_error("self-contact-formulation",
 case_error("self-contact-quadrature",
            base() + "contact_pairs:\n  - {master: billet, slave: billet, facet_quadrature: subdivision}\n",
            ["case.yaml:", "contact_pairs[0].facet_quadrature", "leave out"])
+case_error("damage-no-criterion", base() + "damage: {progress: true}\n",
+           ["case.yaml:", "damage", "no criterion asked for"])
+case_error("damage-oyane-without-a", base() + "damage: {oyane: true}\n",
+           ["case.yaml:", "oyane_a", "Oyane's criterion needs the material's constant a"])
+case_error("damage-oyane-a-negative", base() + "damage: {oyane: true, oyane_a: -0.5}\n",
+           ["case.yaml:", "damage.oyane_a", "'-0.5'"])
+case_error("damage-unknown-criterion", base() + "damage: {rice_tracey: true}\n",
+           ["case.yaml:", "unknown key 'damage.rice_tracey'"])
+case_error("damage-criterion-not-boolean", base() + "damage: {ayada: 3}\n", ["case.yaml:", "damage.ayada"])
 case_error("quadrature-degree-out-of-range", base() + "solver: {quadrature_degree: 7}\n",
            ["case.yaml:", "solver.quadrature_degree", "7"])
 case_error("fill-region-without-max",

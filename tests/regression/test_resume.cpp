@@ -150,3 +150,30 @@ TEST_CASE("a run resumed with --allow-changes lists each change of the case in a
   CHECK(log.find("  dies[0].friction.law: ") != std::string::npos);
   CHECK(log.find("  dies[0].friction.factor: ") != std::string::npos);
 }
+
+TEST_CASE("a run with damage resumed from a checkpoint carries each criterion's damage", "[regression]") {
+  // cases/upsetting.yaml to 1.5 mm on a coarse mesh with two criteria, whole
+  // and stopped after 4 increments then resumed.
+  anvil::log::set_quiet(true);
+  const std::vector<std::string> coarse{"bodies[0].mesh.element_size=2", "time.stop.stroke=1.5",
+                                        "damage.cockcroft_latham=true", "damage.brozzo=true", "output.vtk=false"};
+  const std::string case_file = source_path("cases/upsetting.yaml");
+  const RunOutputs whole = run_case(anvil::scene::read_case(case_file, coarse), "anvil_damage_resume_whole");
+  std::vector<std::string> stopped = coarse;
+  stopped.push_back("time.max_increments=4");
+  const RunOutputs part = run_case(anvil::scene::read_case(case_file, stopped), "anvil_damage_resume_part");
+  REQUIRE(part.final_state().damage.size() == 2);
+  anvil::run::run(anvil::scene::read_case(case_file, coarse), {part.directory, true, true});
+  const anvil::scene::RunState a = whole.final_state(), b = part.final_state();
+  REQUIRE(a.increment == b.increment);
+  REQUIRE(b.damage.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    REQUIRE(a.damage[k].size() == b.damage[k].size());
+    double worst = 0.0, largest = 0.0;
+    for (std::size_t e = 0; e < a.damage[k].size(); ++e)
+      worst = std::max(worst, std::abs(a.damage[k][e] - b.damage[k][e])), largest = std::max(largest, a.damage[k][e]);
+    INFO("criterion " << k << ": largest difference " << worst << " of D up to " << largest);
+    CHECK(largest > 0.0);
+    CHECK(worst < 1e-12); // the same operations on the same numbers
+  }
+}

@@ -4,6 +4,7 @@
 #include "anvil/contact/Friction.h"
 #include "anvil/contact/die_fill.h"
 #include "anvil/material/Material.h"
+#include "anvil/material/damage.h"
 #include "anvil/scene/BoundaryCondition.h"
 #include "anvil/solver/IncrementSolver.h"
 #include "anvil/thermal/ThermalMaterial.h"
@@ -158,6 +159,10 @@ struct Case {
   int flow_line_axis = -1;   ///< output.flow_lines: 0, 1, 2 for planes normal to x, y, z; −1: none
   int flow_line_count = 12;  ///< planes of material
   bool detect_folds = false; ///< output.folds
+  /// damage: the ductile damage criteria integrated per element (effect
+  /// damage), in the order of material::damage_criterion_names(); empty: none.
+  std::vector<material::DamageModel> damage;
+  bool damage_on_progress = false; ///< damage.progress: the largest value of each on the progress line
 };
 
 /// Reads and checks a case file, with command-line `overrides` applied first:

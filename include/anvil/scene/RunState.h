@@ -122,6 +122,9 @@ struct RunState {
   std::vector<mesh::MeshRange> bodies; ///< where each body sits in `mesh` (changes with remeshing)
   fem::BodyUnknowns unknowns;
   std::vector<double> equivalent_strain; ///< ε̄ per element
+  /// D per element of each criterion of Case::damage (in its order); empty
+  /// when the case asks for none. Zero in elastic bodies (no plastic flow).
+  std::vector<std::vector<double>> damage;
   /// σ (MPa, Mandel, 6 per element) carried by the elements of elastic bodies
   /// solved in velocity form; empty when the scene has none.
   std::vector<double> elastic_stress;

@@ -14,8 +14,9 @@ namespace anvil::solver {
 class MumpsSolver {
 public:
   /// On the rows of `partition`; the matrix's creation timed in `timers`
-  /// (both must outlive the solver).
-  MumpsSolver(const fem::Partition& partition, Timers& timers);
+  /// (both must outlive the solver). `workspace_percent`: MUMPS's ICNTL(14)
+  /// to start from (0: MUMPS's default), a predecessor's workspace_percent().
+  MumpsSolver(const fem::Partition& partition, Timers& timers, int workspace_percent = 0);
   ~MumpsSolver();
   MumpsSolver(const MumpsSolver&) = delete;
   MumpsSolver& operator=(const MumpsSolver&) = delete;
@@ -27,6 +28,8 @@ public:
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
   /// Symbolic analyses so far.
   int analyses() const { return analyses_; }
+  /// ICNTL(14) as raised by a factorisation that ran out of workspace (0: MUMPS's default).
+  int workspace_percent() const;
 
 private:
   struct Impl;
