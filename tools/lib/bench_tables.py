@@ -2,9 +2,10 @@
 
 tools/bench_increment, tools/bench_mpi and tools/bench_increment --preconditioners
 keep their output in a log and call this to write their table into docs/:
-    bench_tables.py increment LOG        docs/performance.md, block "blocks"
-    bench_tables.py mpi LOG              docs/parallel-runs.md, block "blocks"
-    bench_tables.py preconditioners LOG  docs/linear-solve.md, block "preconditioners"
+    bench_tables.py increment LOG [COMMAND]        docs/performance.md, block "blocks"
+    bench_tables.py mpi LOG [COMMAND]              docs/parallel-runs.md, block "blocks"
+    bench_tables.py preconditioners LOG [COMMAND]  docs/linear-solve.md, block "preconditioners"
+COMMAND, the benchmark as it was run, heads the table.
 A line of anvil_bench (tools/src/bench_increment.cpp), optionally after a
 label and a colon: "PROBLEM nodes N unknowns U SOLVER newton K ... per solve:
 assembly A s setup S s solve V s total T s krylov K ... pattern P s peak G GB".
@@ -30,6 +31,10 @@ def runs(log):
         return [m.groupdict() for m in map(LINE.search, f) if m]
 
 
+def heading(command):
+    return f"`{command}`:\n\n" if command else ""
+
+
 def thousands(n):
     n = int(n)
     return f"{n / 1e6:.2f}M" if n >= 1e6 else f"{n / 1e3:.0f}k" if n >= 1e4 else str(n)
@@ -41,7 +46,7 @@ def span(values, digits=2):
     return low if low == high else f"{low}-{high}"
 
 
-def increment(log):
+def increment(log, command=""):
     lines, last = [], None
     for r in runs(log):
         iterative = r["solver"] in ("fgmres", "minres")
@@ -53,12 +58,12 @@ def increment(log):
                       f"**{float(r['total']):.2f} s**" if r["solver"] == "fgmres" else f"{float(r['total']):.2f} s",
                       f"{float(r['krylov']):.0f}" if iterative else "–", f"{float(r['peak']):.2f} GB"])
         last = block
-    doc_figures.write_block("performance.md", "tools/bench_increment", "blocks", doc_figures.table(
+    doc_figures.write_block("performance.md", "tools/bench_increment", "blocks", heading(command) + doc_figures.table(
         ["block", "nodes", "unknowns", "solver", "assembly", "set-up", "solve", "per solve", "Krylov its",
          "peak memory"], lines))
 
 
-def mpi(log):
+def mpi(log, command=""):
     """Rounds of (1 process with every thread, 1 process 1 thread, 2 processes)
     per block; each speed-up against its own round's one-process runs."""
     blocks = OrderedDict()
@@ -86,12 +91,12 @@ def mpi(log):
             peaks = " / ".join(OrderedDict.fromkeys(r["peak"] for r in rs))
             lines.append([f"{NAMES.get(problem, problem)}, {thousands(nodes)}" if i == 0 else "", label,
                           f("assembly"), f("setup"), f("solve"), f("total"), speed, f("pattern"), f"{peaks} GB"])
-    doc_figures.write_block("parallel-runs.md", "tools/bench_mpi", "blocks", doc_figures.table(
-        ["block, nodes", "run", "assembly", "set-up", "solve", "total", "speed-up", "pattern",
+    doc_figures.write_block("parallel-runs.md", "tools/bench_mpi", "blocks", heading(command) + doc_figures.table(
+        ["block, nodes", "run", "assembly (s)", "set-up (s)", "solve (s)", "total (s)", "speed-up", "pattern (s)",
          "peak memory per process"], lines))
 
 
-def preconditioners(log):
+def preconditioners(log, command=""):
     blocks = OrderedDict()
     for r in runs(log):
         blocks.setdefault(r["label"].strip(), OrderedDict())[r["problem"]] = r
@@ -108,10 +113,10 @@ def preconditioners(log):
     header = ["velocity AMG", "Schur",
               *(f"{NAMES.get(p, p)} ({nodes} nodes): Krylov its, solve per Newton iteration" for p in problems)]
     doc_figures.write_block("linear-solve.md", "tools/bench_increment --preconditioners", "preconditioners",
-                            doc_figures.table(header, lines))
+                            heading(command) + doc_figures.table(header, lines))
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3 or sys.argv[1] not in ("increment", "mpi", "preconditioners"):
+    if len(sys.argv) not in (3, 4) or sys.argv[1] not in ("increment", "mpi", "preconditioners"):
         sys.exit(__doc__)
-    globals()[sys.argv[1]](sys.argv[2])
+    globals()[sys.argv[1]](*sys.argv[2:])
