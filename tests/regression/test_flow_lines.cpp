@@ -14,29 +14,10 @@
 #include "anvil/core/subprocess.h"
 
 #include <cmath>
-#include <fstream>
 
 TEST_CASE("flow lines: the planes of material of a homogeneous compression, through remeshes", "[regression]") {
-  const std::string path = (std::filesystem::temp_directory_path() / "anvil_flow_lines_case.yaml").string();
-  std::ofstream(path) << "anvil: 1\n"
-                         "title: homogeneous compression between frictionless plates, remeshed\n"
-                         "bodies:\n"
-                         "  - name: block\n"
-                         "    material: "
-                      << source_path("materials/steel_c45_1100C.yaml")
-                      << "\n"
-                         "    mesh: {generate: box, size: [10, 10, 10], element_size: 1.5}\n"
-                         "boundary:\n"
-                         "  - {name: symmetry_x, type: symmetry, plane: {point: [0, 0, 0], normal: [1, 0, 0]}}\n"
-                         "  - {name: symmetry_y, type: symmetry, plane: {point: [0, 0, 0], normal: [0, 1, 0]}}\n"
-                         "  - {name: support, type: frictionless_plate, plane: {point: [0, 0, 0], normal: [0, 0, 1]}}\n"
-                         "  - {name: press, type: frictionless_plate, plane: {point: [0, 0, 10], normal: [0, 0, 1]}, "
-                         "velocity: [0, 0, -10]}\n"
-                         "time:\n"
-                         "  stroke_increment: 0.25\n"
-                         "  stop: {time: 0.4}\n"
-                         "remeshing: {every: 3}\n"
-                         "output: {flow_lines: {axis: z, count: 6}}\n";
+  const std::string path = homogeneous_compression_case(
+      "anvil_flow_lines_case", 1.5, 0.4, "remeshing: {every: 3}\noutput: {flow_lines: {axis: z, count: 6}}\n");
   const RunOutputs out = run_case(anvil::scene::read_case(path), "anvil_flow_lines");
   const anvil::scene::RunState end = out.final_state();
   REQUIRE(end.material_position.size() == 3 * end.mesh.nodes.size());

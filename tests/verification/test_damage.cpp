@@ -12,28 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
 TEST_CASE("damage in homogeneous compression is f times the equivalent strain", "[verification]") {
-  const auto folder = std::filesystem::temp_directory_path() / "anvil_damage_uniaxial_case";
-  std::filesystem::create_directories(folder);
-  const std::string path = (folder / "block.yaml").string();
-  std::ofstream(path) << "anvil: 1\n"
-                         "title: a block compressed between frictionless plates\n"
-                         "bodies:\n"
-                         "  - name: block\n"
-                         "    material: "
-                      << source_path("materials/steel_c45_1100C.yaml")
-                      << "\n"
-                         "    mesh: {generate: box, origin: [0, 0, 0], size: [10, 10, 10], element_size: 2.5}\n"
-                         "boundary:\n"
-                         "  - {name: symmetry_x, type: symmetry, tag: 1}\n"
-                         "  - {name: symmetry_y, type: symmetry, tag: 3}\n"
-                         "  - {name: bottom, type: frictionless_plate, plane: {point: [0, 0, 0], normal: [0, 0, 1]}}\n"
-                         "  - {name: top, type: frictionless_plate, plane: {point: [0, 0, 10], normal: [0, 0, 1]},\n"
-                         "     velocity: [0, 0, -10]}\n"
-                         "time: {stroke_increment: 0.25, stop: {time: 0.2}}\n"
-                         "damage: {cockcroft_latham: true, oyane: true, oyane_a: 0.5, ayada: true, brozzo: true}\n";
+  const std::string path = homogeneous_compression_case(
+      "anvil_damage_uniaxial_case", 2.5, 0.2,
+      "damage: {cockcroft_latham: true, oyane: true, oyane_a: 0.5, ayada: true, brozzo: true}\n");
   const RunOutputs out = run_case(anvil::scene::read_case(path), "anvil_damage_uniaxial");
   const anvil::scene::RunState end = out.final_state();
   REQUIRE(end.damage.size() == 4); // the registry's order: cockcroft_latham, oyane, ayada, brozzo
