@@ -380,12 +380,7 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
       json.begin_object()
           .member("increment", f.increment)
           .member("body", scene.bodies[f.body].name)
-          .key("centre_mm")
-          .begin_array()
-          .value(f.centre.x())
-          .value(f.centre.y())
-          .value(f.centre.z())
-          .end_array()
+          .array("centre_mm", std::vector<double>{f.centre.x(), f.centre.y(), f.centre.z()})
           .member("area_model_mm2", f.area)
           .end_object();
     json.end_array();
@@ -399,12 +394,7 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
           .member("criterion", material::to_string(scene.input.damage[k].criterion))
           .member("max", peak.value)
           .member("body", scene.bodies[peak.body].name)
-          .key("at_mm")
-          .begin_array()
-          .value(peak.position.x())
-          .value(peak.position.y())
-          .value(peak.position.z())
-          .end_array()
+          .array("at_mm", std::vector<double>{peak.position.x(), peak.position.y(), peak.position.z()})
           .end_object();
     }
     json.end_array();
