@@ -27,28 +27,29 @@ std::optional<DamageCriterion> damage_criterion(const std::string& name) {
   return std::nullopt;
 }
 
-double damage_weight(const DamageModel& model, const Vec6& stress) {
-  const double equivalent = von_mises(stress);
-  // Below this σ̄ (MPa) the point carries no deviator worth weighing: a rigid
-  // zone's round-off; its dε̄ is nil as well.
-  if (equivalent < 1e-12) return 0.0;
-  const double mean = (stress[0] + stress[1] + stress[2]) / 3.0;
+DamageStress damage_stress(const Vec6& stress) {
   const Vec6 c = to_components(stress);
   Eigen::Matrix3d sigma;
   sigma << c[0], c[3], c[5], c[3], c[1], c[4], c[5], c[4], c[2];
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal;
   principal.computeDirect(sigma, Eigen::EigenvaluesOnly);
-  const double largest = principal.eigenvalues()[2]; // ascending
+  return {principal.eigenvalues()[2], (stress[0] + stress[1] + stress[2]) / 3.0, von_mises(stress)}; // ascending
+}
+
+double damage_weight(const DamageModel& model, const DamageStress& s) {
+  // Below this σ̄ (MPa) the point carries no deviator worth weighing: a rigid
+  // zone's round-off; its dε̄ is nil as well.
+  if (s.equivalent < 1e-12) return 0.0;
   switch (model.criterion) {
   case DamageCriterion::cockcroft_latham:
-    return std::max(largest, 0.0) / equivalent;
+    return std::max(s.largest, 0.0) / s.equivalent;
   case DamageCriterion::oyane:
-    return 1.0 + mean / (model.oyane_a * equivalent);
+    return 1.0 + s.mean / (model.oyane_a * s.equivalent);
   case DamageCriterion::ayada:
-    return mean / equivalent;
+    return s.mean / s.equivalent;
   case DamageCriterion::brozzo:
     // σ1 − σm ≥ 0 always, and is 0 only for a hydrostatic stress (σ̄ = 0, above).
-    return 2.0 * largest / (3.0 * (largest - mean));
+    return 2.0 * s.largest / (3.0 * (s.largest - s.mean));
   }
   return 0.0;
 }

@@ -296,13 +296,15 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
   }
   // D += f(σ) Δε̄ per element of the flowing bodies, with the stress and rate
   // of the same solve (material/damage.h).
-  for (std::size_t k = 0; k < scene.input.damage.size(); ++k)
+  if (!scene.input.damage.empty())
     for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
       if (scene.bodies[b].law->is_elastic()) continue;
       const mesh::MeshRange& r = state.bodies[b];
-      for (int e = r.first_tet; e < r.first_tet + r.tet_count; ++e)
-        state.damage[k][e] +=
-            material::damage_weight(scene.input.damage[k], inc.fields.stress[e]) * dt * inc.fields.rate[e];
+      for (int e = r.first_tet; e < r.first_tet + r.tet_count; ++e) {
+        const material::DamageStress sigma = material::damage_stress(inc.fields.stress[e]); // once for all criteria
+        for (std::size_t k = 0; k < scene.input.damage.size(); ++k)
+          state.damage[k][e] += material::damage_weight(scene.input.damage[k], sigma) * dt * inc.fields.rate[e];
+      }
     }
   // σ_{n+1} = σ_n + Δt C:ε̇ in elastic bodies (IncrementalElastic): the stress just solved.
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)

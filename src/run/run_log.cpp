@@ -2,6 +2,7 @@
 
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
+#include "anvil/scene/damage_peak.h"
 
 #include <tbb/info.h>
 
@@ -118,7 +119,7 @@ void log_progress(const Scene& scene, const Discretisation& disc, const RunState
     for (std::size_t k = 0; k < state.damage.size(); ++k) {
       char text[64];
       std::snprintf(text, sizeof text, "  D %s %.3g", material::to_string(scene.input.damage[k].criterion).c_str(),
-                    *std::max_element(state.damage[k].begin(), state.damage[k].end()));
+                    damage_peak(state, k).value);
       damage += text;
     }
   log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN%s at %.4g mm  newton %zu%s  contact %d  "

@@ -137,9 +137,9 @@ def swap(directory, anvil):
                         f"contact_pairs[0].slave={'upper' if lower_master else 'lower'}"],
                        check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         load = abs(float([r for r in rows(os.path.join(out, "loads.csv")) if r["surface"] == "top"][-1]["model_Fz_N"]))
-        vz = {}
+        vz, interface = {}, rows(os.path.join(out, "interface.csv"))
         for body in ("lower", "upper"):
-            side = [r for r in rows(os.path.join(out, "interface.csv")) if r["body"] == body]
+            side = [r for r in interface if r["body"] == body]
             vz[body] = sum(float(r["area_mm2"]) * float(r["vz"]) for r in side) / sum(
                 float(r["area_mm2"]) for r in side)
         return load, vz

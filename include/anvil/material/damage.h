@@ -30,8 +30,19 @@ struct DamageModel {
   double oyane_a = 0.0;
 };
 
-/// f(σ) of `model` at the Cauchy stress `stress` (Mandel, MPa): dD = f dε̄.
-/// Zero where the stress has no deviator (σ̄ = 0: no plastic flow to weigh).
-double damage_weight(const DamageModel& model, const Vec6& stress);
+/// What every criterion reads of a stress (MPa): largest principal σ1, mean
+/// σm, von Mises σ̄. Computed once per element for all the criteria asked.
+struct DamageStress {
+  double largest = 0.0, mean = 0.0, equivalent = 0.0;
+};
+DamageStress damage_stress(const Vec6& stress);
+
+/// f(σ) of `model`: dD = f dε̄. Zero where the stress has no deviator
+/// (σ̄ = 0: no plastic flow to weigh).
+double damage_weight(const DamageModel& model, const DamageStress& s);
+/// The same at the Cauchy stress `stress` (Mandel, MPa).
+inline double damage_weight(const DamageModel& model, const Vec6& stress) {
+  return damage_weight(model, damage_stress(stress));
+}
 
 } // namespace anvil::material
