@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace anvil::die {
 
@@ -17,6 +18,36 @@ mesh::Point project_keeping(const DieSurface& surface, mesh::Point x, const std:
     if (moved <= tolerance) break;
   }
   return x;
+}
+
+SurfaceTriangles refine(const SurfaceTriangles& surface, double longest_edge) {
+  // Longest-edge bisection: a long thin triangle (an STL's fan of a flat
+  // annulus) is cut across its long side only.
+  SurfaceTriangles out{surface.vertices, {}};
+  std::map<std::pair<int, int>, int> midpoints; // by edge, so neighbours cutting an edge share its midpoint
+  const auto midpoint = [&](int a, int b) {
+    const auto [at, added] = midpoints.try_emplace(std::minmax(a, b), static_cast<int>(out.vertices.size()));
+    if (added) out.vertices.push_back(0.5 * (out.vertices[a] + out.vertices[b]));
+    return at->second;
+  };
+  std::vector<std::array<int, 3>> pending(surface.faces.rbegin(), surface.faces.rend());
+  while (!pending.empty()) {
+    const std::array<int, 3> f = pending.back();
+    pending.pop_back();
+    int longest = 0;
+    double length = 0.0;
+    for (int k = 0; k < 3; ++k)
+      if (const double l = (out.vertices[f[(k + 1) % 3]] - out.vertices[f[k]]).norm(); l > length)
+        length = l, longest = k;
+    if (length <= longest_edge) {
+      out.faces.push_back(f);
+      continue;
+    }
+    const int a = f[longest], b = f[(longest + 1) % 3], c = f[(longest + 2) % 3], m = midpoint(a, b);
+    pending.push_back({m, b, c});
+    pending.push_back({a, m, c});
+  }
+  return out;
 }
 
 PlaneSurface::PlaneSurface(const mesh::Point& point, const Eigen::Vector3d& normal, double half_size)

@@ -14,7 +14,11 @@
 // were kept), /material_position (n×3, flow lines; empty otherwise, absent
 // before them), /folds (r×6: increment, body, centre, area; absent before
 // them), /damage (k×m: each damage criterion's D per element; absent before
-// damage), scalar attributes on the root group.
+// damage), /blows (r×12: die, blow, first and last increment, start and end
+// time, energy, work, stroke, peak load, last load, over; absent before energy
+// presses), /wear (the die wear of every worn die's vertices, one after the
+// other) with /wear_sizes (one count per die, 0 without wear; both absent
+// before die wear), scalar attributes on the root group.
 #include "anvil/io/Checkpoint.h"
 
 #include "anvil/core/error.h"
@@ -249,6 +253,19 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
       folds.insert(folds.end(),
                    {double(f.increment), double(f.body), f.centre.x(), f.centre.y(), f.centre.z(), f.area});
     write_array(file, "folds", H5T_NATIVE_DOUBLE, folds.data(), s.folds.size(), 6);
+    std::vector<double> blows;
+    for (const scene::BlowRecord& b : s.blows)
+      blows.insert(blows.end(),
+                   {double(b.die), double(b.blow), double(b.first_increment), double(b.last_increment), b.start_time,
+                    b.end_time, b.energy, b.work, b.stroke, b.peak_load, b.load, double(b.over)});
+    write_array(file, "blows", H5T_NATIVE_DOUBLE, blows.data(), s.blows.size(), 12);
+    std::vector<double> wear, wear_sizes;
+    for (const std::vector<double>& w : s.wear) {
+      wear.insert(wear.end(), w.begin(), w.end());
+      wear_sizes.push_back(static_cast<double>(w.size()));
+    }
+    write_array(file, "wear", H5T_NATIVE_DOUBLE, wear.data(), wear.size(), 0);
+    write_array(file, "wear_sizes", H5T_NATIVE_DOUBLE, wear_sizes.data(), wear_sizes.size(), 0);
     std::vector<double> damage;
     for (const std::vector<double>& d : s.damage)
       damage.insert(damage.end(), d.begin(), d.end());
@@ -440,6 +457,44 @@ RunState read_state(hid_t file, const std::string& path) {
                          ": increment, body or area out of range (damaged file)");
       s.folds.push_back({int(folds[i]), int(folds[i + 1]), {folds[i + 2], folds[i + 3], folds[i + 4]}, folds[i + 5]});
     }
+  }
+  if (H5Lexists(file, "blows", H5P_DEFAULT) > 0) { // absent before energy presses
+    std::vector<double> blows;
+    read_finite_array(file, path, "blows", blows, 12);
+    for (std::size_t i = 0; i < blows.size(); i += 12) {
+      const double* b = &blows[i];
+      if (!(b[0] >= 0.0 && b[0] < 1e6 && b[1] >= 1.0 && b[1] <= 1e6 && b[2] >= 1.0 && b[2] <= s.increment + 1 &&
+            b[3] >= -1.0 && b[3] <= s.increment && b[6] > 0.0 && (b[11] == 0.0 || b[11] == 1.0)))
+        throw InputError(path + ": checkpoint dataset 'blows', record " + std::to_string(i / 12 + 1) +
+                         ": die, blow, increments, energy or state out of range (damaged file)");
+      s.blows.push_back({.die = int(b[0]),
+                         .blow = int(b[1]),
+                         .first_increment = int(b[2]),
+                         .last_increment = int(b[3]),
+                         .start_time = b[4],
+                         .end_time = b[5],
+                         .energy = b[6],
+                         .work = b[7],
+                         .stroke = b[8],
+                         .peak_load = b[9],
+                         .load = b[10],
+                         .over = b[11] == 1.0});
+    }
+  }
+  if (H5Lexists(file, "wear_sizes", H5P_DEFAULT) > 0) { // absent before die wear
+    std::vector<double> wear, sizes;
+    read_finite_array(file, path, "wear", wear, 1);
+    read_finite_array(file, path, "wear_sizes", sizes, 1);
+    std::size_t first = 0;
+    for (double n : sizes) {
+      if (!(n >= 0.0 && n <= static_cast<double>(wear.size() - first) && n == std::floor(n)))
+        throw InputError(path + ": checkpoint dataset 'wear_sizes' does not match 'wear' (damaged file)");
+      const auto count = static_cast<std::size_t>(n);
+      s.wear.emplace_back(wear.begin() + long(first), wear.begin() + long(first + count));
+      first += count;
+    }
+    if (first != wear.size())
+      throw InputError(path + ": checkpoint dataset 'wear_sizes' does not match 'wear' (damaged file)");
   }
   if (H5Lexists(file, "damage", H5P_DEFAULT) > 0) { // absent before damage
     std::vector<double> damage;

@@ -80,6 +80,12 @@ JsonWriter& JsonWriter::value(double number) {
   return *this;
 }
 
+JsonWriter& JsonWriter::value(bool truth) {
+  next_item(false);
+  out_ << (truth ? "true" : "false");
+  return *this;
+}
+
 JsonWriter& JsonWriter::value(long number) {
   next_item(false);
   out_ << number;

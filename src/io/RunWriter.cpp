@@ -184,12 +184,13 @@ void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation
   series_.write(state.increment, state.time, 0, names, mesh, point_fields, cell_fields, field_data);
   std::vector<std::optional<contact::DieFill>> fills = scene::die_fills(scene, mesh, state.dies, true);
   for (std::size_t d = 0; d < scene.dies.size(); ++d) {
-    const die::SurfaceTriangles& t = scene.dies[d].surface->triangles();
+    const die::SurfaceTriangles& t = scene.dies[d].shown();
     std::vector<mesh::Point> moved = t.vertices;
     for (auto& p : moved)
       p += state.dies[d].displacement;
     std::vector<Field> die_fields;
     if (fills[d]) die_fields.push_back({"underfill", 1, std::move(fills[d]->underfill)});
+    if (scene.dies[d].wear) die_fields.push_back({"wear", 1, state.wear[d]});
     series_.write_surface(state.increment, state.time, int(d) + 1, scene.dies[d].name, moved, t.faces, die_fields);
   }
 }
@@ -382,6 +383,44 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
           .member("body", scene.bodies[f.body].name)
           .array("centre_mm", std::vector<double>{f.centre.x(), f.centre.y(), f.centre.z()})
           .member("area_model_mm2", f.area)
+          .end_object();
+    json.end_array();
+  }
+  if (std::any_of(scene.dies.begin(), scene.dies.end(), [](const scene::Die& d) { return d.wear.has_value(); })) {
+    // Each worn die's largest wear and the vertex holding it, in the die's
+    // start position (its STL's coordinates plus its offset).
+    json.key("wear").begin_array();
+    for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+      if (!scene.dies[d].wear) continue;
+      const std::vector<double>& w = state.wear[d];
+      const std::size_t at = std::max_element(w.begin(), w.end()) - w.begin();
+      const mesh::Point& x = scene.dies[d].shown().vertices[at];
+      json.begin_object()
+          .member("die", scene.dies[d].name)
+          .member("max_mm", w[at])
+          .array("at_mm", std::vector<double>{x.x(), x.y(), x.z()})
+          .member("hardness_HRC", scene.dies[d].wear->hardness)
+          .end_object();
+    }
+    json.end_array();
+  }
+  if (!state.blows.empty()) {
+    // Each blow of an energy press: its energy, the work it did on the whole
+    // part (their difference is the blow's energy balance), stroke and peak load.
+    json.key("blows").begin_array();
+    for (const scene::BlowRecord& b : state.blows)
+      json.begin_object()
+          .member("die", scene.dies[b.die].name)
+          .member("blow", b.blow)
+          .array("increments", std::vector<int>{b.first_increment, b.last_increment})
+          .member("start_s", b.start_time)
+          .member("end_s", b.end_time)
+          .member("energy_kJ", b.energy * 1e-6)
+          .member("work_kJ", b.work * 1e-6)
+          .member("energy_left_kJ", b.energy_left() * 1e-6)
+          .member("stroke_mm", b.stroke)
+          .member("peak_load_N", b.peak_load)
+          .member("over", b.over)
           .end_object();
     json.end_array();
   }

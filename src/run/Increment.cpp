@@ -1,5 +1,7 @@
 #include "anvil/run/Increment.h"
 
+#include "anvil/run/blows.h"
+
 #include "anvil/core/log.h"
 
 #include "anvil/contact/contact_scales.h"
@@ -229,6 +231,48 @@ IncrementOutcome solve_coupled(const Scene& scene, Discretisation& disc, const R
   return inc;
 }
 
+namespace {
+
+/// Die wear over an increment of `dt` s (effect die_wear): each worn die's
+/// vertices under the part's contact nodes at the start of the increment
+/// wear at the rate of that node's pressure and sliding speed
+/// (contact/die_wear.h). `state` is the increment's start.
+void add_die_wear(const Scene& scene, const Discretisation& disc, const Eigen::VectorXd& nodal, double dt,
+                  RunState& state) {
+  if (std::none_of(scene.dies.begin(), scene.dies.end(), [](const Die& d) { return d.wear.has_value(); })) return;
+  const mesh::TetMesh& mesh = state.mesh;
+  const std::vector<contact::ContactCandidate>& candidates = disc.die_contact.candidates();
+  // A node's contact area is that of the boundary faces at it that face its
+  // die: contact spreads a node's force over all its boundary faces, so at
+  // an edge or a corner of the contact its pressure would read low.
+  std::vector<int> candidate_of(mesh.nodes.size(), -1);
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (scene.dies[candidates[i].die].wear) candidate_of[candidates[i].node] = static_cast<int>(i);
+  std::vector<double> facing(mesh.nodes.size(), 0.0);
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
+    const Eigen::Vector3d a = mesh::area_vector(mesh, mesh.boundary_faces[f]);
+    for (int node : mesh.boundary_faces[f])
+      if (const int i = candidate_of[node]; i >= 0 && a.dot(candidates[i].normal) < -0.5 * a.norm())
+        facing[node] += a.norm() / 3.0;
+  }
+  std::vector<std::vector<contact::WearPoint>> points(scene.dies.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const contact::ContactCandidate& c = candidates[i];
+    const std::optional<contact::WearLaw>& law = scene.dies[c.die].wear;
+    if (!law || facing[c.node] <= 0.0) continue;
+    const double pressure = disc.die_contact.pressure(static_cast<int>(i), nodal) * c.area / facing[c.node];
+    if (pressure <= 0.0) continue;
+    // A square patch of the node's area reaches 1/√2 of its side from the node; a little more.
+    points[c.die].push_back({mesh.nodes[c.node] - c.gap * c.normal - state.dies[c.die].displacement,
+                             law->rate(pressure, disc.die_contact.sliding_speed(static_cast<int>(i), nodal)),
+                             0.75 * std::sqrt(facing[c.node])});
+  }
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    if (scene.dies[d].wear) contact::add_wear(scene.dies[d].shown().vertices, points[d], dt, state.wear[d]);
+}
+
+} // namespace
+
 bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome& inc, RunState& state,
                       Timers& timers) {
   Timers::Scope scope(timers, "update");
@@ -272,6 +316,7 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
   // its stroke and time. Elastic bodies' loads hold at its end.
   if (!scene.all_elastic)
     append_loads(scene, state.mesh, state.dies, state.increment, state.time, inc.forces, state.loads, timers);
+  add_die_wear(scene, disc, inc.unknowns.nodal, dt, state);
   state.mesh.nodes = std::move(moved.nodes); // the elements stay: the discretisation holds on to them
   state.dies = std::move(dies);
   state.unknowns = std::move(inc.unknowns);
@@ -313,14 +358,16 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
         disc.point_states[e].elastic_stress = inc.fields.stress[e];
         Eigen::Map<material::Vec6>(&state.elastic_stress[6 * e]) = inc.fields.stress[e];
       }
-  // A load-limited press slows down for the next increment.
+  // A load-limited press slows down for the next increment; an energy press
+  // goes on at the speed its blow's energy left gives (run/blows.h).
   const double rate_sensitivity = scene.bodies.front().law->rate_sensitivity(disc.point_states.front());
   for (std::size_t d = 0; d < scene.dies.size(); ++d) {
     const Eigen::Vector3d v = scene.dies[d].velocity(state.dies[d], dt);
     if (v.norm() == 0.0) continue;
-    // The press's limit holds for the whole part, not for a symmetry model of it.
-    scene.dies[d].limit_speed(state.dies[d], scene.symmetry_copies * inc.forces[d].dot(-v.normalized()),
-                              rate_sensitivity);
+    // The press's limit and energy hold for the whole part, not for a symmetry model of it.
+    const double resisting = scene.symmetry_copies * inc.forces[d].dot(-v.normalized());
+    scene.dies[d].limit_speed(state.dies[d], resisting, rate_sensitivity);
+    if (scene.dies[d].energy) spend_blow_energy(scene, static_cast<int>(d), resisting, v.norm() * dt, state);
   }
   return true;
 }
@@ -332,17 +379,19 @@ void advance_heat(const Scene& scene, Discretisation& disc, const IncrementOutco
   element_temperatures(state.mesh, state.temperature, disc.point_states);
 }
 
-void transfer(const Scene& scene, Discretisation& disc, RunState& state, Timers& timers) {
-  const ThermalSpec& spec = scene.input.thermal;
-  const double dt = spec.transfer_time / spec.transfer_steps;
+void heat_alone(const Scene& scene, Discretisation& disc, RunState& state, double dt, int steps, Timers& timers) {
   Timers::Scope scope(timers, "effect heat");
   // Bodies resting on each other exchange where they touch (nothing moves: one search).
   if (disc.pair_contact) disc.pair_contact->search(state.mesh, 0.05 * scene.reference_length);
-  while (state.transfer_time < spec.transfer_time * (1.0 - 1e-12)) {
+  for (int k = 0; k < steps; ++k)
     disc.heat->advance(scene, state, {nullptr, disc.pair_contact.get(), disc.symmetry_faces, nullptr}, nullptr, dt);
-    state.transfer_time += dt;
-  }
   element_temperatures(state.mesh, state.temperature, disc.point_states);
+}
+
+void transfer(const Scene& scene, Discretisation& disc, RunState& state, Timers& timers) {
+  const ThermalSpec& spec = scene.input.thermal;
+  heat_alone(scene, disc, state, spec.transfer_time / spec.transfer_steps, spec.transfer_steps, timers);
+  state.transfer_time = spec.transfer_time;
 }
 
 void record_final_loads(const Scene& scene, Discretisation& disc, RunState& state, double dt, Timers& timers) {
@@ -379,7 +428,22 @@ Advance advance(const Scene& scene, Discretisation& disc, RunState& state, const
                 Timers& timers) {
   IncrementOutcome inc = solve_coupled(scene, disc, state, step, timers);
   bool second_budget = true;
-  for (int cuts = 0; !inc.converged() || !accept_increment(scene, disc, inc, state, timers);) {
+  // An energy press's last increment of a blow is fitted to spend its energy:
+  // a few solves, the load hardly depending on Δt.
+  constexpr int kMaxBlowFits = 4;
+  for (int cuts = 0, fits = 0;;) {
+    if (inc.converged()) {
+      if (const std::optional<double> spending =
+              fits < kMaxBlowFits ? step_spending_blow(scene, state, inc) : std::nullopt) {
+        if (fits++ == 0)
+          log::info("  increment %d: the blow's energy is spent within it: dt %.4g s -> %.4g s", state.increment + 1,
+                    inc.time_step, *spending);
+        step.length = *spending;
+        inc = solve_coupled(scene, disc, state, step, timers);
+        continue;
+      }
+      if (accept_increment(scene, disc, inc, state, timers)) break;
+    }
     if (inc.report.interrupted) return {Advance::End::interrupted, std::move(inc)};
     const bool on_its_way = inc.report.on_its_way();
     const fem::BodyUnknowns stopped_at = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};

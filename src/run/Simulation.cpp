@@ -14,6 +14,7 @@
 #include "anvil/remesh/Remesher.h"
 #include "anvil/run/Increment.h"
 #include "anvil/run/TimeStepControl.h"
+#include "anvil/run/blows.h"
 #include "anvil/run/fold_watch.h"
 #include "anvil/run/load_check.h"
 #include "anvil/run/run_log.h"
@@ -126,6 +127,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
     state.inside_dies = inside_dies(scene, state);
   } else {
     state = initial_state(scene);
+    first_blows(scene, state);
   }
   processes::on_root([&] { prepare_output_folder(out); });
   log::open_file(out + "/anvil.log", options.resume);
@@ -175,6 +177,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
   };
   while (!(stop = clock.stop(state))) {
     if (const int signal = interrupt::requested()) return interrupted(signal);
+    strike_next_blows(scene, disc, state, timers);
     const Clock::time_point increment_start = Clock::now();
     Advance advanced = advance(scene, disc, state, clock, clock.next_step(state), timers);
     if (advanced.end == Advance::End::interrupted) return interrupted(interrupt::requested());

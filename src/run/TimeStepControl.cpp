@@ -1,5 +1,7 @@
 #include "anvil/run/TimeStepControl.h"
 
+#include "anvil/run/blows.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -42,11 +44,15 @@ TimeStepControl::TimeStepControl(const Scene& scene) : scene_(scene), time_(scen
 
 double TimeStepControl::press_speed(const RunState& state) const {
   // The fastest die over a short probe step (an increment is far longer).
+  // At least the speed at the start, so that a die slowed by its load limit
+  // makes shorter strokes; an energy press's ram, slowing down as its blow's
+  // energy runs out, makes the same stroke increments to the end.
   const double probe = 1e-3 * time_.stroke_increment / scene_.reference_velocity;
-  double speed = scene_.reference_velocity;
+  const bool energy = std::any_of(scene_.dies.begin(), scene_.dies.end(), [](const Die& d) { return d.energy; });
+  double speed = energy ? 0.0 : scene_.reference_velocity;
   for (std::size_t d = 0; d < scene_.dies.size(); ++d)
     speed = std::max(speed, scene_.dies[d].velocity(state.dies[d], probe).norm());
-  return speed;
+  return speed > 0.0 ? speed : scene_.reference_velocity;
 }
 
 TimeStep TimeStepControl::next_step(const RunState& state) const {
@@ -102,8 +108,9 @@ Stop TimeStepControl::stop(const RunState& state) const {
     return {"final die gap reached"};
   if (std::isfinite(time_.max_load) && latest_press_load(scene_, state) >= time_.max_load)
     return {"maximum load reached"};
+  if (blows_struck(scene_, state)) return {"all blows struck"};
   for (std::size_t d = 0; d < scene_.dies.size(); ++d)
-    if (state.dies[d].speed_factor < 1e-3)
+    if (state.dies[d].speed_factor < 1e-3 && !between_blows(state, static_cast<int>(d)))
       return {"press stalled at its load limit (die '" + scene_.dies[d].name + "')"};
   // A motion over for good (a table past its last time) can no longer meet
   // a stroke or gap stop.
@@ -140,6 +147,13 @@ std::string TimeStepControl::describe_stop(const RunState& state) const {
     std::snprintf(text, sizeof text, "end time %g s, at %.4g s", time_.end_time, state.time);
     criteria.push_back(text);
   }
+  for (std::size_t d = 0; d < scene_.dies.size(); ++d)
+    if (scene_.dies[d].energy) {
+      const BlowRecord& blow = *current_blow(state, static_cast<int>(d));
+      std::snprintf(text, sizeof text, "%d blows of die '%s', at blow %d%s", scene_.dies[d].energy->blows(),
+                    scene_.dies[d].name.c_str(), blow.blow, blow.over ? " (over)" : "");
+      criteria.push_back(text);
+    }
   std::string all;
   for (const std::string& c : criteria)
     all += (all.empty() ? "" : "; ") + c;
@@ -152,7 +166,7 @@ double TimeStepControl::progress(const RunState& state) const {
   if (std::isfinite(time_.final_stroke)) f = std::max(f, state.dies[time_.stroke_die].stroke / time_.final_stroke);
   if (time_.final_gap > 0.0)
     f = std::max(f, (scene_.die_gap0 - scene_.die_gap(state.dies)) / (scene_.die_gap0 - time_.final_gap));
-  return f;
+  return std::max(f, blows_progress(scene_, state));
 }
 
 } // namespace anvil::run

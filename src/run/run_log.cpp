@@ -1,5 +1,7 @@
 #include "anvil/run/run_log.h"
 
+#include "anvil/run/blows.h"
+
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
 #include "anvil/scene/damage_peak.h"
@@ -55,7 +57,10 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
               disc.imposed.nodes_of_condition[i].size());
   for (const Die& d : scene.dies)
     log::info("  die '%s': %s; %s; friction %s%s", d.name.c_str(), d.surface->describe().c_str(),
-              d.kinematics ? d.kinematics->describe().c_str() : "fixed", contact::describe(d.friction).c_str(),
+              d.energy       ? d.energy->describe().c_str()
+              : d.kinematics ? d.kinematics->describe().c_str()
+                             : "fixed",
+              contact::describe(d.friction).c_str(),
               std::isfinite(d.load_limit) ? (", load limit " + std::to_string(d.load_limit) + " N").c_str() : "");
   for (std::size_t p = 0; p < c.contact_pairs.size(); ++p)
     log::info("  contact pair '%s' (master '%s', slave '%s'): %s; friction %s",
@@ -82,14 +87,17 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
   if (c.time.enabled) {
     const TimeSpec& t = c.time;
     log::info(
-        "time loop: stroke increment %g mm, nodal displacement <= %g x element size, stop: %s%s%s%s",
+        "time loop: stroke increment %g mm, nodal displacement <= %g x element size, stop: %s%s%s%s%s",
         t.stroke_increment, t.max_displacement,
         std::isfinite(t.final_stroke)
             ? ("stroke " + std::to_string(t.final_stroke) + " mm of '" + scene.dies[t.stroke_die].name + "' ").c_str()
             : "",
         t.final_gap > 0.0 ? ("gap " + std::to_string(t.final_gap) + " mm ").c_str() : "",
         std::isfinite(t.max_load) ? ("load " + std::to_string(t.max_load) + " N ").c_str() : "",
-        std::isfinite(t.end_time) ? ("time " + std::to_string(t.end_time) + " s").c_str() : "");
+        std::isfinite(t.end_time) ? ("time " + std::to_string(t.end_time) + " s ").c_str() : "",
+        std::any_of(scene.dies.begin(), scene.dies.end(), [](const Die& d) { return d.energy.has_value(); })
+            ? "after the blows"
+            : "");
   }
 }
 
@@ -123,13 +131,13 @@ void log_progress(const Scene& scene, const Discretisation& disc, const RunState
       damage += text;
     }
   log::info("inc %4d  t %.5g s  stroke %.4g mm  dt %.3g s  load(%s) %.5g kN%s at %.4g mm  newton %zu%s  contact %d  "
-            "volume %+.3f%% (%.3f%% inside dies)%s%s  left ~%s",
+            "volume %+.3f%% (%.3f%% inside dies)%s%s%s  left ~%s",
             state.increment, state.time, surface_stroke(scene, state.dies, lead.surface, state.time), inc.time_step,
             scene.surfaces[lead.surface].name.c_str(), scene.whole_part_load(lead) / 1e3, model, lead.stroke,
             inc.report.iterations.size(), krylov.c_str(), contacts,
             100.0 * (mesh::volume(state.mesh) / state.volume.initial - 1.0),
             100.0 * std::accumulate(state.inside_dies.begin(), state.inside_dies.end(), 0.0) / state.volume.initial,
-            temperature_text(state, heat_share).c_str(), damage.c_str(),
+            temperature_text(state, heat_share).c_str(), damage.c_str(), blows_text(scene, state).c_str(),
             std::isnan(time_left) ? "?" : clock_text(time_left).c_str());
 }
 

@@ -149,7 +149,8 @@ void read_dies(const CheckedYaml& doc, Case& c) {
     auto need = [&](const char* key) { doc.require(n, key, shown, context + " needs it"); };
     auto allow_only = [&](std::vector<std::string> keys) {
       for (const char* key : {"velocity", "direction", "time", "speed", "displacement", "crank_radius", "rod_length",
-                              "rpm", "start_angle", "load_limit"})
+                              "rpm", "start_angle", "load_limit", "blow_energy", "efficiency", "ram_mass",
+                              "flywheel_energy", "flywheel_speed", "inertia", "screw_pitch", "blows", "pause"})
         if (std::find(keys.begin(), keys.end(), key) == keys.end()) doc.forbid(n, key, shown, context);
     };
     if (d.motion == "fixed")
@@ -180,6 +181,30 @@ void read_dies(const CheckedYaml& doc, Case& c) {
           doc.fail(n["time"], shown + ".time", "times must increase strictly (entry " + std::to_string(k + 1) + ")");
       d.direction = doc.vector(n, "direction", "dies[].direction");
       allow_only({"time", "speed", "displacement", "direction"});
+    } else if (d.motion == "hammer" || d.motion == "screw_press") {
+      const bool hammer = d.motion == "hammer";
+      d.direction = doc.vector(n, "direction", "dies[].direction");
+      d.efficiency = doc.number(n, "efficiency", "dies[].efficiency");
+      d.blows = doc.integer(n, "blows", "dies[].blows");
+      d.pause = doc.number(n, "pause", "dies[].pause");
+      if (hammer) {
+        need("blow_energy"), need("ram_mass");
+        d.blow_energy = doc.number(n, "blow_energy", "dies[].blow_energy");
+        d.ram_mass = doc.number(n, "ram_mass", "dies[].ram_mass");
+        allow_only({"blow_energy", "efficiency", "ram_mass", "blows", "pause", "direction"});
+      } else {
+        need("inertia"), need("screw_pitch");
+        if (static_cast<bool>(n["flywheel_energy"]) == static_cast<bool>(n["flywheel_speed"]))
+          doc.fail(n, shown, "a screw press needs exactly one of 'flywheel_energy' (kJ) or 'flywheel_speed' (rpm)");
+        if (n["flywheel_energy"]) d.blow_energy = doc.number(n, "flywheel_energy", "dies[].flywheel_energy");
+        if (n["flywheel_speed"]) d.flywheel_speed = doc.number(n, "flywheel_speed", "dies[].flywheel_speed");
+        d.inertia = doc.number(n, "inertia", "dies[].inertia");
+        d.screw_pitch = doc.number(n, "screw_pitch", "dies[].screw_pitch");
+        if (n["ram_mass"]) d.ram_mass = doc.number(n, "ram_mass", "dies[].ram_mass");
+        if (n["load_limit"]) d.load_limit = doc.number(n, "load_limit", "dies[].load_limit");
+        allow_only({"flywheel_energy", "flywheel_speed", "inertia", "screw_pitch", "efficiency", "ram_mass", "blows",
+                    "pause", "load_limit", "direction"});
+      }
     } else {
       need("crank_radius"), need("rod_length"), need("rpm");
       d.crank_radius = doc.number(n, "crank_radius", "dies[].crank_radius");
@@ -193,6 +218,25 @@ void read_dies(const CheckedYaml& doc, Case& c) {
     }
     if (d.direction.norm() == 0.0) doc.fail(n["direction"], shown + ".direction", "the direction must not be zero");
     d.friction = read_friction(doc, n, "dies", shown);
+    if (const YAML::Node wear = n["wear"]) {
+      d.wear = true;
+      const std::string at = shown + ".wear";
+      contact::WearLaw& law = d.wear_law;
+      doc.require(wear, "coefficient", at, "the Archard coefficient K of w = ∫ K p^a v^b / H^c dt");
+      law.coefficient = doc.number(wear, "coefficient", "dies[].wear.coefficient");
+      law.pressure_exponent = doc.number(wear, "pressure_exponent", "dies[].wear.pressure_exponent");
+      law.velocity_exponent = doc.number(wear, "velocity_exponent", "dies[].wear.velocity_exponent");
+      law.hardness_exponent = doc.number(wear, "hardness_exponent", "dies[].wear.hardness_exponent");
+      if (static_cast<bool>(wear["hardness"]) == static_cast<bool>(wear["material"]))
+        doc.fail(wear, at, "give the die's hardness: 'hardness' (HRC) or 'material' (a card with a hardness table)");
+      if (wear["hardness"]) {
+        law.hardness = doc.number(wear, "hardness", "dies[].wear.hardness");
+        doc.forbid(wear, "temperature", at, "a die given its 'hardness' (the temperature reads a card's table)");
+      } else {
+        d.wear_card = doc.input_file(wear, "material", at, kMaxYamlBytes);
+        if (wear["temperature"]) d.wear_temperature = doc.number(wear, "temperature", "dies[].wear.temperature");
+      }
+    }
     if (const YAML::Node fill = n["fill"]) {
       d.fill = true;
       if (const YAML::Node region = fill["region"]) {
@@ -324,8 +368,14 @@ void read_time(const CheckedYaml& doc, Case& c) {
   time.source = doc.at(t);
   time.volume_compensation = doc.boolean(t, "volume_compensation", "time.volume_compensation");
   const YAML::Node stop = t["stop"];
-  if (!stop || stop.size() == 0)
-    doc.fail(t, "time.stop", "missing: give at least one stop criterion (stroke, gap, load or time)");
+  // An energy press stops the run after its blows when nothing else does.
+  const bool blows_stop = std::any_of(
+      c.dies.begin(), c.dies.end(), [](const DieSpec& d) { return d.motion == "hammer" || d.motion == "screw_press"; });
+  if ((!stop || stop.size() == 0) && !blows_stop)
+    doc.fail(t, "time.stop",
+             "missing: give at least one stop criterion (stroke, gap, load or time; a hammer or screw press stops "
+             "after its blows)");
+  if (!stop) return;
   if (stop["stroke"]) {
     time.final_stroke = doc.number(stop, "stroke", "time.stop.stroke");
     time.stroke_die = -1;
@@ -510,7 +560,7 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
 
 MaterialCard read_material(const std::string& path) {
   const CheckedYaml doc(path, material_schema());
-  MaterialCard card{read_law(doc), std::nullopt, std::nullopt};
+  MaterialCard card{read_law(doc), std::nullopt, std::nullopt, std::nullopt};
   const YAML::Node& root = doc.root();
   if (root["temperature"]) card.temperature = doc.number(root, "temperature", "temperature");
   const std::vector<std::string> thermal_keys{"conductivity", "specific_heat", "density"};
@@ -526,6 +576,10 @@ MaterialCard read_material(const std::string& path) {
     for (const char* key : {"emissivity", "thermal_temperatures"})
       doc.forbid(root, key, "", "a card without thermal properties (conductivity, specific_heat, density)");
   }
+  if (root["hardness"])
+    card.hardness = read_table(doc, root, "hardness", "hardness_temperatures", "");
+  else
+    doc.forbid(root, "hardness_temperatures", "", "a card without 'hardness'");
   return card;
 }
 

@@ -31,7 +31,7 @@ void Die::limit_speed(DieState& s, double resisting, double rate_sensitivity) co
   s.speed_factor = std::min(1.0, s.speed_factor * std::pow(load_limit / resisting, 1.0 / m));
 }
 
-Die build_die(const DieSpec& spec, double body_size) {
+Die build_die(const DieSpec& spec, double body_size, double sampling) {
   Die d;
   d.name = spec.name;
   d.friction = spec.friction;
@@ -49,7 +49,27 @@ Die build_die(const DieSpec& spec, double body_size) {
   else if (spec.motion == "crank")
     d.kinematics = std::make_unique<die::CrankPress>(spec.direction, spec.crank_radius, spec.rod_length, spec.rpm,
                                                      spec.start_angle);
+  else if (spec.motion == "hammer" || spec.motion == "screw_press") {
+    d.energy =
+        spec.motion == "hammer"
+            ? die::EnergyPress::hammer(spec.blow_energy, spec.efficiency, spec.ram_mass, spec.blows, spec.pause)
+            : die::EnergyPress::screw_press(spec.blow_energy, spec.flywheel_speed, spec.inertia, spec.screw_pitch,
+                                            spec.efficiency, spec.ram_mass, spec.blows, spec.pause);
+    d.kinematics = std::make_unique<die::ConstantVelocity>(d.energy->impact_speed() * spec.direction.normalized());
+  }
   d.load_limit = spec.load_limit;
+  if (spec.wear) {
+    d.refined = die::refine(d.surface->triangles(), sampling);
+    d.wear = spec.wear_law;
+    if (!spec.wear_card.empty()) {
+      const MaterialCard card = read_material(spec.wear_card);
+      if (!card.hardness)
+        throw InputError(spec.source + ": key 'dies[].wear.material': '" + spec.wear_card +
+                         "' has no hardness table ('hardness', HRC)");
+      d.wear->hardness =
+          card.hardness->at(std::isnan(spec.wear_temperature) ? spec.temperature : spec.wear_temperature);
+    }
+  }
   return d;
 }
 

@@ -274,7 +274,7 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
   {
     Timers::Scope scope(timers, "effect rigid_dies (setup)");
     for (const DieSpec& spec : c.dies)
-      dies.push_back(build_die(spec, body_size));
+      dies.push_back(build_die(spec, body_size, reference_length)); // a worn die: a sample per boundary edge
   }
   for (std::size_t d = 0; d < dies.size(); ++d)
     surfaces.push_back({dies[d].name, int(d), -1});
@@ -322,6 +322,9 @@ RunState initial_state(const Scene& scene) {
   state.damage.assign(scene.input.damage.size(), std::vector<double>(state.mesh.tets.size(), 0.0));
   if (scene.carries_stress) state.elastic_stress.assign(6 * state.mesh.tets.size(), 0.0);
   state.dies.assign(scene.dies.size(), DieState{});
+  state.wear.resize(scene.dies.size());
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    if (scene.dies[d].wear) state.wear[d].assign(scene.dies[d].shown().vertices.size(), 0.0);
   if (scene.thermal)
     for (std::size_t b = 0; b < scene.bodies.size(); ++b)
       state.temperature.insert(state.temperature.end(), state.bodies[b].node_count, scene.bodies[b].state.temperature);
@@ -369,6 +372,16 @@ void check_resumable(const Scene& scene, const RunState& state, const std::strin
       throw InputError(path + ": checkpoint dataset 'outputs', record " + std::to_string(i + 1) + ": part " +
                        std::to_string(state.outputs[i].part) + " out of range (the bodies and " +
                        std::to_string(scene.dies.size()) + " dies; damaged file)");
+  for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+    const std::size_t vertices = scene.dies[d].wear ? scene.dies[d].shown().vertices.size() : 0;
+    if ((d < state.wear.size() ? state.wear[d].size() : 0) != vertices)
+      throw InputError(path + ": the checkpoint's die wear of die '" + scene.dies[d].name +
+                       "' does not match the case (was its 'wear' or its surface changed?)");
+  }
+  for (std::size_t i = 0; i < state.blows.size(); ++i)
+    if (state.blows[i].die >= static_cast<int>(scene.dies.size()) || !scene.dies[state.blows[i].die].energy)
+      throw InputError(path + ": checkpoint dataset 'blows', record " + std::to_string(i + 1) + ": die " +
+                       std::to_string(state.blows[i].die) + " is no hammer or screw press of the case");
   for (std::size_t i = 0; i < state.folds.size(); ++i)
     if (state.folds[i].body >= static_cast<int>(scene.bodies.size()))
       throw InputError(path + ": checkpoint dataset 'folds', record " + std::to_string(i + 1) + ": body " +
@@ -415,7 +428,7 @@ std::vector<std::optional<contact::DieFill>> die_fills(const Scene& scene, const
   // mesh's own resolution.
   for (std::size_t d = 0; d < scene.dies.size(); ++d)
     if (asks(d))
-      fills[d] = contact::measure_die_fill(scene.dies[d].surface->triangles(), dies_now[d].displacement,
+      fills[d] = contact::measure_die_fill(scene.dies[d].shown(), dies_now[d].displacement,
                                            scene.input.dies[d].fill_region, scene.model_side, part,
                                            fill_tolerance(scene, int(d)), 0.5 * scene.reference_length, with_underfill);
   return fills;

@@ -43,6 +43,8 @@ const std::vector<Effect>& effect_registry() {
                    "(docs/reading-a-run.md §3)"},
       {"damage", "ductile damage: D = ∫ f(σ) dε̄ per element of the flowing bodies for each criterion asked, "
                  "carried through remeshes (docs/method.md, \"Ductile damage\")"},
+      {"die_wear", "die wear: the generalized Archard law w = ∫ K p^a v^b / H^c dt at each vertex of an asking die "
+                   "(docs/method.md, \"Die wear\")"},
   };
   return registry;
 }
@@ -94,6 +96,8 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
   if (c.remeshing.enabled) add("remeshing");
   for (const DieSpec& d : c.dies)
     if (d.fill) add("die_fill");
+  for (const DieSpec& d : c.dies)
+    if (d.wear) add("die_wear");
   if (c.flow_line_axis >= 0) add("flow_lines");
   if (c.detect_folds && c.time.enabled) add("folds");
   if (!c.damage.empty()) add("damage");

@@ -51,6 +51,14 @@ const std::vector<KeySpec>& material_schema() {
             kAbsoluteZero, kHottest, true),
       range(key("density", T::number, "thermal: ρ (from foams' 100 to beyond osmium's 22,590)", "kg/m3"), 100, 30000),
       range(key("emissivity", T::number, "thermal: ε of the surface (radiation to the air)", "-"), 0, 1),
+      range(key("hardness", T::numbers,
+                "die steels: Rockwell C hardness, one value or one per hardness_temperatures (die wear: the die's "
+                "hardness at its temperature)",
+                "HRC"),
+            1, 80),
+      range(
+          key("hardness_temperatures", T::numbers, "die steels: temperatures of the hardness table, increasing", "°C"),
+          kAbsoluteZero, kHottest, true),
       range(key("young_modulus", T::number, "linear_elastic: E", "MPa"), 0, kInf, true),
       range(key("poisson_ratio", T::number, "linear_elastic: ν (0.5 allowed: u-p form)", "-"), -1, 0.5, true),
       required(key("sources", T::map, "where each number comes from: one entry per numeric key")),

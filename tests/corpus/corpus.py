@@ -249,6 +249,53 @@ case_error("damage-oyane-a-negative", base() + "damage: {oyane: true, oyane_a: -
 case_error("damage-unknown-criterion", base() + "damage: {rice_tracey: true}\n",
            ["case.yaml:", "unknown key 'damage.rice_tracey'"])
 case_error("damage-criterion-not-boolean", base() + "damage: {ayada: 3}\n", ["case.yaml:", "damage.ayada"])
+case_error("hammer-without-ram-mass",
+           swap("motion: constant\n    velocity: [0, 0, -10]", "motion: hammer\n    blow_energy: 1"),
+           ["case.yaml:", "ram_mass", "motion 'hammer' needs it"])
+case_error("hammer-with-velocity",
+           swap("motion: constant\n    velocity: [0, 0, -10]",
+                "motion: hammer\n    blow_energy: 1\n    ram_mass: 100\n    velocity: [0, 0, -10]"),
+           ["case.yaml:", "velocity", "motion 'hammer'"])
+case_error("hammer-efficiency-above-one",
+           swap("motion: constant\n    velocity: [0, 0, -10]",
+                "motion: hammer\n    blow_energy: 1\n    ram_mass: 100\n    efficiency: 1.5"),
+           ["case.yaml:", "dies[0].efficiency", "'1.5'"])
+case_error("hammer-zero-blows",
+           swap("motion: constant\n    velocity: [0, 0, -10]",
+                "motion: hammer\n    blow_energy: 1\n    ram_mass: 100\n    blows: 0"),
+           ["case.yaml:", "dies[0].blows", "'0'"])
+case_error("screw-press-energy-and-speed",
+           swap("motion: constant\n    velocity: [0, 0, -10]",
+                "motion: screw_press\n    flywheel_energy: 1\n    flywheel_speed: 100\n    inertia: 10\n"
+                "    screw_pitch: 100"),
+           ["case.yaml:", "exactly one of 'flywheel_energy' (kJ) or 'flywheel_speed' (rpm)"])
+case_error("screw-press-without-pitch",
+           swap("motion: constant\n    velocity: [0, 0, -10]",
+                "motion: screw_press\n    flywheel_energy: 1\n    inertia: 10"),
+           ["case.yaml:", "screw_pitch", "motion 'screw_press' needs it"])
+case_error("no-stop-without-energy-press", swap("  stop: {stroke: 1}\n", ""),
+           ["case.yaml:", "time.stop", "a hammer or screw press stops after its blows"])
+case_error("wear-without-coefficient",
+           swap("  - name: bottom\n", "    wear: {hardness: 50}\n  - name: bottom\n"),
+           ["case.yaml:", "dies[0].wear.coefficient", "missing"])
+case_error("wear-without-hardness",
+           swap("  - name: bottom\n", "    wear: {coefficient: 1.0e-3}\n  - name: bottom\n"),
+           ["case.yaml:", "dies[0].wear", "give the die's hardness"])
+case_error("wear-hardness-and-card",
+           swap("  - name: bottom\n", "    wear: {coefficient: 1.0e-3, hardness: 50, material: card.yaml}\n"
+                "  - name: bottom\n"),
+           ["case.yaml:", "dies[0].wear", "give the die's hardness"])
+case_error("wear-card-missing",
+           swap("  - name: bottom\n", "    wear: {coefficient: 1.0e-3, material: no_such_card.yaml}\n"
+                "  - name: bottom\n"),
+           ["case.yaml:", "dies[0].wear.material", "no_such_card.yaml"])
+case_error("wear-card-without-hardness",
+           swap("  - name: bottom\n", "    wear: {coefficient: 1.0e-3, material: " + MATERIAL + "}\n"
+                "  - name: bottom\n"),
+           ["case.yaml:", "dies[].wear.material", "has no hardness table"])
+case_error("wear-hardness-out-of-range",
+           swap("  - name: bottom\n", "    wear: {coefficient: 1.0e-3, hardness: 300}\n  - name: bottom\n"),
+           ["case.yaml:", "dies[0].wear.hardness", "'300'"])
 case_error("quadrature-degree-out-of-range", base() + "solver: {quadrature_degree: 7}\n",
            ["case.yaml:", "solver.quadrature_degree", "7"])
 case_error("fill-region-without-max",

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <fcntl.h>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <set>
 #include <spawn.h>
@@ -49,6 +50,28 @@ int scene_increment(const std::string& checkpoint) {
 std::string read_text(const std::string& path) {
   std::ifstream in(path);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+/// The final states of `case_file` with `settings` run whole, and run
+/// stopped after `stop_at(whole run's final state)` increments
+/// (time.max_increments) then resumed from its checkpoint (the stop is the
+/// one change allowed).
+std::pair<anvil::scene::RunState, anvil::scene::RunState>
+whole_and_resumed(const std::string& case_file, const std::vector<std::string>& settings,
+                  const std::function<int(const anvil::scene::RunState&)>& stop_at, const std::string& name) {
+  anvil::log::set_quiet(true);
+  const RunOutputs whole = run_case(anvil::scene::read_case(case_file, settings), name + "_whole");
+  const int stop = stop_at(whole.final_state());
+  std::vector<std::string> stopped = settings;
+  stopped.push_back("time.max_increments=" + std::to_string(stop));
+  const RunOutputs part = run_case(anvil::scene::read_case(case_file, stopped), name + "_part");
+  REQUIRE(part.final_state().increment == stop);
+  anvil::run::run(anvil::scene::read_case(case_file, settings), {part.directory, true, true});
+  return {whole.final_state(), part.final_state()};
+}
+
+int after_4(const anvil::scene::RunState&) {
+  return 4;
 }
 
 } // namespace
@@ -111,18 +134,11 @@ TEST_CASE("a run killed with SIGKILL and resumed gives the uninterrupted loads a
 TEST_CASE("a thermal run resumed from a checkpoint continues with the same temperatures and heat budget",
           "[regression]") {
   // cases/hot_upsetting.yaml to 1.5 mm on a coarse mesh, whole and stopped
-  // after 4 increments then resumed (the stop is the one change allowed).
-  anvil::log::set_quiet(true);
-  const std::vector<std::string> coarse{"bodies[0].mesh.element_size=2", "time.stop.stroke=1.5",
-                                        "output.checkpoint_every=1", "output.vtk=false"};
-  const std::string case_file = source_path("cases/hot_upsetting.yaml");
-  const RunOutputs whole = run_case(anvil::scene::read_case(case_file, coarse), "anvil_thermal_resume_whole");
-  std::vector<std::string> stopped = coarse;
-  stopped.push_back("time.max_increments=4");
-  const RunOutputs part = run_case(anvil::scene::read_case(case_file, stopped), "anvil_thermal_resume_part");
-  REQUIRE(part.final_state().increment == 4);
-  anvil::run::run(anvil::scene::read_case(case_file, coarse), {part.directory, true, true});
-  const anvil::scene::RunState a = whole.final_state(), b = part.final_state();
+  // after 4 increments then resumed.
+  const auto [a, b] = whole_and_resumed(
+      source_path("cases/hot_upsetting.yaml"),
+      {"bodies[0].mesh.element_size=2", "time.stop.stroke=1.5", "output.checkpoint_every=1", "output.vtk=false"},
+      after_4, "anvil_thermal_resume");
   REQUIRE(a.increment == b.increment);
   REQUIRE(a.temperature.size() == b.temperature.size());
   double worst = 0.0;
@@ -154,17 +170,10 @@ TEST_CASE("a run resumed with --allow-changes lists each change of the case in a
 TEST_CASE("a run with damage resumed from a checkpoint carries each criterion's damage", "[regression]") {
   // cases/upsetting.yaml to 1.5 mm on a coarse mesh with two criteria, whole
   // and stopped after 4 increments then resumed.
-  anvil::log::set_quiet(true);
-  const std::vector<std::string> coarse{"bodies[0].mesh.element_size=2", "time.stop.stroke=1.5",
-                                        "damage.cockcroft_latham=true", "damage.brozzo=true", "output.vtk=false"};
-  const std::string case_file = source_path("cases/upsetting.yaml");
-  const RunOutputs whole = run_case(anvil::scene::read_case(case_file, coarse), "anvil_damage_resume_whole");
-  std::vector<std::string> stopped = coarse;
-  stopped.push_back("time.max_increments=4");
-  const RunOutputs part = run_case(anvil::scene::read_case(case_file, stopped), "anvil_damage_resume_part");
-  REQUIRE(part.final_state().damage.size() == 2);
-  anvil::run::run(anvil::scene::read_case(case_file, coarse), {part.directory, true, true});
-  const anvil::scene::RunState a = whole.final_state(), b = part.final_state();
+  const auto [a, b] = whole_and_resumed(source_path("cases/upsetting.yaml"),
+                                        {"bodies[0].mesh.element_size=2", "time.stop.stroke=1.5",
+                                         "damage.cockcroft_latham=true", "damage.brozzo=true", "output.vtk=false"},
+                                        after_4, "anvil_damage_resume");
   REQUIRE(a.increment == b.increment);
   REQUIRE(b.damage.size() == 2);
   for (std::size_t k = 0; k < 2; ++k) {
@@ -175,5 +184,45 @@ TEST_CASE("a run with damage resumed from a checkpoint carries each criterion's 
     INFO("criterion " << k << ": largest difference " << worst << " of D up to " << largest);
     CHECK(largest > 0.0);
     CHECK(worst < 1e-12); // the same operations on the same numbers
+  }
+}
+
+TEST_CASE("a hammer run resumed between two blows strikes the second as the uninterrupted run", "[regression]") {
+  // cases/hammer_upsetting.yaml on a coarse mesh, two smaller blows, whole
+  // and stopped at the end of the first blow then resumed: the resumed run
+  // starts with the pause (heat alone) and the second blow.
+  const auto [a, b] = whole_and_resumed(
+      source_path("cases/hammer_upsetting.yaml"),
+      {"bodies[0].mesh.element_size=2", "dies[0].blow_energy=0.1", "dies[0].blows=2", "output.vtk=false"},
+      [](const anvil::scene::RunState& whole) { return whole.blows.at(0).last_increment; }, "anvil_hammer_resume");
+  REQUIRE(a.blows.size() == 2);
+  REQUIRE(b.blows.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    INFO("blow " << k + 1);
+    CHECK(a.blows[k].last_increment == b.blows[k].last_increment);
+    CHECK(a.blows[k].start_time == b.blows[k].start_time);
+    CHECK(a.blows[k].stroke == b.blows[k].stroke); // the same operations on the same numbers
+    CHECK(a.blows[k].work == b.blows[k].work);
+  }
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.temperature.size(); ++i)
+    worst = std::max(worst, std::abs(a.temperature[i] - b.temperature[i]));
+  CHECK(worst < 1e-9);
+}
+
+TEST_CASE("a run with die wear resumed from a checkpoint carries the wear of each die vertex", "[regression]") {
+  // cases/upsetting.yaml to 1.5 mm on a coarse mesh with both dies worn,
+  // whole and stopped after 4 increments then resumed.
+  const auto [a, b] = whole_and_resumed(source_path("cases/upsetting.yaml"),
+                                        {"bodies[0].mesh.element_size=2", "time.stop.stroke=1.5",
+                                         "dies[].wear.coefficient=1e-3", "dies[].wear.hardness=50", "output.vtk=false"},
+                                        after_4, "anvil_wear_resume");
+  REQUIRE(a.increment == b.increment);
+  REQUIRE(a.wear.size() == 2);
+  REQUIRE(b.wear.size() == 2);
+  for (std::size_t d = 0; d < 2; ++d) {
+    REQUIRE(a.wear[d].size() == b.wear[d].size());
+    CHECK(*std::max_element(a.wear[d].begin(), a.wear[d].end()) > 0.0);
+    CHECK(a.wear[d] == b.wear[d]); // the same operations on the same numbers
   }
 }

@@ -57,6 +57,8 @@ public:
   std::vector<Eigen::Vector3d> die_forces(const Eigen::VectorXd& nodal) const;
   /// Contact pressure σn (MPa) of candidate `i` at `nodal` (0 when released).
   double pressure(int i, const Eigen::VectorXd& nodal) const;
+  /// |w| (mm/s): how fast candidate `i` slides on its die at `nodal`.
+  double sliding_speed(int i, const Eigen::VectorXd& nodal) const { return sliding(candidates_[i], nodal).norm(); }
   /// Friction power τ·w A (mW) at candidate `i` at `nodal`, the heat its
   /// sliding makes; 0 when released or frictionless.
   double friction_power(int i, const Eigen::VectorXd& nodal) const;

@@ -30,6 +30,12 @@ struct SurfaceTriangles {
   std::vector<std::array<int, 3>> faces;
 };
 
+/// `surface` with its triangles halved across their longest edge until no
+/// edge is longer than `longest_edge` (mm), orientation kept. Fields
+/// sampled on a die (die wear) need vertices where an STL's flat faces have
+/// none.
+SurfaceTriangles refine(const SurfaceTriangles& surface, double longest_edge);
+
 class DieSurface {
 public:
   virtual ~DieSurface() = default;

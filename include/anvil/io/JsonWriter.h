@@ -25,6 +25,7 @@ public:
   JsonWriter& value(int number) { return value(static_cast<long>(number)); }
   JsonWriter& value(std::string_view text);
   JsonWriter& value(const char* text) { return value(std::string_view(text)); }
+  JsonWriter& value(bool truth);
   /// `key(name).value(v)`.
   template <typename T> JsonWriter& member(std::string_view name, const T& v) { return key(name).value(v); }
   /// An array of numbers on one line.

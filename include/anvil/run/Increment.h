@@ -87,8 +87,14 @@ Advance advance(const scene::Scene& scene, scene::Discretisation& disc, scene::R
 void advance_heat(const scene::Scene& scene, scene::Discretisation& disc, const IncrementOutcome& inc,
                   scene::RunState& state, Timers& timers);
 
-/// Thermal scenes: what is left of the transfer before the press moves
-/// (thermal.transfer_time), in thermal.transfer_steps heat steps without flow.
+/// Thermal scenes: `steps` heat steps of `dt` s without flow (nothing moves):
+/// the bodies cool in air and exchange heat with the dies and each other
+/// where they touch.
+void heat_alone(const scene::Scene& scene, scene::Discretisation& disc, scene::RunState& state, double dt, int steps,
+                Timers& timers);
+
+/// Thermal scenes: the transfer before the press moves (thermal.transfer_time),
+/// in thermal.transfer_steps heat steps without flow.
 void transfer(const scene::Scene& scene, scene::Discretisation& disc, scene::RunState& state, Timers& timers);
 
 /// The stroke (mm) of load surface `surface` with the dies at `dies` at

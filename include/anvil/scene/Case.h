@@ -3,6 +3,7 @@
 #include "anvil/contact/BodyContact.h"
 #include "anvil/contact/Friction.h"
 #include "anvil/contact/die_fill.h"
+#include "anvil/contact/die_wear.h"
 #include "anvil/material/Material.h"
 #include "anvil/material/damage.h"
 #include "anvil/scene/BoundaryCondition.h"
@@ -48,18 +49,33 @@ struct DieSpec {
   mesh::Point plane_point = mesh::Point::Zero();
   Eigen::Vector3d plane_normal = Eigen::Vector3d::UnitZ(); ///< out of the die, towards the body
   double plane_half_size = 0.0;                            ///< mm, display only; 0 = twice the body size
-  std::string motion = "fixed";                            ///< fixed, constant, table, crank, hydraulic
-  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();      ///< constant, hydraulic (mm/s)
-  Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ();   ///< table, crank
-  std::vector<double> table_time, table_values;            ///< table: s and mm/s (speed) or mm (displacement)
+  std::string motion = "fixed";                       ///< fixed, constant, table, crank, hydraulic, hammer, screw_press
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero(); ///< constant, hydraulic (mm/s)
+  Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ(); ///< table, crank
+  std::vector<double> table_time, table_values;          ///< table: s and mm/s (speed) or mm (displacement)
   bool table_is_speed = true;
   double crank_radius = 0.0, rod_length = 0.0, rpm = 0.0, start_angle = 0.0; ///< mm, mm, 1/min, deg
-  double load_limit = std::numeric_limits<double>::infinity();               ///< N, hydraulic
+  double load_limit = std::numeric_limits<double>::infinity();               ///< N, hydraulic, screw_press
+  // Energy presses (hammer, screw_press): die::EnergyPress.
+  double blow_energy = 0.0;    ///< kJ: a hammer's blow, a screw press's flywheel (0: from flywheel_speed)
+  double efficiency = 1.0;     ///< share of the energy that reaches the part
+  double ram_mass = 0.0;       ///< kg
+  double flywheel_speed = 0.0; ///< rpm, screw press
+  double inertia = 0.0;        ///< kg·m², screw press flywheel
+  double screw_pitch = 0.0;    ///< mm per turn, screw press
+  int blows = 1;
+  double pause = 0.0; ///< s between blows
   contact::FrictionLaw friction;
   // Thermal scenes only.
   double temperature = 20.0;          ///< °C, held (a die is a heat sink)
   ContactHeatSpec heat;               ///< to the bodies it touches
   double friction_heat_to_body = 0.5; ///< share of the friction heat into the body
+  // Die wear (effect die_wear), when `wear`: contact/die_wear.h.
+  bool wear = false;
+  contact::WearLaw wear_law; ///< hardness resolved when the scene is built (`wear_card`, `wear_temperature`)
+  std::string wear_card;     ///< material card whose hardness table gives H; empty: wear_law.hardness given
+  double wear_temperature =
+      std::numeric_limits<double>::quiet_NaN(); ///< °C the card's hardness is read at; NaN: the die's temperature
   // Die fill (effect die_fill), when `fill`.
   bool fill = false;
   contact::FillRegion fill_region; ///< die at its start position; unbounded: the whole die
@@ -176,6 +192,7 @@ struct MaterialCard {
   std::unique_ptr<material::Material> law;
   std::optional<double> temperature;               ///< °C, the temperature the numbers hold at
   std::optional<thermal::ThermalMaterial> thermal; ///< when the card gives thermal properties
+  std::optional<thermal::PropertyTable> hardness;  ///< HRC against °C, die steels (die wear)
 };
 
 /// Reads a material card, requiring a source for every number.

@@ -91,6 +91,23 @@ struct RemeshRecord {
   double die_overlap_after = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// One blow of an energy press (hammer, screw press), struck or under way.
+struct BlowRecord {
+  int die;                 ///< index into the case's dies
+  int blow;                ///< 1 for the first
+  int first_increment;     ///< the increment the blow starts with
+  int last_increment = -1; ///< the last increment it has moved in so far
+  double start_time;       ///< s
+  double end_time = 0.0;   ///< s, at the end of its last increment so far
+  double energy;           ///< mJ the blow brings to the part
+  double work = 0.0;       ///< mJ done on the whole part so far, Σ F·v Δt
+  double stroke = 0.0;     ///< mm
+  double peak_load = 0.0;  ///< N, whole part
+  double load = 0.0;       ///< N, whole part, resisting the ram in its last increment
+  bool over = false;       ///< its energy spent
+  double energy_left() const { return energy - work; }
+};
+
 /// A fold (effect folds): where a body's surface met itself.
 struct FoldRecord {
   int increment; ///< first found after this increment
@@ -143,6 +160,10 @@ struct RunState {
   std::vector<std::array<int, 2>> iterations;
   std::vector<RemeshRecord> remeshes;
   std::vector<FoldRecord> folds;
+  std::vector<BlowRecord> blows; ///< of the energy presses, in the order struck
+  /// Die wear (mm) at each vertex of each die's surface (effect die_wear);
+  /// empty for a die without wear.
+  std::vector<std::vector<double>> wear;
   std::vector<OutputFrame> outputs; ///< the VTK series written so far (io::VtkSeries)
   /// mm³ per body of its mesh inside the dies (die::overlap_volume), measured
   /// whenever the mesh or the dies move; not stored: measured again on resume.
