@@ -165,7 +165,6 @@ RunEnd run(const Case& c, const RunOptions& options) {
   TimeLeft time_left;
   time_left.update(clock.progress(state), seconds_since(start));
   solver::NewtonReport last;
-  double last_step = clock.next_step(state).length; // s, of the last increment accepted
   Stop stop;
   // SIGINT or SIGTERM: the increment under way is abandoned, the last
   // accepted one written and checkpointed (core/interrupt).
@@ -175,6 +174,25 @@ RunEnd run(const Case& c, const RunOptions& options) {
     finish(scene, disc, state, writer, last, timers, start);
     return RunEnd{std::string("interrupted by ") + interrupt::name(signal), false, signal, c.checkpoint_every > 0};
   };
+  if (scene.heat_only) {
+    // Nothing moves (cooling, dwell, transfer): heat alone, in equal steps
+    // of at most time.heat_step to the end time.
+    const double step = c.time.heat_step > 0.0 ? c.time.heat_step : c.time.end_time / 50.0;
+    while (!(stop = clock.stop(state))) {
+      if (const int signal = interrupt::requested()) return interrupted(signal);
+      const double left = c.time.end_time - state.time;
+      const double dt = left / std::ceil(left / step - 1e-9);
+      heat_alone(scene, disc, state, dt, 1, timers);
+      ++state.increment;
+      state.time += dt;
+      log_heat_step(state, dt, time_left.update(clock.progress(state), seconds_since(start)));
+      writer.write(scene, disc, state, false, timers);
+    }
+    log::info("stop: %s at increment %d, t = %.6g s", stop.reason.c_str(), state.increment, state.time);
+    finish(scene, disc, state, writer, last, timers, start);
+    return {stop.reason, true};
+  }
+  double last_step = clock.next_step(state).length; // s, of the last increment accepted
   while (!(stop = clock.stop(state))) {
     if (const int signal = interrupt::requested()) return interrupted(signal);
     strike_next_blows(scene, disc, state, timers);

@@ -109,6 +109,11 @@ std::string temperature_text(const RunState& state, double heat_share) {
   return text;
 }
 
+void log_heat_step(const RunState& state, double dt, double time_left) {
+  log::info("inc %4d  t %.5g s  dt %.3g s  heat alone%s  left ~%s", state.increment, state.time, dt,
+            temperature_text(state, 1.0).c_str(), std::isnan(time_left) ? "?" : clock_text(time_left).c_str());
+}
+
 void log_progress(const Scene& scene, const Discretisation& disc, const RunState& state, const IncrementOutcome& inc,
                   double time_left, double heat_share) {
   const LoadRecord& lead = state.loads[state.loads.size() - scene.surfaces.size()];

@@ -359,7 +359,8 @@ void read_time(const CheckedYaml& doc, Case& c) {
   if (!t) return;
   TimeSpec& time = c.time;
   time.enabled = true;
-  time.stroke_increment = doc.number(t, "stroke_increment", "time.stroke_increment");
+  if (t["stroke_increment"]) time.stroke_increment = doc.number(t, "stroke_increment", "time.stroke_increment");
+  if (t["heat_step"]) time.heat_step = doc.number(t, "heat_step", "time.heat_step");
   time.max_displacement = doc.number(t, "max_displacement", "time.max_displacement");
   time.min_step_fraction = doc.number(t, "min_step_fraction", "time.min_step_fraction");
   time.max_cuts = doc.integer(t, "max_cuts", "time.max_cuts");

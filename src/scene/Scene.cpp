@@ -293,10 +293,20 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
       if (imposed.prescribed[k] && k % 4 != 3)
         reference_velocity = std::max(reference_velocity, std::abs(imposed.values[k]));
   }
-  if (c.time.enabled && !(reference_velocity > 0.0))
-    throw InputError(c.path + ": nothing moves at t = 0 (no moving die, no prescribed velocity): the time loop "
-                              "needs a motion");
-  if (c.time.enabled) check_stops_reachable(*this);
+  heat_only = c.time.enabled && !(reference_velocity > 0.0);
+  if (heat_only) {
+    if (!thermal)
+      throw InputError(c.path + ": nothing moves at t = 0 (no moving die, no prescribed velocity): the time loop "
+                                "needs a motion, or a 'thermal' section to solve heat alone (cooling, dwell)");
+    if (!std::isfinite(c.time.end_time) || std::isfinite(c.time.final_stroke) || c.time.final_gap > 0.0 ||
+        std::isfinite(c.time.max_load))
+      throw InputError(c.time.source + ": key 'time.stop': nothing moves (heat alone): the run stops at an end "
+                                       "time, 'time: ...' and nothing else");
+  } else if (c.time.enabled && !(c.time.stroke_increment > 0.0)) {
+    throw InputError(c.time.source + ": missing key 'time.stroke_increment': the travel of the fastest die per "
+                                     "increment (mm)");
+  }
+  if (c.time.enabled && !heat_only) check_stops_reachable(*this);
   check_dies_outside_bodies(*this);
   fingerprint = case_fingerprint(c);
 }

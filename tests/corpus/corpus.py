@@ -296,6 +296,10 @@ case_error("wear-card-without-hardness",
 case_error("wear-hardness-out-of-range",
            swap("  - name: bottom\n", "    wear: {coefficient: 1.0e-3, hardness: 300}\n  - name: bottom\n"),
            ["case.yaml:", "dies[0].wear.hardness", "'300'"])
+case_error("nothing-moves-isothermal",
+           swap("motion: constant\n    velocity: [0, 0, -10]", "motion: fixed",
+                swap("  stop: {stroke: 1}", "  stop: {time: 1}")),
+           ["case.yaml", "nothing moves", "needs a motion, or a 'thermal' section"])
 case_error("quadrature-degree-out-of-range", base() + "solver: {quadrature_degree: 7}\n",
            ["case.yaml:", "solver.quadrature_degree", "7"])
 case_error("fill-region-without-max",
@@ -722,6 +726,10 @@ DIE_0 = "    temperature: 250\n    heat_transfer: 10\n  - name: bottom"
 BODY = "    material: " + MATERIAL
 thermal_error("die-below-absolute-zero", DIE_0, DIE_0.replace("250", "-500"),
               ["dies[0].temperature", "'-500'", "-273.15"])
+case_error("thermal-heat-alone-with-load-stop",
+           swap("motion: constant\n    velocity: [0, 0, -10]", "motion: fixed",
+                swap("  stop: {stroke: 1}", "  stop: {time: 1, load: 1000}", THERMAL)),
+           ["case.yaml:", "time.stop", "nothing moves (heat alone)", "an end time"])
 thermal_error("air-below-absolute-zero", "temperature: 20, convection", "temperature: -300, convection",
               ["thermal.environment.temperature", "'-300'"])
 thermal_error("air-at-1e6", "temperature: 20, convection", "temperature: 1e6, convection",

@@ -161,3 +161,61 @@ TEST_CASE("remeshing a hot billet carries its temperatures and books the stored 
   CHECK(*low > 250.0);
   CHECK(*high < 1155.0);
 }
+
+TEST_CASE("a small part cooling in air follows the lumped exact curve (heat alone: nothing moves)", "[verification]") {
+  // A cube of side 10 mm, every face in air at 20 °C, h = 10 W/(m2.K), no
+  // radiation, nothing moving: the time loop solves heat alone. With a Biot
+  // number h (V/A) / k = 5.6e-4 the cube's mean temperature cools as one lump:
+  //   T(t) = T_air + (T₀ − T_air) exp(−t/τ),  τ = ρ c V / (h A) = 780 s.
+  log::set_quiet(true);
+  const auto folder = std::filesystem::temp_directory_path() / "anvil_lumped_input";
+  std::filesystem::create_directories(folder);
+  write_text(folder / "steel.yaml", R"(format: 1
+name: steel-like thermal properties, no radiation (test)
+law: newtonian
+viscosity: 50
+conductivity: 30
+specific_heat: 600
+density: 7800
+sources:
+  viscosity: "test value, nothing flows"
+  conductivity: "test value"
+  specific_heat: "test value"
+  density: "test value"
+)");
+  write_text(folder / "case.yaml", R"(anvil: 1
+bodies:
+  - name: cube
+    material: steel.yaml
+    temperature: 1000
+    mesh: {generate: box, size: [10, 10, 10], element_size: 2.5}
+thermal:
+  environment: {temperature: 20, convection: 0.01}
+time:
+  stop: {time: 60}
+)");
+  const RunOutputs out = run_case(scene::read_case((folder / "case.yaml").string()), "anvil_lumped_cooling");
+  const scene::RunState state = out.final_state();
+  REQUIRE(state.increment == 50); // the default heat step: a fiftieth of the end time
+  const double rho_c = 7800.0 * 600.0 * 1e-6, h = 0.01, volume_per_area = 1000.0 / 600.0; // mJ/(mm3.K), mW/(mm2.K)
+  const double tau = rho_c * volume_per_area / h;
+  const double lumped = 20.0 + 980.0 * std::exp(-60.0 / tau);
+  const auto [low, high] = std::minmax_element(state.temperature.begin(), state.temperature.end());
+  // The cube's mean temperature from the heat it stored (c constant).
+  const double mean = 1000.0 + state.heat.stored / (rho_c * 1000.0);
+  // Quasi-steady conduction (a²/α = 4 s ≪ 60 s): each pair of faces draws a
+  // slab profile of depth q a/(2k) (q = h (T − T_air), a the half side); a
+  // corner sits below the centre by the three of them.
+  const double q = h * (mean - 20.0), spread = 3.0 * q * 5.0 / (2.0 * 30.0);
+  INFO("T " << *low << " to " << *high << " C, mean " << mean << " C at 60 s; lumped " << lumped << " C (tau " << tau
+            << " s); conduction spread " << spread << " C");
+  // The mean follows the lump but for its surface being cooler than itself
+  // (q a/(3k), 0.5 °C: 0.05 °C over the 72 °C drop) and the heat step's
+  // first-order time error (Δt/τ = 1.5e-3: n (Δt/τ)²/2 of the drop, 0.06 °C).
+  CHECK(std::abs(mean - lumped) < 0.2);
+  // The spread is the conduction's, to the 2.5 mm mesh's error (20 %).
+  CHECK(*high - *low < 1.2 * spread);
+  CHECK(*high - *low > 0.8 * spread);
+  CHECK(state.heat.to_environment > 0.0);
+  CHECK(std::abs(state.heat.imbalance()) < 1e-9 * state.heat.to_environment);
+}

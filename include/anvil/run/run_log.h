@@ -41,6 +41,9 @@ void log_header(const scene::Scene& scene, const scene::Discretisation& disc, co
 /// step's share `heat_share` of the increment's wall time; empty when isothermal.
 std::string temperature_text(const scene::RunState& state, double heat_share);
 
+/// The progress line of an increment of heat alone (nothing moves) of `dt` s.
+void log_heat_step(const scene::RunState& state, double dt, double time_left);
+
 /// The progress line of an accepted increment (its columns are explained in
 /// the README); `time_left` in s (NaN: unknown).
 void log_progress(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state,

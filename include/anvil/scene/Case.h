@@ -107,7 +107,8 @@ struct ThermalSpec {
 /// The time loop (docs/design.md §4). Absent from a case: one increment, no update.
 struct TimeSpec {
   bool enabled = false;
-  double stroke_increment = 0.0; ///< mm of travel of the fastest die per increment
+  double stroke_increment = 0.0; ///< mm of travel of the fastest die per increment (0: not given)
+  double heat_step = 0.0;        ///< s, heat alone (nothing moves); 0: a fiftieth of end_time
   double max_displacement = 0.2; ///< largest nodal displacement per increment / local element size
   double min_step_fraction =
       0.1;          ///< contact events shorten Δt down to this fraction of the nominal one, and not by less

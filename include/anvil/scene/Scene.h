@@ -70,8 +70,11 @@ struct Scene {
   /// Every body elastic: an increment's loads hold at its end (σ_{n+1} =
   /// σ_n + Δt C:ε̇), not on the geometry it starts from as a flow's do.
   bool all_elastic = false;
-  bool compensate_volume = false;  ///< the volume_compensation effect
-  bool thermal = false;            ///< the heat effect: some body is solved for heat
+  bool compensate_volume = false; ///< the volume_compensation effect
+  bool thermal = false;           ///< the heat effect: some body is solved for heat
+  /// Nothing moves (no moving die, no prescribed velocity) in a thermal
+  /// scene: the time loop solves heat alone (cooling, dwell, transfer).
+  bool heat_only = false;
   double body_size = 0.0;          ///< mm, diagonal of the initial bounding box
   double reference_length = 0.0;   ///< mm, mean boundary edge of the initial mesh
   double reference_velocity = 0.0; ///< mm/s, fastest die or imposed velocity at t = 0
