@@ -25,7 +25,7 @@ std::int64_t cell_key(const mesh::Point& x, double cell) {
 } // namespace
 
 void add_wear(std::span<const mesh::Point> vertices, std::span<const WearPoint> points, double dt,
-              std::vector<double>& wear) {
+              std::vector<double>& wear, std::span<const double> scale) {
   if (points.empty()) return;
   double cell = 0.0;
   for (const WearPoint& p : points)
@@ -50,7 +50,7 @@ void add_wear(std::span<const mesh::Point> vertices, std::span<const WearPoint> 
             if (distance <= points[i].reach && distance < best) best = distance, nearest = i;
           }
         }
-    if (nearest >= 0) wear[v] += dt * points[nearest].rate;
+    if (nearest >= 0) wear[v] += dt * points[nearest].rate * (scale.empty() ? 1.0 : scale[v]);
   }
 }
 

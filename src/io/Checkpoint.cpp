@@ -17,8 +17,9 @@
 // damage), /blows (r×12: die, blow, first and last increment, start and end
 // time, energy, work, stroke, peak load, last load, over; absent before energy
 // presses), /wear (the die wear of every worn die's vertices, one after the
-// other) with /wear_sizes (one count per die, 0 without wear; both absent
-// before die wear), scalar attributes on the root group.
+// other) with /wear_sizes (one count per die, 0 without wear) and /body_wear
+// with /body_wear_sizes (per body; all absent before die wear), scalar
+// attributes on the root group.
 #include "anvil/io/Checkpoint.h"
 
 #include "anvil/core/error.h"
@@ -117,6 +118,39 @@ void read_finite_array(hid_t file, const std::string& path, const char* name, st
     if (!std::isfinite(out[i]))
       throw InputError(path + ": checkpoint dataset '" + name + "', value " + std::to_string(i + 1) +
                        ": not a finite number (damaged file)");
+}
+
+/// Vectors of different lengths (one per die or body, empty where none):
+/// `name` holds them one after the other, `name`_sizes their lengths.
+void write_ragged(hid_t file, const std::string& name, const std::vector<std::vector<double>>& vectors) {
+  std::vector<double> values, sizes;
+  for (const std::vector<double>& v : vectors) {
+    values.insert(values.end(), v.begin(), v.end());
+    sizes.push_back(static_cast<double>(v.size()));
+  }
+  write_array(file, name.c_str(), H5T_NATIVE_DOUBLE, values.data(), values.size(), 0);
+  write_array(file, (name + "_sizes").c_str(), H5T_NATIVE_DOUBLE, sizes.data(), sizes.size(), 0);
+}
+
+/// What write_ragged wrote; empty when the file has no `name` (an older checkpoint).
+std::vector<std::vector<double>> read_ragged(hid_t file, const std::string& path, const std::string& name) {
+  std::vector<std::vector<double>> vectors;
+  const std::string sizes_name = name + "_sizes";
+  if (H5Lexists(file, sizes_name.c_str(), H5P_DEFAULT) <= 0) return vectors;
+  std::vector<double> values, sizes;
+  read_finite_array(file, path, name.c_str(), values, 1);
+  read_finite_array(file, path, sizes_name.c_str(), sizes, 1);
+  std::size_t first = 0;
+  for (double n : sizes) {
+    if (!(n >= 0.0 && n <= static_cast<double>(values.size() - first) && n == std::floor(n)))
+      throw InputError(path + ": checkpoint dataset '" + sizes_name + "' does not match '" + name + "' (damaged file)");
+    const auto count = static_cast<std::size_t>(n);
+    vectors.emplace_back(values.begin() + long(first), values.begin() + long(first + count));
+    first += count;
+  }
+  if (first != values.size())
+    throw InputError(path + ": checkpoint dataset '" + sizes_name + "' does not match '" + name + "' (damaged file)");
+  return vectors;
 }
 
 void write_attribute(hid_t file, const char* name, hid_t type, const void* value) {
@@ -259,13 +293,8 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
                    {double(b.die), double(b.blow), double(b.first_increment), double(b.last_increment), b.start_time,
                     b.end_time, b.energy, b.work, b.stroke, b.peak_load, b.load, double(b.over)});
     write_array(file, "blows", H5T_NATIVE_DOUBLE, blows.data(), s.blows.size(), 12);
-    std::vector<double> wear, wear_sizes;
-    for (const std::vector<double>& w : s.wear) {
-      wear.insert(wear.end(), w.begin(), w.end());
-      wear_sizes.push_back(static_cast<double>(w.size()));
-    }
-    write_array(file, "wear", H5T_NATIVE_DOUBLE, wear.data(), wear.size(), 0);
-    write_array(file, "wear_sizes", H5T_NATIVE_DOUBLE, wear_sizes.data(), wear_sizes.size(), 0);
+    write_ragged(file, "wear", s.wear);
+    write_ragged(file, "body_wear", s.body_wear);
     std::vector<double> damage;
     for (const std::vector<double>& d : s.damage)
       damage.insert(damage.end(), d.begin(), d.end());
@@ -481,21 +510,8 @@ RunState read_state(hid_t file, const std::string& path) {
                          .over = b[11] == 1.0});
     }
   }
-  if (H5Lexists(file, "wear_sizes", H5P_DEFAULT) > 0) { // absent before die wear
-    std::vector<double> wear, sizes;
-    read_finite_array(file, path, "wear", wear, 1);
-    read_finite_array(file, path, "wear_sizes", sizes, 1);
-    std::size_t first = 0;
-    for (double n : sizes) {
-      if (!(n >= 0.0 && n <= static_cast<double>(wear.size() - first) && n == std::floor(n)))
-        throw InputError(path + ": checkpoint dataset 'wear_sizes' does not match 'wear' (damaged file)");
-      const auto count = static_cast<std::size_t>(n);
-      s.wear.emplace_back(wear.begin() + long(first), wear.begin() + long(first + count));
-      first += count;
-    }
-    if (first != wear.size())
-      throw InputError(path + ": checkpoint dataset 'wear_sizes' does not match 'wear' (damaged file)");
-  }
+  s.wear = read_ragged(file, path, "wear"); // absent before die wear: empty
+  s.body_wear = read_ragged(file, path, "body_wear");
   if (H5Lexists(file, "damage", H5P_DEFAULT) > 0) { // absent before damage
     std::vector<double> damage;
     read_finite_array(file, path, "damage", damage, s.mesh.tets.size());

@@ -158,6 +158,12 @@ void RunWriter::write_vtk(const scene::Scene& scene, const scene::Discretisation
   std::vector<Field> point_fields{velocity, pressure};
   if (scene.has_contact()) point_fields.insert(point_fields.end(), {contact_status, contact_pressure, gap});
   if (!state.temperature.empty()) point_fields.push_back({"temperature", 1, state.temperature});
+  if (std::any_of(state.body_wear.begin(), state.body_wear.end(), [](const auto& w) { return !w.empty(); })) {
+    Field wear{"wear", 1, std::vector<double>(mesh.nodes.size(), 0.0)}; // meshed dies' wear, 0 elsewhere
+    for (std::size_t b = 0; b < state.body_wear.size(); ++b)
+      std::copy(state.body_wear[b].begin(), state.body_wear[b].end(), wear.values.begin() + state.bodies[b].first_node);
+    point_fields.push_back(std::move(wear));
+  }
   // Folds: 1 on the nodes of the faces where a body's surface meets itself.
   if (scene.input.detect_folds && scene.input.time.enabled) {
     Field fold{"fold", 1, std::vector<double>(mesh.nodes.size(), 0.0)};
@@ -386,22 +392,32 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
           .end_object();
     json.end_array();
   }
-  if (std::any_of(scene.dies.begin(), scene.dies.end(), [](const scene::Die& d) { return d.wear.has_value(); })) {
-    // Each worn die's largest wear and the vertex holding it, in the die's
-    // start position (its STL's coordinates plus its offset).
+  if (std::any_of(scene.input.dies.begin(), scene.input.dies.end(), [](const auto& d) { return d.wear.enabled; }) ||
+      std::any_of(scene.input.bodies.begin(), scene.input.bodies.end(), [](const auto& b) { return b.wear.enabled; })) {
+    // Each worn die's largest wear and where it sits: a rigid die's vertex in
+    // its start position (its STL's coordinates plus its offset), a meshed
+    // die's node where it is now.
     json.key("wear").begin_array();
-    for (std::size_t d = 0; d < scene.dies.size(); ++d) {
-      if (!scene.dies[d].wear) continue;
-      const std::vector<double>& w = state.wear[d];
-      const std::size_t at = std::max_element(w.begin(), w.end()) - w.begin();
-      const mesh::Point& x = scene.dies[d].shown().vertices[at];
+    const auto peak = [&](const std::string& die, const std::vector<double>& w, const mesh::Point& at_vertex,
+                          std::size_t at) {
       json.begin_object()
-          .member("die", scene.dies[d].name)
+          .member("die", die)
           .member("max_mm", w[at])
-          .array("at_mm", std::vector<double>{x.x(), x.y(), x.z()})
-          .member("hardness_HRC", scene.dies[d].wear->hardness)
+          .array("at_mm", std::vector<double>{at_vertex.x(), at_vertex.y(), at_vertex.z()})
           .end_object();
-    }
+    };
+    for (std::size_t d = 0; d < scene.dies.size(); ++d)
+      if (scene.dies[d].wear) {
+        const std::vector<double>& w = state.wear[d];
+        const std::size_t at = std::max_element(w.begin(), w.end()) - w.begin();
+        peak(scene.dies[d].name, w, scene.dies[d].shown().vertices[at], at);
+      }
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+      if (scene.bodies[b].wear) {
+        const std::vector<double>& w = state.body_wear[b];
+        const std::size_t at = std::max_element(w.begin(), w.end()) - w.begin();
+        peak(scene.bodies[b].name, w, state.mesh.nodes[state.bodies[b].first_node + at], at);
+      }
     json.end_array();
   }
   if (!state.blows.empty()) {

@@ -271,6 +271,66 @@ void add_die_wear(const Scene& scene, const Discretisation& disc, const Eigen::V
     if (scene.dies[d].wear) contact::add_wear(scene.dies[d].shown().vertices, points[d], dt, state.wear[d]);
 }
 
+/// Wear of the meshed dies over the increment: each worn body's boundary
+/// nodes under a touching projected node of a contact pair it is in (the
+/// node's pressure, its sliding speed relative to the other body, its area
+/// facing it) wear at that node's rate, divided by the die's H^c at the die
+/// node (its card's table at the node's temperature, when read there).
+void add_body_wear(const Scene& scene, const Discretisation& disc, const Eigen::VectorXd& nodal, double dt,
+                   RunState& state) {
+  if (!disc.pair_contact ||
+      std::none_of(scene.bodies.begin(), scene.bodies.end(), [](const Body& b) { return b.wear.has_value(); }))
+    return;
+  const mesh::TetMesh& mesh = state.mesh;
+  const contact::BodyContact& pairs = *disc.pair_contact;
+  std::vector<char> on_boundary(mesh.nodes.size(), 0);
+  for (const mesh::Triangle& f : mesh.boundary_faces)
+    for (int node : f)
+      on_boundary[node] = 1;
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const std::optional<contact::WearLaw>& law = scene.bodies[b].wear;
+    if (!law) continue;
+    const mesh::MeshRange& body = state.bodies[b];
+    std::vector<contact::WearPoint> points;
+    for (std::size_t i = 0; i < pairs.projected_nodes().size(); ++i) {
+      const contact::ContactPoint& p = pairs.projected_nodes()[i];
+      const contact::BodyPair& pair = pairs.pairs()[p.pair];
+      if (pair.master.first_node != body.first_node && pair.slave.first_node != body.first_node) continue;
+      // The other body's nodes sample the contact, as the part's nodes do on
+      // a rigid die (a quasi-symmetric master node's λ̃ swings as the other
+      // mesh slides by); the die's own where only they are projected (the
+      // die the slave of a master/slave pair).
+      const bool own = p.node() >= body.first_node && p.node() < body.first_node + body.node_count;
+      const bool only_own =
+          pair.method.formulation == contact::PairFormulation::master_slave && pair.slave.first_node == body.first_node;
+      if (own != only_own) continue;
+      const double pressure = pairs.node_pressure(static_cast<int>(i), nodal);
+      if (pressure <= 0.0) continue;
+      const Eigen::Vector3d sliding =
+          (Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose()) * contact::relative_velocity(p, nodal);
+      contact::WearLaw unit_hardness = *law;
+      unit_hardness.hardness = 1.0;
+      points.push_back({mesh.nodes[p.node()], unit_hardness.rate(pressure, sliding.norm()), 0.75 * std::sqrt(p.area)});
+    }
+    std::vector<mesh::Point> nodes(mesh.nodes.begin() + body.first_node,
+                                   mesh.nodes.begin() + body.first_node + body.node_count);
+    std::vector<double> scale(nodes.size(), 0.0); // 1/H^c, nil off the boundary
+    for (int i = 0; i < body.node_count; ++i) {
+      if (!on_boundary[body.first_node + i]) continue;
+      const Body& die = scene.bodies[b];
+      double hardness = law->hardness;
+      if (die.hardness) {
+        const double t = !std::isnan(die.wear_temperature) ? die.wear_temperature
+                         : !state.temperature.empty()      ? state.temperature[body.first_node + i]
+                                                           : die.state.temperature;
+        hardness = die.hardness->at(t);
+      }
+      scale[i] = std::pow(hardness, -law->hardness_exponent);
+    }
+    contact::add_wear(nodes, points, dt, state.body_wear[b], scale);
+  }
+}
+
 } // namespace
 
 bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome& inc, RunState& state,
@@ -317,6 +377,7 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
   if (!scene.all_elastic)
     append_loads(scene, state.mesh, state.dies, state.increment, state.time, inc.forces, state.loads, timers);
   add_die_wear(scene, disc, inc.unknowns.nodal, dt, state);
+  add_body_wear(scene, disc, inc.unknowns.nodal, dt, state);
   state.mesh.nodes = std::move(moved.nodes); // the elements stay: the discretisation holds on to them
   state.dies = std::move(dies);
   state.unknowns = std::move(inc.unknowns);

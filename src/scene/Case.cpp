@@ -126,6 +126,32 @@ void read_contact_pairs(const CheckedYaml& doc, Case& c) {
   });
 }
 
+/// A `wear` section of a die ("dies[]") or a meshed die ("bodies[]"). A
+/// rigid die needs its hardness or a card; a meshed die may read its own card.
+WearSpec read_wear(const CheckedYaml& doc, const YAML::Node& wear, const std::string& at, const std::string& owner,
+                   bool rigid) {
+  WearSpec w;
+  w.enabled = true;
+  doc.require(wear, "coefficient", at, "the Archard coefficient K of w = ∫ K p^a v^b / H^c dt");
+  w.law.coefficient = doc.number(wear, "coefficient", owner + ".wear.coefficient");
+  w.law.pressure_exponent = doc.number(wear, "pressure_exponent", owner + ".wear.pressure_exponent");
+  w.law.velocity_exponent = doc.number(wear, "velocity_exponent", owner + ".wear.velocity_exponent");
+  w.law.hardness_exponent = doc.number(wear, "hardness_exponent", owner + ".wear.hardness_exponent");
+  if (wear["hardness"] && wear["material"])
+    doc.fail(wear, at, "give the die's hardness: 'hardness' (HRC) or 'material' (a card with a hardness table)");
+  if (rigid && !wear["hardness"] && !wear["material"])
+    doc.fail(wear, at, "give the die's hardness: 'hardness' (HRC) or 'material' (a card with a hardness table)");
+  if (!rigid) doc.forbid(wear, "material", at, "a meshed die (its own material card gives the hardness table)");
+  if (wear["hardness"]) {
+    w.law.hardness = doc.number(wear, "hardness", owner + ".wear.hardness");
+    doc.forbid(wear, "temperature", at, "a die given its 'hardness' (the temperature reads a card's table)");
+  } else {
+    if (rigid) w.card = doc.input_file(wear, "material", at, kMaxYamlBytes);
+    if (wear["temperature"]) w.temperature = doc.number(wear, "temperature", owner + ".wear.temperature");
+  }
+  return w;
+}
+
 void read_dies(const CheckedYaml& doc, Case& c) {
   for_each_entry(doc.root()["dies"], "dies", [&](const YAML::Node& n, const std::string& shown) {
     DieSpec d;
@@ -218,25 +244,7 @@ void read_dies(const CheckedYaml& doc, Case& c) {
     }
     if (d.direction.norm() == 0.0) doc.fail(n["direction"], shown + ".direction", "the direction must not be zero");
     d.friction = read_friction(doc, n, "dies", shown);
-    if (const YAML::Node wear = n["wear"]) {
-      d.wear = true;
-      const std::string at = shown + ".wear";
-      contact::WearLaw& law = d.wear_law;
-      doc.require(wear, "coefficient", at, "the Archard coefficient K of w = ∫ K p^a v^b / H^c dt");
-      law.coefficient = doc.number(wear, "coefficient", "dies[].wear.coefficient");
-      law.pressure_exponent = doc.number(wear, "pressure_exponent", "dies[].wear.pressure_exponent");
-      law.velocity_exponent = doc.number(wear, "velocity_exponent", "dies[].wear.velocity_exponent");
-      law.hardness_exponent = doc.number(wear, "hardness_exponent", "dies[].wear.hardness_exponent");
-      if (static_cast<bool>(wear["hardness"]) == static_cast<bool>(wear["material"]))
-        doc.fail(wear, at, "give the die's hardness: 'hardness' (HRC) or 'material' (a card with a hardness table)");
-      if (wear["hardness"]) {
-        law.hardness = doc.number(wear, "hardness", "dies[].wear.hardness");
-        doc.forbid(wear, "temperature", at, "a die given its 'hardness' (the temperature reads a card's table)");
-      } else {
-        d.wear_card = doc.input_file(wear, "material", at, kMaxYamlBytes);
-        if (wear["temperature"]) d.wear_temperature = doc.number(wear, "temperature", "dies[].wear.temperature");
-      }
-    }
+    if (const YAML::Node wear = n["wear"]) d.wear = read_wear(doc, wear, shown + ".wear", "dies[]", true);
     if (const YAML::Node fill = n["fill"]) {
       d.fill = true;
       if (const YAML::Node region = fill["region"]) {
@@ -443,6 +451,8 @@ Case read_case(const std::string& path, const std::vector<std::string>& override
     body.name = doc.text(b, "name", "bodies[].name");
     body.material_file = doc.input_file(b, "material", shown, kMaxYamlBytes);
     if (b["temperature"]) body.temperature = doc.number(b, "temperature", "bodies[].temperature");
+    body.source = doc.at(b);
+    if (const YAML::Node wear = b["wear"]) body.wear = read_wear(doc, wear, shown + ".wear", "bodies[]", false);
     const YAML::Node m = b["mesh"];
     MeshSpec& mesh = body.mesh;
     mesh.source = doc.at(m);

@@ -58,16 +58,16 @@ Die build_die(const DieSpec& spec, double body_size, double sampling) {
     d.kinematics = std::make_unique<die::ConstantVelocity>(d.energy->impact_speed() * spec.direction.normalized());
   }
   d.load_limit = spec.load_limit;
-  if (spec.wear) {
+  if (spec.wear.enabled) {
     d.refined = die::refine(d.surface->triangles(), sampling);
-    d.wear = spec.wear_law;
-    if (!spec.wear_card.empty()) {
-      const MaterialCard card = read_material(spec.wear_card);
+    d.wear = spec.wear.law;
+    if (!spec.wear.card.empty()) {
+      const MaterialCard card = read_material(spec.wear.card);
       if (!card.hardness)
-        throw InputError(spec.source + ": key 'dies[].wear.material': '" + spec.wear_card +
+        throw InputError(spec.source + ": key 'dies[].wear.material': '" + spec.wear.card +
                          "' has no hardness table ('hardness', HRC)");
       d.wear->hardness =
-          card.hardness->at(std::isnan(spec.wear_temperature) ? spec.temperature : spec.wear_temperature);
+          card.hardness->at(std::isnan(spec.wear.temperature) ? spec.temperature : spec.wear.temperature);
     }
   }
   return d;

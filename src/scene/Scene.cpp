@@ -189,6 +189,19 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     body.material_file = spec.material_file;
     body.law = std::move(card.law);
     body.state.temperature = spec.temperature.value_or(card.temperature.value_or(20.0));
+    if (spec.wear.enabled) {
+      if (!body.law->is_elastic())
+        throw InputError(spec.source + ": key 'bodies[" + std::to_string(b) +
+                         "].wear': only a meshed (elastic) die wears; a flowing body is the part");
+      body.wear = spec.wear.law;
+      if (!(spec.wear.law.hardness > 0.0)) {
+        if (!card.hardness)
+          throw InputError(spec.source + ": key 'bodies[" + std::to_string(b) + "].wear': '" + spec.material_file +
+                           "' has no hardness table ('hardness', HRC): give 'wear.hardness'");
+        body.hardness = card.hardness;
+        body.wear_temperature = spec.wear.temperature;
+      }
+    }
     if (c.thermal.enabled)
       body.thermal = card.thermal;
     else if (const auto* law = dynamic_cast<const material::NortonHoff*>(body.law.get());
@@ -332,6 +345,9 @@ RunState initial_state(const Scene& scene) {
   state.damage.assign(scene.input.damage.size(), std::vector<double>(state.mesh.tets.size(), 0.0));
   if (scene.carries_stress) state.elastic_stress.assign(6 * state.mesh.tets.size(), 0.0);
   state.dies.assign(scene.dies.size(), DieState{});
+  state.body_wear.resize(scene.bodies.size());
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    if (scene.bodies[b].wear) state.body_wear[b].assign(state.bodies[b].node_count, 0.0);
   state.wear.resize(scene.dies.size());
   for (std::size_t d = 0; d < scene.dies.size(); ++d)
     if (scene.dies[d].wear) state.wear[d].assign(scene.dies[d].shown().vertices.size(), 0.0);
@@ -387,6 +403,13 @@ void check_resumable(const Scene& scene, const RunState& state, const std::strin
     if ((d < state.wear.size() ? state.wear[d].size() : 0) != vertices)
       throw InputError(path + ": the checkpoint's die wear of die '" + scene.dies[d].name +
                        "' does not match the case (was its 'wear' or its surface changed?)");
+  }
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+    const std::size_t nodes =
+        scene.bodies[b].wear && b < state.bodies.size() ? static_cast<std::size_t>(state.bodies[b].node_count) : 0;
+    if ((b < state.body_wear.size() ? state.body_wear[b].size() : 0) != nodes)
+      throw InputError(path + ": the checkpoint's wear of body '" + scene.bodies[b].name +
+                       "' does not match the case (was its 'wear' changed?)");
   }
   for (std::size_t i = 0; i < state.blows.size(); ++i)
     if (state.blows[i].die >= static_cast<int>(scene.dies.size()) || !scene.dies[state.blows[i].die].energy)

@@ -97,7 +97,9 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
   for (const DieSpec& d : c.dies)
     if (d.fill) add("die_fill");
   for (const DieSpec& d : c.dies)
-    if (d.wear) add("die_wear");
+    if (d.wear.enabled) add("die_wear");
+  for (const BodySpec& b : c.bodies)
+    if (b.wear.enabled) add("die_wear");
   if (c.flow_line_axis >= 0) add("flow_lines");
   if (c.detect_folds && c.time.enabled) add("folds");
   if (!c.damage.empty()) add("damage");

@@ -198,6 +198,18 @@ const std::vector<KeySpec>& case_schema() {
               -kFastest, kFastest),
         key("boundary[].traction", T::vector3, "traction: surface force density", "MPa"),
         key("boundary[].pressure", T::number, "pressure: positive pushes into the body", "MPa"),
+        key("bodies[].wear", T::map,
+            "meshed (elastic) dies: wear (effect die_wear) w = ∫ K p^a v^b / H^c dt at each boundary node (mm), "
+            "H from 'hardness' or the body's own card's hardness table at the node's temperature"),
+        required(range(key("bodies[].wear.coefficient", T::number, "K"), 0, kInf, true)),
+        with_default(range(key("bodies[].wear.pressure_exponent", T::number, "a"), 0, 10), "1"),
+        with_default(range(key("bodies[].wear.velocity_exponent", T::number, "b"), 0, 10), "1"),
+        with_default(range(key("bodies[].wear.hardness_exponent", T::number, "c"), 0, 10), "2"),
+        range(key("bodies[].wear.hardness", T::number, "the die's hardness; default its card's table", "HRC"), 1, 80),
+        range(key("bodies[].wear.temperature", T::number,
+                  "the temperature the card's hardness is read at; default the node's (thermal scenes) or the body's",
+                  "°C"),
+              kAbsoluteZero, kHottest, true),
         range(key("bodies[].temperature", T::number,
                   "temperature of the body: held in an isothermal scene, initial in a thermal one; default the "
                   "material card's",

@@ -300,6 +300,9 @@ case_error("nothing-moves-isothermal",
            swap("motion: constant\n    velocity: [0, 0, -10]", "motion: fixed",
                 swap("  stop: {stroke: 1}", "  stop: {time: 1}")),
            ["case.yaml", "nothing moves", "needs a motion, or a 'thermal' section"])
+case_error("wear-on-a-flowing-body",
+           swap("    mesh: {generate", "    wear: {coefficient: 1.0e-3, hardness: 50}\n    mesh: {generate"),
+           ["case.yaml:", "bodies[0].wear", "only a meshed (elastic) die wears"])
 case_error("quadrature-degree-out-of-range", base() + "solver: {quadrature_degree: 7}\n",
            ["case.yaml:", "solver.quadrature_degree", "7"])
 case_error("fill-region-without-max",

@@ -32,10 +32,10 @@ struct WearPoint {
   double reach;   ///< mm: the die vertices within it are under this node's contact patch
 };
 
-/// Adds Δt × rate to the wear of each die vertex lying under a contact
-/// node's patch: the nearest point of `points` within its reach (none: no
-/// wear). `wear` holds one value per vertex.
+/// Adds Δt × rate (× `scale` of the vertex, when given) to the wear of
+/// each die vertex lying under a contact node's patch: the nearest point of
+/// `points` within its reach (none: no wear). `wear` holds one value per vertex.
 void add_wear(std::span<const mesh::Point> vertices, std::span<const WearPoint> points, double dt,
-              std::vector<double>& wear);
+              std::vector<double>& wear, std::span<const double> scale = {});
 
 } // namespace anvil::contact

@@ -27,11 +27,24 @@ struct MeshSpec {
   std::string source;                                                        ///< "file:line" of the mesh key
 };
 
+/// Wear (effects die_wear) of a rigid die or a meshed (elastic) die: the
+/// Archard law and where its hardness comes from.
+struct WearSpec {
+  bool enabled = false;
+  contact::WearLaw law; ///< its hardness when given (`card` empty)
+  /// Material card whose hardness table gives H; empty: law.hardness given.
+  /// A meshed die reads its own card's table unless given a hardness.
+  std::string card;
+  double temperature = std::numeric_limits<double>::quiet_NaN(); ///< °C the card is read at; NaN: the die's
+};
+
 struct BodySpec {
   std::string name;
   std::string material_file;
   MeshSpec mesh;
   std::optional<double> temperature; ///< °C, isothermal or initial; default: the material card's
+  WearSpec wear;                     ///< elastic bodies (meshed dies)
+  std::string source;
 };
 
 /// Heat exchange through a contact (die-billet, body-body): the heat transfer
@@ -70,12 +83,7 @@ struct DieSpec {
   double temperature = 20.0;          ///< °C, held (a die is a heat sink)
   ContactHeatSpec heat;               ///< to the bodies it touches
   double friction_heat_to_body = 0.5; ///< share of the friction heat into the body
-  // Die wear (effect die_wear), when `wear`: contact/die_wear.h.
-  bool wear = false;
-  contact::WearLaw wear_law; ///< hardness resolved when the scene is built (`wear_card`, `wear_temperature`)
-  std::string wear_card;     ///< material card whose hardness table gives H; empty: wear_law.hardness given
-  double wear_temperature =
-      std::numeric_limits<double>::quiet_NaN(); ///< °C the card's hardness is read at; NaN: the die's temperature
+  WearSpec wear;                      ///< die wear (effect die_wear): contact/die_wear.h
   // Die fill (effect die_fill), when `fill`.
   bool fill = false;
   contact::FillRegion fill_region; ///< die at its start position; unbounded: the whole die

@@ -164,6 +164,9 @@ struct RunState {
   /// Die wear (mm) at each vertex of each die's surface (effect die_wear);
   /// empty for a die without wear.
   std::vector<std::vector<double>> wear;
+  /// Wear (mm) at each node of each meshed die (a body with wear), by its
+  /// node in the body (elastic bodies keep their mesh); empty for the others.
+  std::vector<std::vector<double>> body_wear;
   std::vector<OutputFrame> outputs; ///< the VTK series written so far (io::VtkSeries)
   /// mm³ per body of its mesh inside the dies (die::overlap_volume), measured
   /// whenever the mesh or the dies move; not stored: measured again on resume.

@@ -40,6 +40,12 @@ struct Body {
   ImposedConditions initial_imposed;
   double initial_volume = 0.0; ///< mm³, of the mesh as built
   double remesh_size = 0.0;    ///< mm, target edge of a remesh: the case's, else the mean boundary edge as built
+  /// A meshed die's wear (effect die_wear); its hardness the law's, else
+  /// `hardness` (its card's table) at `wear_temperature`, or NaN: at each
+  /// node's temperature (thermal scenes) or the body's.
+  std::optional<contact::WearLaw> wear;
+  std::optional<thermal::PropertyTable> hardness;
+  double wear_temperature = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A load surface of loads.csv: a die, or a velocity condition (a plate).
