@@ -10,6 +10,23 @@ using namespace anvil;
 
 namespace {
 
+/// A Newtonian fluid (η = 50 MPa.s) with steel-like thermal properties (k 30
+/// W/(m.K), c 600 J/(kg.K), ρ 7800 kg/m3) and no radiation, for runs whose
+/// heat has an exact answer.
+const char* const kSteelLikeFluid = R"(format: 1
+name: Newtonian fluid with steel-like thermal properties (test)
+law: newtonian
+viscosity: 50
+conductivity: 30
+specific_heat: 600
+density: 7800
+sources:
+  viscosity: "test value"
+  conductivity: "test value"
+  specific_heat: "test value"
+  density: "test value"
+)";
+
 /// Writes `text` to `path` (a test's own input files).
 void write_text(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
@@ -36,19 +53,7 @@ TEST_CASE("adiabatic homogeneous compression heats the body by beta times the pl
   log::set_quiet(true);
   const auto folder = std::filesystem::temp_directory_path() / "anvil_adiabatic_input";
   std::filesystem::create_directories(folder);
-  write_text(folder / "fluid.yaml", R"(format: 1
-name: Newtonian fluid with steel-like thermal properties (test)
-law: newtonian
-viscosity: 50
-conductivity: 30
-specific_heat: 600
-density: 7800
-sources:
-  viscosity: "test value"
-  conductivity: "test value"
-  specific_heat: "test value"
-  density: "test value"
-)");
+  write_text(folder / "fluid.yaml", kSteelLikeFluid);
   write_text(folder / "case.yaml", R"(anvil: 1
 bodies:
   - name: cube
@@ -170,23 +175,11 @@ TEST_CASE("a small part cooling in air follows the lumped exact curve (heat alon
   log::set_quiet(true);
   const auto folder = std::filesystem::temp_directory_path() / "anvil_lumped_input";
   std::filesystem::create_directories(folder);
-  write_text(folder / "steel.yaml", R"(format: 1
-name: steel-like thermal properties, no radiation (test)
-law: newtonian
-viscosity: 50
-conductivity: 30
-specific_heat: 600
-density: 7800
-sources:
-  viscosity: "test value, nothing flows"
-  conductivity: "test value"
-  specific_heat: "test value"
-  density: "test value"
-)");
+  write_text(folder / "fluid.yaml", kSteelLikeFluid);
   write_text(folder / "case.yaml", R"(anvil: 1
 bodies:
   - name: cube
-    material: steel.yaml
+    material: fluid.yaml
     temperature: 1000
     mesh: {generate: box, size: [10, 10, 10], element_size: 2.5}
 thermal:
