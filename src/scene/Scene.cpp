@@ -411,6 +411,11 @@ void check_resumable(const Scene& scene, const RunState& state, const std::strin
       throw InputError(path + ": the checkpoint's wear of body '" + scene.bodies[b].name +
                        "' does not match the case (was its 'wear' changed?)");
   }
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    if (scene.dies[d].energy && std::none_of(state.blows.begin(), state.blows.end(),
+                                             [&](const BlowRecord& b) { return b.die == static_cast<int>(d); }))
+      throw InputError(path + ": the checkpoint has no blow of die '" + scene.dies[d].name +
+                       "' (was its motion changed to a hammer or screw press?)");
   for (std::size_t i = 0; i < state.blows.size(); ++i)
     if (state.blows[i].die >= static_cast<int>(scene.dies.size()) || !scene.dies[state.blows[i].die].energy)
       throw InputError(path + ": checkpoint dataset 'blows', record " + std::to_string(i + 1) + ": die " +
