@@ -201,7 +201,7 @@ const std::vector<KeySpec>& case_schema() {
         key("bodies[].wear", T::map,
             "meshed (elastic) dies: wear (effect die_wear) w = ∫ K p^a v^b / H^c dt at each boundary node (mm), "
             "H from 'hardness' or the body's own card's hardness table at the node's temperature"),
-        required(range(key("bodies[].wear.coefficient", T::number, "K"), 0, kInf, true)),
+        required(range(key("bodies[].wear.coefficient", T::number, "K, as dies[].wear.coefficient"), 0, kInf, true)),
         with_default(range(key("bodies[].wear.pressure_exponent", T::number, "a"), 0, 10), "1"),
         with_default(range(key("bodies[].wear.velocity_exponent", T::number, "b"), 0, 10), "1"),
         with_default(range(key("bodies[].wear.hardness_exponent", T::number, "c"), 0, 10), "2"),
