@@ -291,6 +291,8 @@ void add_body_wear(const Scene& scene, const Discretisation& disc, const Eigen::
     const std::optional<contact::WearLaw>& law = scene.bodies[b].wear;
     if (!law) continue;
     const mesh::MeshRange& body = state.bodies[b];
+    contact::WearLaw unit_hardness = *law; // H^c is the die node's: applied where the wear lands
+    unit_hardness.hardness = 1.0;
     std::vector<contact::WearPoint> points;
     for (std::size_t i = 0; i < pairs.projected_nodes().size(); ++i) {
       const contact::ContactPoint& p = pairs.projected_nodes()[i];
@@ -308,8 +310,6 @@ void add_body_wear(const Scene& scene, const Discretisation& disc, const Eigen::
       if (pressure <= 0.0) continue;
       const Eigen::Vector3d sliding =
           (Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose()) * contact::relative_velocity(p, nodal);
-      contact::WearLaw unit_hardness = *law;
-      unit_hardness.hardness = 1.0;
       points.push_back({mesh.nodes[p.node()], unit_hardness.rate(pressure, sliding.norm()), 0.75 * std::sqrt(p.area)});
     }
     std::vector<mesh::Point> nodes(mesh.nodes.begin() + body.first_node,

@@ -2,6 +2,7 @@
 
 #include "anvil/core/error.h"
 #include "anvil/die/StlSurface.h"
+#include "anvil/scene/MaterialCard.h"
 
 #include <algorithm>
 #include <cmath>

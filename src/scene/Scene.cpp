@@ -5,6 +5,7 @@
 #include "anvil/mesh/generators.h"
 #include "anvil/mesh/mesh_io.h"
 #include "anvil/mesh/node_budget.h"
+#include "anvil/scene/MaterialCard.h"
 #include "anvil/scene/effects.h"
 #include "anvil/scene/fingerprint.h"
 

@@ -361,4 +361,18 @@ mesh::Point CheckedYaml::vector(const YAML::Node& map, const std::string& key, c
   return {*parse_number(v[0]), *parse_number(v[1]), *parse_number(v[2])};
 }
 
+thermal::PropertyTable read_table(const CheckedYaml& doc, const YAML::Node& item, const std::string& values_key,
+                                  const std::string& at_key, const std::string& shown) {
+  const std::vector<double> values = doc.numbers(item, values_key);
+  const std::vector<double> at = doc.numbers(item, at_key);
+  if (values.size() == 1) return thermal::PropertyTable(values.front());
+  if (at.size() != values.size())
+    doc.fail(item[values_key], (shown.empty() ? "" : shown + ".") + values_key,
+             std::to_string(values.size()) + " values need as many entries in '" + at_key + "' (" +
+                 std::to_string(at.size()) + " given)");
+  for (std::size_t i = 1; i < at.size(); ++i)
+    if (!(at[i] > at[i - 1])) doc.fail(item[at_key], (shown.empty() ? "" : shown + ".") + at_key, "must increase");
+  return thermal::PropertyTable(at, values);
+}
+
 } // namespace anvil::scene

@@ -4,6 +4,7 @@
 #include "anvil/core/error.h"
 #include "anvil/mesh/TetMesh.h"
 #include "anvil/scene/schema.h"
+#include "anvil/thermal/ThermalMaterial.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -72,5 +73,10 @@ private:
   /// Nodes set from the command line, and the text that set them (for at()).
   std::vector<std::pair<YAML::Node, std::string>> overridden_;
 };
+
+/// A table `values_key` against `at_key` of `item` (both lists of numbers,
+/// `at_key` increasing, one value for each), or one value (a constant).
+thermal::PropertyTable read_table(const CheckedYaml& doc, const YAML::Node& item, const std::string& values_key,
+                                  const std::string& at_key, const std::string& shown);
 
 } // namespace anvil::scene

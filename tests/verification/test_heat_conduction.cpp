@@ -11,6 +11,7 @@
 #include "anvil/contact/RigidContact.h"
 #include "anvil/mesh/generators.h"
 #include "anvil/scene/Case.h"
+#include "anvil/scene/MaterialCard.h"
 #include "anvil/thermal/HeatStep.h"
 
 #include <cmath>

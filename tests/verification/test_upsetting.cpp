@@ -7,6 +7,7 @@
 #include "anvil/material/homogeneous_compression.h"
 #include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
+#include "anvil/scene/MaterialCard.h"
 #include "anvil/scene/RunState.h"
 #include "run_outputs.h"
 

@@ -36,6 +36,7 @@
 #include "anvil/material/homogeneous_compression.h"
 #include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
+#include "anvil/scene/MaterialCard.h"
 #include "anvil/solver/PetscSession.h"
 
 #include <algorithm>

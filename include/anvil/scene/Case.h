@@ -196,15 +196,4 @@ struct Case {
 /// Throws InputError naming file, line and key (or the override).
 Case read_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
-/// A material card as read.
-struct MaterialCard {
-  std::unique_ptr<material::Material> law;
-  std::optional<double> temperature;               ///< °C, the temperature the numbers hold at
-  std::optional<thermal::ThermalMaterial> thermal; ///< when the card gives thermal properties
-  std::optional<thermal::PropertyTable> hardness;  ///< HRC against °C, die steels (die wear)
-};
-
-/// Reads a material card, requiring a source for every number.
-MaterialCard read_material(const std::string& path);
-
 } // namespace anvil::scene

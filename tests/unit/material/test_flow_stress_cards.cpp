@@ -3,6 +3,7 @@
 #include "test_common.h"
 
 #include "anvil/scene/Case.h"
+#include "anvil/scene/MaterialCard.h"
 
 #include <cmath>
 

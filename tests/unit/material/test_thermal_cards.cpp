@@ -4,6 +4,7 @@
 
 #include "anvil/core/error.h"
 #include "anvil/scene/Case.h"
+#include "anvil/scene/MaterialCard.h"
 
 #include <filesystem>
 #include <fstream>

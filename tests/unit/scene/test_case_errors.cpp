@@ -5,6 +5,7 @@
 #include "anvil/core/error.h"
 #include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
+#include "anvil/scene/MaterialCard.h"
 
 #include <filesystem>
 #include <fstream>
