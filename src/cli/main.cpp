@@ -6,6 +6,7 @@
 #include "anvil/core/processes.h"
 #include "anvil/core/subprocess.h"
 #include "anvil/run/Simulation.h"
+#include "anvil/run/chain.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/effects.h"
 #include "anvil/scene/schema.h"
@@ -272,8 +273,8 @@ int main(int argc, char** argv) {
   if (case_file.empty()) return usage_error("'" + command + "' needs a case file");
   if (command == "output-dir") {
     try {
-      const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
-      std::puts(anvil::run::output_directory(c, options).c_str());
+      const anvil::scene::Chain chain = anvil::scene::read_chain(case_file, overrides);
+      std::puts(anvil::run::output_directory(chain.operations.front().input, options).c_str());
       return 0;
     } catch (const std::exception& e) {
       return report(e, true);
@@ -306,8 +307,10 @@ int main(int argc, char** argv) {
   bool picture_mirror = false;
   try {
     // Every process reads the case and runs the same time loop (docs/design.md §2).
-    const anvil::scene::Case c = anvil::scene::read_case(case_file, overrides);
-    const anvil::run::RunEnd end = anvil::run::run(c, options);
+    const anvil::scene::Chain chain = anvil::scene::read_chain(case_file, overrides);
+    const anvil::scene::Case& c = chain.operations.front().input;
+    const anvil::run::RunEnd end =
+        chain.is_chain() ? anvil::run::run_chain(chain, options) : anvil::run::run(c, options);
     // An interrupted run ends as soon as it can: no picture.
     if (c.write_picture && c.write_vtk && !end.signal) picture_directory = anvil::run::output_directory(c, options);
     picture_mirror = c.picture_mirror;

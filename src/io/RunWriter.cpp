@@ -457,12 +457,17 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
   json.key("press_loads_N").begin_array();
   for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
     double peak = 0.0, last_load = 0.0;
+    double work = 0.0, stroke = 0.0; // N mm: trapezoids of the load-stroke curve from rest
     for (const scene::LoadRecord& r : state.loads)
-      if (r.surface == static_cast<int>(s)) peak = std::max(peak, r.press_load()), last_load = r.press_load();
+      if (r.surface == static_cast<int>(s)) {
+        work += 0.5 * (r.press_load() + last_load) * (r.stroke - stroke);
+        peak = std::max(peak, r.press_load()), last_load = r.press_load(), stroke = r.stroke;
+      }
     json.begin_object()
         .member("surface", scene.surfaces[s].name)
         .member("peak_whole_part", scene.symmetry_copies * peak)
         .member("last_whole_part", scene.symmetry_copies * last_load)
+        .member("work_whole_part_J", 1e-3 * scene.symmetry_copies * work)
         .member("peak_model", peak)
         .member("last_model", last_load)
         .end_object();

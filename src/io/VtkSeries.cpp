@@ -125,15 +125,19 @@ void VtkSeries::resume(std::vector<Entry> entries, double time) {
 }
 
 void VtkSeries::write_collection() const {
+  io::write_collection(directory_ + "/" + name_ + ".pvd", entries_);
+}
+
+void write_collection(const std::string& path, const std::vector<scene::OutputFrame>& entries) {
   std::ostringstream pvd;
   pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
          "  <Collection>\n";
   pvd.precision(17);
-  for (const Entry& e : entries_)
+  for (const scene::OutputFrame& e : entries)
     pvd << "    <DataSet timestep=\"" << e.time << "\" group=\"\" part=\"" << e.part << "\" file=\"" << e.file
         << "\"/>\n";
   pvd << "  </Collection>\n</VTKFile>\n";
-  write_file_atomically(directory_ + "/" + name_ + ".pvd", pvd.str());
+  write_file_atomically(path, pvd.str());
 }
 
 } // namespace anvil::io

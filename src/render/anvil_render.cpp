@@ -368,7 +368,9 @@ vtkSmartPointer<vtkImageData> render(const Options& o, const anvil::io::SeriesEn
   renderer->AddViewProp(bar);
   char caption[256];
   std::snprintf(caption, sizeof caption, "increment %d   t %.4g s", frame.increment, frame.time);
-  std::string text = caption;
+  // A chain's frame names its operation (its folder, docs/chains.md).
+  const std::string operation = std::filesystem::path(frame.parts.front()).parent_path().string();
+  std::string text = (operation.empty() ? "" : operation + "   ") + caption;
   for (const anvil::io::LoadRow& row : loads)
     if (row.increment == frame.increment) {
       std::snprintf(caption, sizeof caption, "   stroke %.4g mm   press load(%s) %.4g kN, whole part", row.stroke,
@@ -508,7 +510,10 @@ int main(int argc, char** argv) {
   }
   try {
     const std::vector<anvil::io::SeriesEntry> frames = anvil::io::read_series(o.directory);
-    const std::vector<std::string> surfaces = anvil::io::read_load_surfaces(o.directory);
+    // A chain's folder has no loads.csv: its operations' folders do.
+    const std::vector<std::string> surfaces = std::filesystem::exists(o.directory + "/loads.csv")
+                                                  ? anvil::io::read_load_surfaces(o.directory)
+                                                  : std::vector<std::string>{};
     const std::string load_surface = surfaces.empty() ? "" : surfaces.front();
     const std::vector<anvil::io::LoadRow> loads =
         surfaces.empty() ? std::vector<anvil::io::LoadRow>{} : anvil::io::read_loads(o.directory, load_surface);
@@ -546,8 +551,10 @@ int main(int argc, char** argv) {
     std::vector<vtkSmartPointer<vtkImageData>> pictures;
     std::vector<std::string> files; // in `folder`
     for (std::size_t k = 0; k < chosen.size(); ++k) {
-      char name[64];
-      std::snprintf(name, sizeof name, "%s_%06d.png", picture_name.c_str(), chosen[k]->increment);
+      char name[160];
+      const std::string operation = std::filesystem::path(chosen[k]->parts.front()).parent_path().string();
+      std::snprintf(name, sizeof name, "%s%s%s_%06d.png", operation.c_str(), operation.empty() ? "" : "_",
+                    picture_name.c_str(), chosen[k]->increment);
       pictures.push_back(render(o, *chosen[k], grids[k], loads, load_surface));
       files.push_back(name);
       write_png(pictures.back(), (folder / name).string());

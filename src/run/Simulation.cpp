@@ -111,11 +111,12 @@ std::string output_directory(const Case& c, const RunOptions& options) {
   return "out/" + std::filesystem::path(c.path).stem().string();
 }
 
-RunEnd run(const Case& c, const RunOptions& options) {
+RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
   const solver::ScopedPetscOptions petsc_options(c.petsc_options, c.path + ": solver.petsc_options");
   const Clock::time_point start = Clock::now();
   Timers timers;
-  const Scene scene(c, timers);
+  const RunState* carried = part && part->mesh.node_count() > 0 ? part : nullptr;
+  const Scene scene(c, timers, carried);
   const std::string out = output_directory(c, options);
   RunState state;
   std::vector<std::string> changes;
@@ -126,13 +127,16 @@ RunEnd run(const Case& c, const RunOptions& options) {
     check_resumable(scene, state, checkpoint);
     state.inside_dies = inside_dies(scene, state);
   } else {
-    state = initial_state(scene);
+    state = initial_state(scene, carried);
     first_blows(scene, state);
   }
   processes::on_root([&] { prepare_output_folder(out); });
   log::open_file(out + "/anvil.log", options.resume);
   Discretisation disc = discretise(scene, state, timers);
   log_header(scene, disc, state, options);
+  const auto hand_over = [&] {
+    if (part) *part = std::move(state);
+  };
   io::RunWriter writer(out, state, options.resume);
   if (options.resume)
     log::info("resumed from %s/checkpoint.h5 at increment %d, t = %.6g s", out.c_str(), state.increment, state.time);
@@ -150,6 +154,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
       log::info("  load on '%s': Fx %.6g N  Fy %.6g N  Fz %.6g N", scene.surfaces[s].name.c_str(), f.x(), f.y(), f.z());
     }
     finish(scene, disc, state, writer, inc.report, timers, start);
+    hand_over();
     return {"one increment solved", true};
   }
 
@@ -172,16 +177,18 @@ RunEnd run(const Case& c, const RunOptions& options) {
     log::info("interrupted by %s during increment %d: increment %d (t = %.6g s) is the last accepted one",
               interrupt::name(signal), state.increment + 1, state.increment, state.time);
     finish(scene, disc, state, writer, last, timers, start);
+    hand_over();
     return RunEnd{std::string("interrupted by ") + interrupt::name(signal), false, signal, c.checkpoint_every > 0};
   };
   if (scene.heat_only) {
     // Nothing moves (cooling, dwell, transfer): heat alone, in equal steps
-    // of at most time.heat_step to the end time.
+    // of at most time.heat_step to the end time (steps of heat_step when
+    // only a temperature ends it).
     const double step = c.time.heat_step > 0.0 ? c.time.heat_step : c.time.end_time / 50.0;
     while (!(stop = clock.stop(state))) {
       if (const int signal = interrupt::requested()) return interrupted(signal);
       const double left = c.time.end_time - state.time;
-      const double dt = left / std::ceil(left / step - 1e-9);
+      const double dt = std::isfinite(left) ? left / std::ceil(left / step - 1e-9) : step;
       heat_alone(scene, disc, state, dt, 1, timers);
       ++state.increment;
       state.time += dt;
@@ -190,6 +197,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
     }
     log::info("stop: %s at increment %d, t = %.6g s", stop.reason.c_str(), state.increment, state.time);
     finish(scene, disc, state, writer, last, timers, start);
+    hand_over();
     return {stop.reason, true};
   }
   double last_step = clock.next_step(state).length; // s, of the last increment accepted
@@ -230,6 +238,7 @@ RunEnd run(const Case& c, const RunOptions& options) {
   log::info("stop: %s at increment %d, t = %.6g s", stop.reason.c_str(), state.increment, state.time);
   record_final_loads(scene, disc, state, last_step, timers);
   finish(scene, disc, state, writer, last, timers, start);
+  hand_over();
   if (!stop.complete)
     return {"stopped at increment " + std::to_string(state.increment) + ": " + stop.reason +
                 "; the results so far are in " + out,

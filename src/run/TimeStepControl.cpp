@@ -80,7 +80,7 @@ TimeStep TimeStepControl::next_step(const RunState& state) const {
         scene_.dies[lower].velocity(state.dies[lower], dt).z() - scene_.dies[upper].velocity(state.dies[upper], dt).z();
     if (closing > 0.0) to_stop = std::min(to_stop, (scene_.die_gap(state.dies) - time_.final_gap) / closing);
   }
-  if (to_stop <= dt)
+  if (to_stop <= dt * (1.0 + 1e-9)) // a stop one step away (to rounding) in one step
     dt = to_stop;
   else if (to_stop < 1.25 * dt)
     dt = 0.5 * to_stop;
@@ -101,6 +101,12 @@ bool TimeStepControl::ends_at_contact(const TimeStep& step, double touch) const 
 Stop TimeStepControl::stop(const RunState& state) const {
   const double tolerance = 1e-9;
   if (state.time >= time_.end_time * (1.0 - tolerance)) return {"end time reached"};
+  if (std::isfinite(time_.stop_temperature) &&
+      *std::max_element(state.temperature.begin(), state.temperature.end()) <= time_.stop_temperature) {
+    char text[80];
+    std::snprintf(text, sizeof text, "cooled to %g C", time_.stop_temperature);
+    return {text};
+  }
   if (std::isfinite(time_.final_stroke) &&
       state.dies[time_.stroke_die].stroke >= time_.final_stroke * (1.0 - tolerance))
     return {"final stroke reached"};

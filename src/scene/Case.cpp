@@ -3,6 +3,7 @@
 #include "anvil/core/input_file.h"
 #include "anvil/solver/PetscSession.h"
 
+#include "case_document.h"
 #include "checked_yaml.h"
 
 #include <algorithm>
@@ -346,6 +347,10 @@ void read_thermal(const CheckedYaml& doc, Case& c) {
   read_contact_heat(doc, c);
 }
 
+bool root_has_thermal(const CheckedYaml& doc) {
+  return static_cast<bool>(doc.root()["thermal"]);
+}
+
 void read_time(const CheckedYaml& doc, Case& c) {
   const YAML::Node t = doc.root()["time"];
   if (!t) return;
@@ -388,13 +393,25 @@ void read_time(const CheckedYaml& doc, Case& c) {
   }
   if (stop["load"]) time.max_load = doc.number(stop, "load", "time.stop.load");
   if (stop["time"]) time.end_time = doc.number(stop, "time", "time.stop.time");
+  if (stop["temperature"]) {
+    if (!root_has_thermal(doc))
+      doc.fail(stop["temperature"], "time.stop.temperature", "a temperature stop needs a 'thermal' section");
+    time.stop_temperature = doc.number(stop, "temperature", "time.stop.temperature");
+  }
 }
 
 } // namespace
 
 Case read_case(const std::string& path, const std::vector<std::string>& overrides) {
   const CheckedYaml doc(path, case_schema(), overrides);
+  if (doc.root()["operations"])
+    throw InputError(doc.at(doc.root()["operations"]) + ": a chain of operations: read it with read_chain");
+  return read_case_document(doc, overrides);
+}
+
+Case read_case_document(const CheckedYaml& doc, const std::vector<std::string>& overrides) {
   const YAML::Node& root = doc.root();
+  const std::string& path = doc.path();
   Case c;
   c.path = path;
   c.overrides = overrides;

@@ -179,7 +179,7 @@ void check_dies_outside_bodies(const Scene& scene) {
 
 } // namespace
 
-Scene::Scene(const Case& c, Timers& timers) : input(c) {
+Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) {
   // The bodies are solved as one mesh of disjoint parts, each element with its body's law.
   std::array<bool, 2> symmetric_about = {false, false}; // symmetry planes normal to x, y
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
@@ -209,7 +209,8 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
              law && law->depends_on_temperature())
       // T is a constant of an isothermal scene: so is K(T).
       body.law = std::make_unique<material::NortonHoff>(law->at_temperature(body.state.temperature));
-    const mesh::TetMesh part = build_mesh(spec.mesh, "bodies[" + std::to_string(b) + "].mesh");
+    const mesh::TetMesh part = carried ? mesh::extract(carried->mesh, carried->bodies[b])
+                                       : build_mesh(spec.mesh, "bodies[" + std::to_string(b) + "].mesh");
     for (std::size_t i = 0; i < c.boundary.size(); ++i)
       if (c.boundary_body[i] == static_cast<int>(b)) body.conditions.push_back(c.boundary[i]);
     conditions.insert(conditions.end(), body.conditions.begin(), body.conditions.end());
@@ -230,7 +231,10 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
       else
         model_side.max()[axis] = plane;
     }
+    // A chain's part keeps the volume the chain started with (less what a
+    // trim cut off): what the operations before lost, compensation restores.
     body.initial_volume = mesh::volume(part);
+    if (carried) body.initial_volume *= carried->volume.initial / mesh::volume(carried->mesh);
     body.remesh_size = c.remeshing.element_size > 0.0 ? c.remeshing.element_size : mean_boundary_edge(part);
     if (c.remeshing.enabled && c.remeshing.element_size > 0.0) {
       // Fewer than three elements across would remesh the body into a few
@@ -258,9 +262,12 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
   }
   symmetry_copies = (symmetric_about[0] ? 2 : 1) * (symmetric_about[1] ? 2 : 1);
   if (const int axis = c.flow_line_axis; axis >= 0) {
+    // Planes of the material where it was at the start (of the chain).
     double low = std::numeric_limits<double>::infinity(), high = -low;
-    for (const mesh::Point& x : initial_mesh.nodes)
-      low = std::min(low, x[axis]), high = std::max(high, x[axis]);
+    for (std::size_t n = 0; n < initial_mesh.nodes.size(); ++n) {
+      const double x = carried ? carried->material_position[3 * n + axis] : initial_mesh.nodes[n][axis];
+      low = std::min(low, x), high = std::max(high, x);
+    }
     for (int k = 0; k < c.flow_line_count; ++k)
       flow_line_levels.push_back(low + (k + 0.5) * (high - low) / c.flow_line_count);
   }
@@ -312,10 +319,16 @@ Scene::Scene(const Case& c, Timers& timers) : input(c) {
     if (!thermal)
       throw InputError(c.path + ": nothing moves at t = 0 (no moving die, no prescribed velocity): the time loop "
                                 "needs a motion, or a 'thermal' section to solve heat alone (cooling, dwell)");
-    if (!std::isfinite(c.time.end_time) || std::isfinite(c.time.final_stroke) || c.time.final_gap > 0.0 ||
+    const bool cools_to = std::isfinite(c.time.stop_temperature);
+    if (!(std::isfinite(c.time.end_time) || cools_to) || std::isfinite(c.time.final_stroke) || c.time.final_gap > 0.0 ||
         std::isfinite(c.time.max_load))
       throw InputError(c.time.source + ": key 'time.stop': nothing moves (heat alone): the run stops at an end "
-                                       "time, 'time: ...' and nothing else");
+                                       "time or a temperature, 'time: ...' or 'temperature: ...' and nothing else");
+    if (!std::isfinite(c.time.end_time) && !(c.time.heat_step > 0.0))
+      throw InputError(c.time.source + ": missing key 'time.heat_step': cooling to a temperature without an end "
+                                       "time needs the length of its heat steps (s)");
+  } else if (std::isfinite(c.time.stop_temperature)) {
+    throw InputError(c.time.source + ": key 'time.stop.temperature': only for heat alone (nothing moves)");
   } else if (c.time.enabled && !(c.time.stroke_increment > 0.0)) {
     throw InputError(c.time.source + ": missing key 'time.stroke_increment': the travel of the fastest die per "
                                      "increment (mm)");
@@ -336,7 +349,7 @@ double Scene::die_gap(std::span<const DieState> dies_now) const {
   return die_gap0 + dies_now[upper_die].displacement.z() - dies_now[1 - upper_die].displacement.z();
 }
 
-RunState initial_state(const Scene& scene) {
+RunState initial_state(const Scene& scene, const RunState* part) {
   RunState state;
   state.mesh = scene.initial_mesh;
   state.bodies = scene.initial_ranges;
@@ -358,7 +371,27 @@ RunState initial_state(const Scene& scene) {
   if (scene.input.flow_line_axis >= 0)
     for (const mesh::Point& x : state.mesh.nodes)
       state.material_position.insert(state.material_position.end(), x.data(), x.data() + 3);
-  state.volume.initial = mesh::volume(state.mesh);
+  if (part) {
+    state.equivalent_strain = part->equivalent_strain;
+    // The part's last flow: the first Newton guess, and the rates the
+    // friction's flow stress is read at in the first increment (contact_scales).
+    if (part->unknowns.nodal.size() == state.unknowns.nodal.size() &&
+        part->unknowns.bubble.size() == state.unknowns.bubble.size())
+      state.unknowns = part->unknowns;
+    state.damage = part->damage;
+    if (scene.carries_stress) state.elastic_stress = part->elastic_stress;
+    if (scene.thermal) state.temperature = part->temperature;
+    if (scene.input.flow_line_axis >= 0) state.material_position = part->material_position;
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+      if (scene.bodies[b].wear && b < part->body_wear.size() && !part->body_wear[b].empty())
+        state.body_wear[b] = part->body_wear[b];
+    // A die worn in an operation before (the chain gives its wear in this
+    // scene's order) wears on.
+    for (std::size_t d = 0; d < scene.dies.size(); ++d)
+      if (d < part->wear.size() && part->wear[d].size() == state.wear[d].size() && !state.wear[d].empty())
+        state.wear[d] = part->wear[d];
+  }
+  state.volume.initial = part ? part->volume.initial : mesh::volume(state.mesh);
   state.inside_dies = inside_dies(scene, state);
   return state;
 }

@@ -230,6 +230,7 @@ void CheckedYaml::check(const YAML::Node& node, const std::string& spec_prefix, 
         throw InputError(at(entry.first) + ": key '" + shown + "' is given twice (first at " + at(first) + ")");
     seen.emplace_back(key, entry.first);
     const KeySpec* k = find_key(schema_, spec_path);
+    if (k && !k->alias.empty()) k = find_key(schema_, k->alias); // an operation's section, checked as the case's
     if (!k) {
       std::string known;
       for (const KeySpec& s : schema_)

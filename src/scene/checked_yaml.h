@@ -28,6 +28,13 @@ public:
               const std::vector<std::string>& overrides = {});
 
   const YAML::Node& root() const { return root_; }
+  /// The same file read through another root: an operation's document,
+  /// built of this file's nodes (checked already).
+  CheckedYaml with_root(YAML::Node root) const {
+    CheckedYaml copy = *this;
+    copy.root_ = std::move(root);
+    return copy;
+  }
   const std::string& path() const { return path_; }
 
   /// "file:line" of a node.

@@ -540,6 +540,8 @@ const std::vector<KeySpec>& case_schema() {
       const std::vector<KeySpec> friction = friction_keys(owner, between);
       keys.insert(keys.end(), friction.begin(), friction.end());
     }
+    const std::vector<KeySpec> chain = operation_keys();
+    keys.insert(keys.end(), chain.begin(), chain.end());
     return keys;
   }();
   return schema;
@@ -548,6 +550,10 @@ const std::vector<KeySpec>& case_schema() {
 const KeySpec* find_key(const std::vector<KeySpec>& schema, const std::string& path) {
   for (const KeySpec& k : schema)
     if (k.path == path) return &k;
+  for (const KeySpec& k : schema)
+    if (!k.alias.empty() && path.size() > k.path.size() && path.compare(0, k.path.size(), k.path) == 0 &&
+        (path[k.path.size()] == '.' || path[k.path.size()] == '['))
+      return find_key(schema, k.alias + path.substr(k.path.size()));
   return nullptr;
 }
 

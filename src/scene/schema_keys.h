@@ -52,4 +52,12 @@ inline KeySpec choices(KeySpec k, std::vector<std::string> values) {
   return k;
 }
 
+inline KeySpec alias(KeySpec k, std::string of) {
+  k.alias = std::move(of);
+  return k;
+}
+
+/// The keys of a chain of operations (`operations`, operation_schema.cpp).
+std::vector<KeySpec> operation_keys();
+
 } // namespace anvil::scene::schema_keys

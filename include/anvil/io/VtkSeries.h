@@ -57,4 +57,7 @@ private:
   std::vector<Entry> entries_;
 };
 
+/// Writes the collection (.pvd) of `entries` to `path`, atomically.
+void write_collection(const std::string& path, const std::vector<scene::OutputFrame>& entries);
+
 } // namespace anvil::io

@@ -2,6 +2,7 @@
 // outputs (docs/design.md §7): VTK series, loads.csv, summary.json, anvil.log.
 #pragma once
 #include "anvil/scene/Case.h"
+#include "anvil/scene/RunState.h"
 
 #include <string>
 
@@ -29,8 +30,10 @@ struct RunEnd {
 
 /// Returns when the run ends, its outputs written; throws InputError for bad
 /// input (before any result file is written) and RunError when the solve or
-/// a write fails.
-RunEnd run(const scene::Case& c, const RunOptions& options);
+/// a write fails. An operation of a chain (run/chain.h) gives `part`: when
+/// it holds a mesh, the bodies the run starts from (scene::initial_state);
+/// on return, the state the run ended with.
+RunEnd run(const scene::Case& c, const RunOptions& options, scene::RunState* part = nullptr);
 
 /// The folder a run of `c` writes to.
 std::string output_directory(const scene::Case& c, const RunOptions& options);

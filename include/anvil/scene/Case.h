@@ -131,6 +131,8 @@ struct TimeSpec {
   double final_gap = 0.0; ///< mm between the two dies along the press axis (z); 0 = none
   double max_load = std::numeric_limits<double>::infinity(); ///< N, on any die
   double end_time = std::numeric_limits<double>::infinity(); ///< s
+  /// °C, heat alone: the bodies' hottest node cooled to it
+  double stop_temperature = -std::numeric_limits<double>::infinity();
 };
 
 /// Automatic remeshing. Flowing bodies only: an elastic die strains

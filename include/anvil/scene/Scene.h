@@ -58,7 +58,10 @@ struct LoadSurface {
 struct Scene {
   /// Builds the scene of `c`. Throws InputError (a material card, a mesh, an
   /// STL die, a boundary condition that selects nothing, nothing moving).
-  Scene(const Case& c, Timers& timers);
+  /// An operation of a chain after the first gives `part`: the bodies as
+  /// the operation before left them (placed), whose meshes replace the
+  /// ones the case builds (scene/Chain.h).
+  Scene(const Case& c, Timers& timers, const RunState* part = nullptr);
 
   const Case& input; ///< the checked case file, as read
   std::vector<Body> bodies;
@@ -118,8 +121,12 @@ double fill_tolerance(const Scene& scene, int die);
 std::vector<std::optional<contact::DieFill>> die_fills(const Scene& scene, const mesh::TetMesh& mesh,
                                                        std::span<const DieState> dies_now, bool with_underfill);
 
-/// The state of a run that starts: the bodies as built, at rest, t = 0.
-RunState initial_state(const Scene& scene);
+/// The state of a run that starts: the bodies as built, at rest, t = 0. An
+/// operation of a chain starts from `part` (the scene's own): its bodies
+/// keep their mesh and every field they carry (ε̄, damage, σ of elastic
+/// bodies, T, the material's start positions, a meshed die's wear, their
+/// last flow); the dies, the clock and the records start anew.
+RunState initial_state(const Scene& scene, const RunState* part = nullptr);
 
 /// Throws InputError when the state of the checkpoint at `path` does not
 /// belong to the scene (its dies, bodies, load surfaces, outputs).

@@ -25,6 +25,8 @@ struct KeySpec {
   std::vector<std::string> choices; ///< strings: allowed values (empty = any)
   std::string unit;
   std::string doc;
+  /// Checked as this key: an operation's section ("operations[].dies" as "dies").
+  std::string alias;
 };
 
 /// Keys of a case file (format version 1).
@@ -32,7 +34,9 @@ const std::vector<KeySpec>& case_schema();
 /// Keys of a material card (format version 1).
 const std::vector<KeySpec>& material_schema();
 
-/// Looks `path` up in `schema`; nullptr if undeclared.
+/// Looks `path` up in `schema`; nullptr if undeclared. A path under an
+/// aliased key is looked up under its alias ("operations[].time.stop" as
+/// "time.stop").
 const KeySpec* find_key(const std::vector<KeySpec>& schema, const std::string& path);
 
 /// "number > 0 (mm)", "one of box, cylinder" ...: what a value must be.

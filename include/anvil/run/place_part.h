@@ -1,0 +1,24 @@
+// Where a chain puts the part before an operation (scene::Placement):
+// flipped, turned about the press axis, moved, rested on the lowest die.
+#pragma once
+#include "anvil/scene/Case.h"
+#include "anvil/scene/Chain.h"
+#include "anvil/scene/RunState.h"
+
+namespace anvil::run {
+
+/// Moves every body of `part` as `place` says, the dies of `next` (the
+/// operation's case) at their start. The fields stay with the material.
+/// A flip is half a turn about a horizontal axis through the part's centre;
+/// a model cut by symmetry planes is turned about the axis in its planes, or
+/// mirrored in z when it has two (the whole part's half turn, by its
+/// symmetry). Throws InputError for a placement the model cannot take.
+void place_part(const scene::Placement& place, const scene::Case& next, scene::RunState& part,
+                const std::string& where);
+
+/// mm the part must move along z to rest on `die` at its start: the
+/// smallest height of a boundary node above the die's upward facets below
+/// it (negative: the part sinks into the die by that much).
+double height_above_die(const scene::RunState& part, const scene::DieSpec& die);
+
+} // namespace anvil::run

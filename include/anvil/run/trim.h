@@ -1,0 +1,37 @@
+// A trim operation of a chain (docs/chains.md): the part cut by a closed
+// trim line extruded along the press axis, or by a closed surface; what is
+// inside is kept with its fields, the cut remeshed where it left poor
+// elements.
+#pragma once
+#include "anvil/run/Simulation.h"
+#include "anvil/scene/Chain.h"
+#include "anvil/scene/RunState.h"
+
+#include <Eigen/Core>
+#include <functional>
+
+namespace anvil::run {
+
+/// Where the cut is: φ(x) (mm), the signed distance to it, negative on the
+/// side kept; and the point of the cut nearest x.
+struct Cut {
+  std::function<double(const mesh::Point&)> distance;
+  std::function<mesh::Point(const mesh::Point&)> nearest;
+};
+
+/// The cut of `spec`: a line's distance is taken in the plane normal to z.
+Cut make_cut(const scene::TrimSpec& spec, const std::string& where, double size);
+
+/// `part` cut by `cut`: the nodes of each edge that crosses it, the nearer
+/// end, put onto it; the elements on the far side removed; every field of
+/// the elements and nodes kept. Elements next to the cut may be poor or
+/// inverted: the caller remeshes them.
+scene::RunState cut_part(const scene::RunState& part, const Cut& cut);
+
+/// Runs trim operation `op` into options.output_directory: the part cut,
+/// remeshed where the cut left elements below remeshing.quality, written
+/// (VTK, checkpoint.h5, summary.json with the volume and mass removed).
+/// `part` is the part it cuts and, on return, the part it leaves.
+RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunState& part);
+
+} // namespace anvil::run
