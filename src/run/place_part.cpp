@@ -11,24 +11,6 @@
 namespace anvil::run {
 namespace {
 
-/// Symmetry planes of the case's conditions, by the axis they are normal
-/// to: a plane's normal, or that of the faces of `mesh` a tag selects.
-std::array<bool, 3> symmetry_axes(const scene::Case& c, const mesh::TetMesh& mesh) {
-  std::array<bool, 3> axes = {false, false, false};
-  for (const scene::BoundaryCondition& bc : c.boundary) {
-    if (bc.kind != scene::BoundaryKind::symmetry) continue;
-    Eigen::Vector3d normal = bc.faces.plane_normal;
-    if (bc.faces.tag != 0) {
-      normal.setZero();
-      for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
-        if (mesh.boundary_tags[f] == bc.faces.tag) normal += mesh::area_vector(mesh, mesh.boundary_faces[f]);
-    }
-    for (int a = 0; a < 3; ++a)
-      if (normal.norm() > 0.0 && std::abs(normal.normalized()[a]) > 1.0 - 1e-6) axes[a] = true;
-  }
-  return axes;
-}
-
 /// Mirrors `part` in the axes flagged, about `centre`; an odd number of
 /// mirrors reverses every tet and face so that they stay positive.
 void mirror(scene::RunState& part, const std::array<bool, 3>& axes, const Eigen::Vector3d& centre) {
@@ -52,6 +34,24 @@ scene::Die die_for(const scene::RunState& part, const scene::DieSpec& spec) {
 }
 
 } // namespace
+
+std::vector<SymmetryPlane> symmetry_planes(const scene::Case& c, const mesh::TetMesh& mesh) {
+  std::vector<SymmetryPlane> planes;
+  for (const scene::BoundaryCondition& bc : c.boundary) {
+    if (bc.kind != scene::BoundaryKind::symmetry) continue;
+    Eigen::Vector3d normal = bc.faces.plane_normal;
+    mesh::Point on = bc.faces.plane_point;
+    if (bc.faces.tag != 0) {
+      normal.setZero();
+      for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f)
+        if (mesh.boundary_tags[f] == bc.faces.tag)
+          normal += mesh::area_vector(mesh, mesh.boundary_faces[f]), on = mesh.nodes[mesh.boundary_faces[f][0]];
+    }
+    for (int a = 0; a < 3; ++a)
+      if (normal.norm() > 0.0 && std::abs(normal.normalized()[a]) > 1.0 - 1e-6) planes.push_back({a, on[a]});
+  }
+  return planes;
+}
 
 double height_above_die(const scene::RunState& part, const scene::DieSpec& spec) {
   const scene::Die die = die_for(part, spec);
@@ -80,7 +80,9 @@ double height_above_die(const scene::RunState& part, const scene::DieSpec& spec)
 void place_part(const scene::Placement& place, const scene::Case& next, scene::RunState& part,
                 const std::string& where) {
   if (!place.moves()) return;
-  const std::array<bool, 3> planes = symmetry_axes(next, part.mesh);
+  std::array<bool, 3> planes = {false, false, false};
+  for (const SymmetryPlane& p : symmetry_planes(next, part.mesh))
+    planes[p.axis] = true;
   if ((place.flip || place.turn != 0.0) && !part.elastic_stress.empty())
     throw InputError(where + ": key 'place': an elastic body's stress is not turned with it: place moves only "
                              "flowing bodies by a translation");

@@ -116,7 +116,7 @@ Cut make_cut(const scene::TrimSpec& spec, const std::string& where, double size)
   return cut;
 }
 
-scene::RunState cut_part(const scene::RunState& part, const Cut& cut) {
+scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<const SymmetryPlane> planes) {
   const mesh::TetMesh& m = part.mesh;
   std::vector<mesh::Point> x = m.nodes;
   std::vector<double> phi(x.size());
@@ -138,8 +138,20 @@ scene::RunState cut_part(const scene::RunState& part, const Cut& cut) {
         if ((phi[a] < 0.0 && phi[b] > 0.0) || (phi[a] > 0.0 && phi[b] < 0.0))
           snap[std::abs(phi[a]) <= std::abs(phi[b]) ? a : b] = 1;
       }
-  for (std::size_t n = 0; n < x.size(); ++n)
-    if (snap[n]) x[n] = cut.nearest(x[n]), phi[n] = 0.0;
+  for (std::size_t n = 0; n < x.size(); ++n) {
+    if (!snap[n]) continue;
+    // Onto the cut, and back onto the symmetry planes the node is on: the
+    // alternating projections meet where the cut crosses them.
+    std::vector<const SymmetryPlane*> on;
+    for (const SymmetryPlane& p : planes)
+      if (std::abs(x[n][p.axis] - p.at) < on_cut) on.push_back(&p);
+    for (int pass = 0; pass < (on.empty() ? 1 : 50); ++pass) {
+      x[n] = cut.nearest(x[n]);
+      for (const SymmetryPlane* p : on)
+        x[n][p->axis] = p->at;
+    }
+    phi[n] = 0.0;
+  }
   std::vector<char> keep_tet(m.tets.size(), 0);
   for (std::size_t e = 0; e < m.tets.size(); ++e) {
     const mesh::Tet& t = m.tets[e];
@@ -218,11 +230,15 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
   processes::on_root([&] { std::filesystem::create_directories(dir); });
   log::open_file(dir + "/anvil.log");
   Timers timers;
+  if (part.mesh.node_count() == 0) { // the chain's first operation: the bodies as built
+    const scene::Scene built(op.input, timers);
+    part = scene::initial_state(built);
+  }
   Eigen::Vector3d low = part.mesh.nodes.front(), high = low;
   for (const mesh::Point& p : part.mesh.nodes)
     low = low.cwiseMin(p), high = high.cwiseMax(p);
   const Cut cut = make_cut(op.trim, op.source, 2.0 * (high - low).norm());
-  scene::RunState cut_state = cut_part(part, cut);
+  scene::RunState cut_state = cut_part(part, cut, symmetry_planes(op.input, part.mesh));
   cut_state.volume.initial = part.volume.initial - (mesh::volume(part.mesh) - mesh::volume(cut_state.mesh));
   const scene::Scene scene(op.input, timers, &cut_state);
   scene::RunState state = scene::initial_state(scene, &cut_state);

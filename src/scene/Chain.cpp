@@ -117,7 +117,6 @@ Chain read_chain(const std::string& path, const std::vector<std::string>& overri
     chain.operations.push_back(std::move(whole));
     return chain;
   }
-  YAML::Node last_time; // of the last operation with a time loop
   for (std::size_t i = 0; i < list.size(); ++i) {
     const YAML::Node op = list[i];
     const std::string shown = "operations[" + std::to_string(i) + "]";
@@ -154,14 +153,12 @@ Chain read_chain(const std::string& path, const std::vector<std::string>& overri
                "flow lines follow the material through the whole chain: give them at the top level");
     o.place = read_place(doc, op);
     YAML::Node document = operation_document(root, op, o.kind);
-    if (o.kind == OperationKind::trim && !document["time"]) {
+    if (o.kind == OperationKind::trim) {
       // A trim has no time loop; the keys that need one (thermal,
-      // remeshing) are read as they are in the operation before it.
-      if (!last_time) doc.fail(op, shown, "a trim cuts a part an operation before it has formed");
-      document["time"] = last_time;
+      // remeshing) are read as for any operation, then the time dropped.
+      document["time"] = YAML::Load("{stop: {time: 1}}");
     }
     o.input = read_case_document(doc.with_root(document), overrides);
-    if (o.kind != OperationKind::trim) last_time = document["time"];
     if (o.kind == OperationKind::trim) {
       o.input.time = TimeSpec{};
       o.input.remeshing.enabled = true;

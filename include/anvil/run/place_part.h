@@ -7,6 +7,16 @@
 
 namespace anvil::run {
 
+/// A symmetry plane of a model: normal to `axis`, at `at` (mm) along it.
+struct SymmetryPlane {
+  int axis;
+  double at;
+};
+
+/// The symmetry planes of `c`'s conditions on `mesh`: a plane's normal, or
+/// that of the faces a tag selects.
+std::vector<SymmetryPlane> symmetry_planes(const scene::Case& c, const mesh::TetMesh& mesh);
+
 /// Moves every body of `part` as `place` says, the dies of `next` (the
 /// operation's case) at their start. The fields stay with the material.
 /// A flip is half a turn about a horizontal axis through the part's centre;

@@ -4,11 +4,13 @@
 // elements.
 #pragma once
 #include "anvil/run/Simulation.h"
+#include "anvil/run/place_part.h"
 #include "anvil/scene/Chain.h"
 #include "anvil/scene/RunState.h"
 
 #include <Eigen/Core>
 #include <functional>
+#include <span>
 
 namespace anvil::run {
 
@@ -25,8 +27,9 @@ Cut make_cut(const scene::TrimSpec& spec, const std::string& where, double size)
 /// `part` cut by `cut`: the nodes of each edge that crosses it, the nearer
 /// end, put onto it; the elements on the far side removed; every field of
 /// the elements and nodes kept. Elements next to the cut may be poor or
-/// inverted: the caller remeshes them.
-scene::RunState cut_part(const scene::RunState& part, const Cut& cut);
+/// inverted: the caller remeshes them. A node on a symmetry plane of
+/// `planes` stays on it (put where the cut meets the plane).
+scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<const SymmetryPlane> planes);
 
 /// Runs trim operation `op` into options.output_directory: the part cut,
 /// remeshed where the cut left elements below remeshing.quality, written

@@ -1,0 +1,149 @@
+// Chains of operations (run/chain.h, docs/chains.md): two upsettings in a
+// row are one upsetting, a trim removes the volume of its cut, and a chain
+// stopped in its third operation resumes there as the uninterrupted one.
+#include "run_outputs.h"
+
+#include "anvil/core/log.h"
+#include "anvil/mesh/tet_geometry.h"
+#include "anvil/run/chain.h"
+#include "anvil/scene/Chain.h"
+
+#include <cmath>
+#include <fstream>
+#include <regex>
+
+using namespace anvil;
+
+namespace {
+
+/// A quarter C45 cylinder (r 5, h 8 mm) between Tresca dies; every step a
+/// full stroke increment (no contact-event or displacement cuts), so that
+/// the chain and the single run solve on the same geometries.
+std::string billet(const std::string& extra) {
+  return "anvil: 1\n"
+         "bodies:\n"
+         "  - name: billet\n"
+         "    material: " +
+         source_path("materials/steel_c45_1100C.yaml") +
+         "\n"
+         "    mesh: {generate: quarter_cylinder, radius: 5, height: 8, element_size: 1.0}\n"
+         "boundary:\n"
+         "  - {name: symmetry_x, type: symmetry, tag: 1}\n"
+         "  - {name: symmetry_y, type: symmetry, tag: 3}\n"
+         "time: {stroke_increment: 0.25, min_step_fraction: 0.5, max_displacement: 1}\n"
+         "output: {picture: false}\n" +
+         extra;
+}
+
+/// Dies with the top one starting at z = `top` mm, moving down at 10 mm/s.
+std::string dies(double top) {
+  return "  - {name: top, plane: {point: [0, 0, " + std::to_string(top) +
+         "], normal: [0, 0, -1]}, motion: constant, velocity: [0, 0, -10], friction: {law: tresca, factor: 0.3}}\n"
+         "  - {name: bottom, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, friction: {law: tresca, factor: 0.3}}\n";
+}
+
+std::string write_case(const std::string& name, const std::string& text) {
+  const std::string path = (std::filesystem::temp_directory_path() / (name + ".yaml")).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+/// Runs the chain of `path` into <tmp>/`name` (emptied first).
+std::string run_chain(const std::string& path, const std::string& name, const std::vector<std::string>& settings = {},
+                      bool resume = false) {
+  const auto out = std::filesystem::temp_directory_path() / name;
+  if (!resume) std::filesystem::remove_all(out);
+  run::RunOptions options{out.string(), resume, resume};
+  run::run_chain(scene::read_chain(path, settings), options);
+  return out.string();
+}
+
+/// A chain of upsettings, each `stroke` mm, the n-th die starting where
+/// the one before stopped.
+std::string upsettings(int count, double stroke) {
+  std::string text = "operations:\n";
+  for (int k = 0; k < count; ++k)
+    text += "  - name: upset" + std::to_string(k + 1) + "\n    dies:\n" +
+            std::regex_replace(dies(8.0 - k * stroke), std::regex("  - "), "      - ") +
+            "    time: {stop: {stroke: " + std::to_string(stroke) + "}}\n";
+  return text;
+}
+
+} // namespace
+
+TEST_CASE("a chain of two upsettings gives the loads of one upsetting of the same total stroke", "[verification]") {
+  log::set_quiet(true);
+  const std::string chain = write_case("anvil_chain_two", billet(upsettings(2, 2.0)));
+  const std::string single = write_case("anvil_chain_one", billet("dies:\n" + dies(8.0)));
+  const std::string out = run_chain(chain, "anvil_chain_two");
+  const RunOutputs one = run_case(scene::read_case(single, {"time.stop.stroke=4"}), "anvil_chain_one");
+  const std::vector<LoadRow> whole = one.loads("top");
+  std::vector<LoadRow> chained = RunOutputs{out + "/01-upset1"}.loads("top");
+  const std::vector<LoadRow> second = RunOutputs{out + "/02-upset2"}.loads("top");
+  for (LoadRow row : second) {
+    row.stroke += 2.0;
+    chained.push_back(row);
+  }
+  // The second operation starts from the first's last flow (its Newton
+  // guess and the rates its friction stress is read at): the loads agree to
+  // what Newton leaves, |dv|/|v| <= 1e-4 at quadratic convergence (measured
+  // 3.2e-6 at most).
+  int compared = 0;
+  for (const LoadRow& row : chained)
+    for (const LoadRow& ref : whole)
+      if (std::abs(ref.stroke - row.stroke) < 1e-9 && row.stroke > 1e-9) {
+        INFO("stroke " << row.stroke << " mm: " << row.whole_part_load << " N against " << ref.whole_part_load);
+        CHECK(std::abs(row.whole_part_load / ref.whole_part_load - 1.0) < 1e-5);
+        ++compared;
+      }
+  CHECK(compared >= 15);
+  CHECK(io::read_summary_number(out, "operations_done") == 2);
+  CHECK(io::read_summary_number(out, "time_s") == Approx(0.4).epsilon(1e-12));
+}
+
+TEST_CASE("a trim by a line removes the volume of its cut", "[verification]") {
+  // A 10 x 10 x 4 mm block cut by the plane x = 7.3 (a square trim line):
+  // every node of an edge across it is put onto it, so the part kept is
+  // exactly the block's x <= 7.3 (292 mm3), whatever the mesh.
+  log::set_quiet(true);
+  const std::string path = write_case("anvil_chain_trim", "anvil: 1\n"
+                                                          "bodies:\n"
+                                                          "  - name: block\n"
+                                                          "    material: " +
+                                                              source_path("materials/steel_c45_1100C.yaml") +
+                                                              "\n"
+                                                              "    mesh: {generate: box, size: [10, 10, 4], "
+                                                              "element_size: 1.0}\n"
+                                                              "output: {picture: false}\n"
+                                                              "operations:\n"
+                                                              "  - name: cut\n"
+                                                              "    type: trim\n"
+                                                              "    trim: {line: [-1, -1, 7.3, -1, 7.3, 11, -1, 11]}\n");
+  const std::string out = run_chain(path, "anvil_chain_trim");
+  const RunOutputs trim{out + "/01-cut"};
+  CHECK(trim.summary_number("removed_volume_model_mm3") == Approx(108.0).epsilon(1e-9));
+  CHECK(trim.summary_number("volume_mm3") == Approx(292.0).epsilon(1e-9));
+  const scene::RunState state = trim.final_state();
+  for (const mesh::Point& x : state.mesh.nodes)
+    CHECK(x.x() <= 7.3 + 1e-12);
+  for (int e = 0; e < state.mesh.tet_count(); ++e)
+    CHECK(mesh::quality(state.mesh, e) > 0.0);
+}
+
+TEST_CASE("a chain stopped in its third operation resumes there and ends as the uninterrupted one", "[verification]") {
+  log::set_quiet(true);
+  const std::string path = write_case("anvil_chain_three", billet(upsettings(3, 1.0)));
+  const std::string whole = run_chain(path, "anvil_chain_three_whole");
+  const std::string part = run_chain(path, "anvil_chain_three_part", {"operations[2].time.max_increments=2"});
+  CHECK(io::read_summary_number(part, "operations_done") == 2);
+  run_chain(path, "anvil_chain_three_part", {}, true);
+  CHECK(io::read_summary_number(part, "operations_done") == 3);
+  const scene::RunState a = RunOutputs{whole + "/03-upset3"}.final_state();
+  const scene::RunState b = RunOutputs{part + "/03-upset3"}.final_state();
+  REQUIRE(a.mesh.node_count() == b.mesh.node_count());
+  REQUIRE(a.increment == b.increment);
+  for (int n = 0; n < a.mesh.node_count(); ++n)
+    REQUIRE(a.mesh.nodes[n] == b.mesh.nodes[n]); // bit for bit
+  CHECK(a.equivalent_strain == b.equivalent_strain);
+  CHECK(io::read_summary_number(whole, "time_s") == io::read_summary_number(part, "time_s"));
+}
