@@ -39,7 +39,11 @@ std::vector<KeySpec> operation_keys() {
   };
   for (const char* section :
        {"dies", "boundary", "contact", "contact_pairs", "time", "remeshing", "output", "thermal", "solver"})
-    keys.push_back(alias(key(std::string("operations[].") + section, T::map,
+    keys.push_back(alias(key(std::string("operations[].") + section,
+                             std::string(section) == "dies" || std::string(section) == "boundary" ||
+                                     std::string(section) == "contact_pairs"
+                                 ? T::list
+                                 : T::map,
                              std::string("the operation's own '") + section + "' (see it above)"),
                          section));
   return keys;
