@@ -99,6 +99,13 @@ std::vector<std::vector<int>> tets_around_nodes(const TetMesh& mesh) {
   return around;
 }
 
+Eigen::AlignedBox3d bounding_box(const TetMesh& mesh) {
+  Eigen::AlignedBox3d box;
+  for (const Point& x : mesh.nodes)
+    box.extend(x);
+  return box;
+}
+
 MeshRange whole_range(const TetMesh& mesh) {
   return {0, mesh.node_count(), 0, mesh.tet_count(), 0, static_cast<int>(mesh.boundary_faces.size())};
 }

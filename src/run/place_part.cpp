@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace anvil::run {
 namespace {
@@ -22,15 +23,6 @@ void mirror(scene::RunState& part, const std::array<bool, 3>& axes, const Eigen:
     std::swap(t[0], t[1]);
   for (mesh::Triangle& f : part.mesh.boundary_faces)
     std::swap(f[0], f[1]);
-}
-
-/// Die `spec` at its start, its display square (a plane) larger than the part.
-scene::Die die_for(const scene::RunState& part, const scene::DieSpec& spec) {
-  Eigen::Vector3d low = part.mesh.nodes.front(), high = low;
-  for (const mesh::Point& x : part.mesh.nodes)
-    low = low.cwiseMin(x), high = high.cwiseMax(x);
-  const double size = (high - low).norm() + high.cwiseAbs().maxCoeff() + low.cwiseAbs().maxCoeff();
-  return scene::build_die(spec, size, size);
 }
 
 } // namespace
@@ -53,9 +45,7 @@ std::vector<SymmetryPlane> symmetry_planes(const scene::Case& c, const mesh::Tet
   return planes;
 }
 
-double height_above_die(const scene::RunState& part, const scene::DieSpec& spec) {
-  const scene::Die die = die_for(part, spec);
-  const die::SurfaceTriangles& s = die.surface->triangles();
+double height_above_die(const scene::RunState& part, const die::SurfaceTriangles& s) {
   const std::vector<char> boundary = mesh::boundary_node_flags(part.mesh);
   double height = std::numeric_limits<double>::infinity();
   for (std::size_t n = 0; n < part.mesh.nodes.size(); ++n) {
@@ -86,16 +76,13 @@ void place_part(const scene::Placement& place, const scene::Case& next, scene::R
   if ((place.flip || place.turn != 0.0) && !part.elastic_stress.empty())
     throw InputError(where + ": key 'place': an elastic body's stress is not turned with it: place moves only "
                              "flowing bodies by a translation");
-  Eigen::Vector3d low = part.mesh.nodes.front(), high = low;
-  for (const mesh::Point& x : part.mesh.nodes)
-    low = low.cwiseMin(x), high = high.cwiseMax(x);
   if (place.flip) {
     std::array<bool, 3> axes = {false, false, true};
     if (!planes[1])
       axes[1] = true; // half a turn about x
     else if (!planes[0])
       axes[0] = true; // about y
-    mirror(part, axes, 0.5 * (low + high));
+    mirror(part, axes, mesh::bounding_box(part.mesh).center());
   }
   if (place.turn != 0.0) {
     if (planes[0] || planes[1])
@@ -113,15 +100,20 @@ void place_part(const scene::Placement& place, const scene::Case& next, scene::R
   for (mesh::Point& x : part.mesh.nodes)
     x += place.move;
   if (!place.rest) return;
-  // The lowest die: the one whose lowest point is lowest.
-  const scene::DieSpec* lowest = nullptr;
+  // The lowest die (the one whose lowest point is lowest) at its start, a
+  // plane's display square larger than the part and its distance from the axis.
+  const Eigen::AlignedBox3d box = mesh::bounding_box(part.mesh);
+  const double size = box.diagonal().norm() + box.max().cwiseAbs().maxCoeff() + box.min().cwiseAbs().maxCoeff();
+  std::optional<scene::Die> lowest;
   double lowest_z = std::numeric_limits<double>::infinity();
   for (const scene::DieSpec& spec : next.dies) {
-    const scene::Die die = die_for(part, spec);
+    scene::Die die = scene::build_die(spec, size, size);
+    double z = std::numeric_limits<double>::infinity();
     for (const mesh::Point& p : die.surface->triangles().vertices)
-      if (p.z() < lowest_z) lowest_z = p.z(), lowest = &spec;
+      z = std::min(z, p.z());
+    if (z < lowest_z) lowest_z = z, lowest = std::move(die);
   }
-  const double drop = height_above_die(part, *lowest);
+  const double drop = height_above_die(part, lowest->surface->triangles());
   if (!std::isfinite(drop))
     throw InputError(where + ": key 'place.rest': no facet of die '" + lowest->name +
                      "' lies under the part: move it over the die first (place.move)");

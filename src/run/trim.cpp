@@ -19,6 +19,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <numeric>
 
 namespace anvil::run {
 namespace {
@@ -66,7 +67,8 @@ double mass_of(const scene::Scene& scene, int b, double volume) {
   return thermal ? 1e-9 * thermal->density * volume : std::numeric_limits<double>::quiet_NaN();
 }
 
-void write_trim_summary(const std::string& directory, const scene::Scene& scene, const scene::RunState& before,
+/// summary.json of a trim; `removed` is each body's volume cut off (mm³, model).
+void write_trim_summary(const std::string& directory, const scene::Scene& scene, const std::vector<double>& removed,
                         const scene::RunState& after, const std::string& remeshed, double seconds) {
   io::JsonWriter json;
   json.begin_object()
@@ -79,16 +81,14 @@ void write_trim_summary(const std::string& directory, const scene::Scene& scene,
       .key("bodies")
       .begin_array();
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-    const double kept = mesh::volume(after.mesh, after.bodies[b]);
-    const double removed = mesh::volume(before.mesh, before.bodies[b]) - kept;
     json.begin_object()
         .member("name", scene.bodies[b].name)
         .member("nodes", after.bodies[b].node_count)
         .member("elements", after.bodies[b].tet_count)
-        .member("volume_mm3", kept)
-        .member("removed_volume_model_mm3", removed)
-        .member("removed_volume_whole_part_mm3", scene.symmetry_copies * removed);
-    if (const double mass = mass_of(scene, int(b), scene.symmetry_copies * removed); !std::isnan(mass))
+        .member("volume_mm3", mesh::volume(after.mesh, after.bodies[b]))
+        .member("removed_volume_model_mm3", removed[b])
+        .member("removed_volume_whole_part_mm3", scene.symmetry_copies * removed[b]);
+    if (const double mass = mass_of(scene, int(b), scene.symmetry_copies * removed[b]); !std::isnan(mass))
       json.member("removed_mass_whole_part_kg", mass);
     if (!after.temperature.empty()) {
       const auto first = after.temperature.begin() + after.bodies[b].first_node;
@@ -120,10 +120,7 @@ scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<
   const mesh::TetMesh& m = part.mesh;
   std::vector<mesh::Point> x = m.nodes;
   std::vector<double> phi(x.size());
-  Eigen::Vector3d low = x.front(), high = low;
-  for (const mesh::Point& p : x)
-    low = low.cwiseMin(p), high = high.cwiseMax(p);
-  const double on_cut = 1e-9 * (high - low).norm(); // mm: a node this near is on it
+  const double on_cut = 1e-9 * mesh::bounding_box(m).diagonal().norm(); // mm: a node this near is on it
   for (std::size_t n = 0; n < x.size(); ++n) {
     phi[n] = cut.distance(x[n]);
     if (std::abs(phi[n]) < on_cut) phi[n] = 0.0;
@@ -234,18 +231,14 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
     const scene::Scene built(op.input, timers);
     part = scene::initial_state(built);
   }
-  Eigen::Vector3d low = part.mesh.nodes.front(), high = low;
-  for (const mesh::Point& p : part.mesh.nodes)
-    low = low.cwiseMin(p), high = high.cwiseMax(p);
-  const Cut cut = make_cut(op.trim, op.source, 2.0 * (high - low).norm());
+  const Cut cut = make_cut(op.trim, op.source, 2.0 * mesh::bounding_box(part.mesh).diagonal().norm());
   scene::RunState cut_state = cut_part(part, cut, symmetry_planes(op.input, part.mesh));
-  cut_state.volume.initial = part.volume.initial - (mesh::volume(part.mesh) - mesh::volume(cut_state.mesh));
+  std::vector<double> removed(part.bodies.size()); // mm³ of each body, model
+  for (std::size_t b = 0; b < part.bodies.size(); ++b)
+    removed[b] = mesh::volume(part.mesh, part.bodies[b]) - mesh::volume(cut_state.mesh, cut_state.bodies[b]);
+  cut_state.volume.initial = part.volume.initial - std::accumulate(removed.begin(), removed.end(), 0.0);
   const scene::Scene scene(op.input, timers, &cut_state);
   scene::RunState state = scene::initial_state(scene, &cut_state);
-  // The part as the operation before left it, for the volume removed.
-  scene::RunState before;
-  before.mesh = part.mesh;
-  before.bodies = part.bodies;
   std::vector<remesh::RemeshDue> due;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const mesh::MeshRange& r = state.bodies[b];
@@ -273,13 +266,12 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   processes::on_root([&] {
     io::write_checkpoint(dir + "/checkpoint.h5", state, scene.fingerprint);
-    write_trim_summary(dir, scene, before, state, remeshed, seconds);
+    write_trim_summary(dir, scene, removed, state, remeshed, seconds);
   });
-  for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
-    const double removed = mesh::volume(before.mesh, before.bodies[b]) - mesh::volume(state.mesh, state.bodies[b]);
-    log::info("trim: body '%s': %.6g mm3 removed (whole part %.6g mm3, %.4g kg)", scene.bodies[b].name.c_str(), removed,
-              scene.symmetry_copies * removed, mass_of(scene, int(b), scene.symmetry_copies * removed));
-  }
+  for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+    log::info("trim: body '%s': %.6g mm3 removed (whole part %.6g mm3, %.4g kg)", scene.bodies[b].name.c_str(),
+              removed[b], scene.symmetry_copies * removed[b],
+              mass_of(scene, int(b), scene.symmetry_copies * removed[b]));
   log::close_file();
   part = std::move(state);
   return {"trimmed", true};

@@ -4,16 +4,13 @@
 
 #include "case_document.h"
 #include "checked_yaml.h"
+#include "schema_keys.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace anvil::scene {
 namespace {
-
-/// The sections an operation may give (operation_schema.cpp).
-constexpr const char* kSections[] = {"dies",      "boundary", "contact", "contact_pairs", "time",
-                                     "remeshing", "output",   "thermal", "solver"};
 
 OperationKind operation_kind(const std::string& type) {
   if (type == "transfer") return OperationKind::transfer;
@@ -45,8 +42,8 @@ YAML::Node operation_document(const YAML::Node& root, const YAML::Node& op, Oper
       merged[key] = own ? own : entry.second;
     }
   }
-  for (const char* key : kSections)
-    if (op[key] && !root[key]) merged[key] = op[key];
+  for (const auto& section : schema_keys::kOperationSections)
+    if (op[section.name] && !root[section.name]) merged[section.name] = op[section.name];
   return merged;
 }
 
@@ -129,9 +126,9 @@ Chain read_chain(const std::string& path, const std::vector<std::string>& overri
     const std::string kind = to_string(o.kind);
     if (o.kind == OperationKind::trim) {
       o.trim = read_trim(doc, op, shown);
-      for (const char* key : kSections)
-        if (std::string(key) != "output" && std::string(key) != "remeshing")
-          doc.forbid(op, key, shown, "a trim (a cut, no time loop)");
+      for (const auto& section : schema_keys::kOperationSections)
+        if (std::string(section.name) != "output" && std::string(section.name) != "remeshing")
+          doc.forbid(op, section.name, shown, "a trim (a cut, no time loop)");
     } else {
       doc.forbid(op, "trim", shown, "type '" + kind + "' (only a trim cuts)");
     }

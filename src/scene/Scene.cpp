@@ -182,6 +182,9 @@ void check_dies_outside_bodies(const Scene& scene) {
 Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) {
   // The bodies are solved as one mesh of disjoint parts, each element with its body's law.
   std::array<bool, 2> symmetric_about = {false, false}; // symmetry planes normal to x, y
+  // A chain's part keeps the volume the chain started with (less what a
+  // trim cut off): what the operations before lost, compensation restores.
+  const double kept_share = carried ? carried->volume.initial / mesh::volume(carried->mesh) : 1.0;
   for (std::size_t b = 0; b < c.bodies.size(); ++b) {
     const BodySpec& spec = c.bodies[b];
     MaterialCard card = read_material(spec.material_file);
@@ -231,18 +234,12 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
       else
         model_side.max()[axis] = plane;
     }
-    // A chain's part keeps the volume the chain started with (less what a
-    // trim cut off): what the operations before lost, compensation restores.
-    body.initial_volume = mesh::volume(part);
-    if (carried) body.initial_volume *= carried->volume.initial / mesh::volume(carried->mesh);
+    body.initial_volume = mesh::volume(part) * kept_share;
     body.remesh_size = c.remeshing.element_size > 0.0 ? c.remeshing.element_size : mean_boundary_edge(part);
     if (c.remeshing.enabled && c.remeshing.element_size > 0.0) {
       // Fewer than three elements across would remesh the body into a few
       // tetrahedra and lose its shape.
-      Eigen::Vector3d low = part.nodes.front(), high = low;
-      for (const mesh::Point& x : part.nodes)
-        low = low.cwiseMin(x), high = high.cwiseMax(x);
-      const double thinnest = (high - low).minCoeff();
+      const double thinnest = mesh::bounding_box(part).sizes().minCoeff();
       if (c.remeshing.element_size > thinnest / 3.0) {
         char text[300];
         std::snprintf(text, sizeof text,
@@ -287,10 +284,7 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
   compensate_volume = std::find(effects.begin(), effects.end(), "volume_compensation") != effects.end();
 
   // Scales from the initial mesh, so that a resumed run uses the very same numbers.
-  mesh::Point low = initial_mesh.nodes.front(), high = low;
-  for (const auto& x : initial_mesh.nodes)
-    low = low.cwiseMin(x), high = high.cwiseMax(x);
-  body_size = (high - low).norm();
+  body_size = mesh::bounding_box(initial_mesh).diagonal().norm();
   reference_length = mean_boundary_edge(initial_mesh);
   {
     Timers::Scope scope(timers, "effect rigid_dies (setup)");

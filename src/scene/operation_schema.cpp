@@ -37,13 +37,8 @@ std::vector<KeySpec> operation_keys() {
                 "°C"),
             kAbsoluteZero, kHottest, true),
   };
-  for (const char* section :
-       {"dies", "boundary", "contact", "contact_pairs", "time", "remeshing", "output", "thermal", "solver"})
-    keys.push_back(alias(key(std::string("operations[].") + section,
-                             std::string(section) == "dies" || std::string(section) == "boundary" ||
-                                     std::string(section) == "contact_pairs"
-                                 ? T::list
-                                 : T::map,
+  for (const auto& [section, type] : kOperationSections)
+    keys.push_back(alias(key(std::string("operations[].") + section, type,
                              std::string("the operation's own '") + section + "' (see it above)"),
                          section));
   return keys;

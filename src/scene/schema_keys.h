@@ -57,6 +57,17 @@ inline KeySpec alias(KeySpec k, std::string of) {
   return k;
 }
 
+/// The top-level sections an operation of a chain may give its own (a list
+/// replaces the top level's, a map stands over it key by key).
+struct OperationSection {
+  const char* name;
+  KeyType type;
+};
+inline constexpr OperationSection kOperationSections[] = {
+    {"dies", KeyType::list},          {"boundary", KeyType::list}, {"contact", KeyType::map},
+    {"contact_pairs", KeyType::list}, {"time", KeyType::map},      {"remeshing", KeyType::map},
+    {"output", KeyType::map},         {"thermal", KeyType::map},   {"solver", KeyType::map}};
+
 /// The keys of a chain of operations (`operations`, operation_schema.cpp).
 std::vector<KeySpec> operation_keys();
 

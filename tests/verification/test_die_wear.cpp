@@ -18,21 +18,25 @@ constexpr double kPressure = 10.0, kSpeed = 10.0, kTime = 0.5;   // MPa, mm/s, s
 constexpr double kCoefficient = 1e-3, kHardness = 50.0;          // K, HRC (a = b = 1, c = 2)
 constexpr double kLength = 20.0, kWidth = 10.0, kElement = 1.25; // mm
 
-std::string sliding_block_case() {
-  const auto folder = std::filesystem::temp_directory_path();
-  // A Newtonian block 1e4 times stiffer than the reference fluid: under
-  // 10 MPa it creeps at 3e-4 1/s, so it slides as a rigid block.
-  std::ofstream(folder / "anvil_stiff_block.yaml")
+/// The block's entry of `bodies` (its card written beside the case files):
+/// a Newtonian block 1e4 times stiffer than the reference fluid, which under
+/// 10 MPa creeps at 3e-4 1/s, so it slides as a rigid block.
+std::string block_body() {
+  std::ofstream(std::filesystem::temp_directory_path() / "anvil_stiff_block.yaml")
       << "format: 1\nname: stiff Newtonian block\nlaw: newtonian\nviscosity: 1.0e4\n"
          "sources:\n  viscosity: \"test value: 10 MPa hardly squeezes the block\"\n";
-  const std::string path = (folder / "anvil_die_wear_case.yaml").string();
+  return "  - name: block\n"
+         "    material: anvil_stiff_block.yaml\n"
+         "    mesh: {generate: box, size: [20, 10, 5], element_size: " +
+         std::to_string(kElement) + "}\n";
+}
+
+std::string sliding_block_case() {
+  const std::string path = (std::filesystem::temp_directory_path() / "anvil_die_wear_case.yaml").string();
   std::ofstream(path) << "anvil: 1\n"
                          "title: a block sliding on a worn plate\n"
                          "bodies:\n"
-                         "  - name: block\n"
-                         "    material: anvil_stiff_block.yaml\n"
-                         "    mesh: {generate: box, size: [20, 10, 5], element_size: "
-                      << kElement << "}\n"
+                      << block_body()
                       << "boundary:\n"
                          "  - {name: push, type: pressure, tag: 6, pressure: "
                       << kPressure << "}\n"
@@ -108,7 +112,6 @@ TEST_CASE("a block sliding on a meshed elastic plate wears its nodes by the Arch
   // as a flat punch on an elastic layer, its pressure rising towards its
   // edges (measured on steel: 6 % low one element in from the sides).
   const auto folder = std::filesystem::temp_directory_path();
-  sliding_block_case(); // writes the block's card
   std::ofstream(folder / "anvil_stiff_plate.yaml")
       << "format: 1\nname: a plate a thousand times stiffer than steel\nlaw: linear_elastic\n"
          "young_modulus: 2.1e8\npoisson_ratio: 0.3\n"
@@ -117,10 +120,7 @@ TEST_CASE("a block sliding on a meshed elastic plate wears its nodes by the Arch
   std::ofstream(path) << "anvil: 1\n"
                          "title: a block sliding on a worn elastic plate\n"
                          "bodies:\n"
-                         "  - name: block\n"
-                         "    material: anvil_stiff_block.yaml\n"
-                         "    mesh: {generate: box, size: [20, 10, 5], element_size: "
-                      << kElement << "}\n"
+                      << block_body()
                       << "  - name: plate\n"
                          "    material: anvil_stiff_plate.yaml\n"
                          "    mesh: {generate: box, origin: [-5, -5, -4], size: [40, 20, 4], element_size: "

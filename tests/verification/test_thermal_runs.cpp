@@ -32,6 +32,14 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
+/// <tmp>/`name`, holding the fluid's card as fluid.yaml beside the case a test writes.
+std::filesystem::path fluid_folder(const std::string& name) {
+  const auto folder = std::filesystem::temp_directory_path() / name;
+  std::filesystem::create_directories(folder);
+  write_text(folder / "fluid.yaml", kSteelLikeFluid);
+  return folder;
+}
+
 /// The heat budget's lines, for a failing check's message.
 std::string budget_text(const scene::HeatBudget& h) {
   return "plastic " + std::to_string(h.plastic) + " mJ, friction " + std::to_string(h.friction) + ", to dies " +
@@ -51,9 +59,7 @@ TEST_CASE("adiabatic homogeneous compression heats the body by beta times the pl
   //   T_N = T₀ + β/(ρc) Σ_n 3η (V/h_n)² Δt     exactly (the explicit update),
   // and β/(ρc) 3ηV (1/h_N − 1/H) in the limit Δt → 0.
   log::set_quiet(true);
-  const auto folder = std::filesystem::temp_directory_path() / "anvil_adiabatic_input";
-  std::filesystem::create_directories(folder);
-  write_text(folder / "fluid.yaml", kSteelLikeFluid);
+  const auto folder = fluid_folder("anvil_adiabatic_input");
   write_text(folder / "case.yaml", R"(anvil: 1
 bodies:
   - name: cube
@@ -173,9 +179,7 @@ TEST_CASE("a small part cooling in air follows the lumped exact curve (heat alon
   // number h (V/A) / k = 5.6e-4 the cube's mean temperature cools as one lump:
   //   T(t) = T_air + (T₀ − T_air) exp(−t/τ),  τ = ρ c V / (h A) = 780 s.
   log::set_quiet(true);
-  const auto folder = std::filesystem::temp_directory_path() / "anvil_lumped_input";
-  std::filesystem::create_directories(folder);
-  write_text(folder / "fluid.yaml", kSteelLikeFluid);
+  const auto folder = fluid_folder("anvil_lumped_input");
   write_text(folder / "case.yaml", R"(anvil: 1
 bodies:
   - name: cube

@@ -61,6 +61,9 @@ struct MeshRange {
   bool has_node(int node) const { return node >= first_node && node < first_node + node_count; }
 };
 
+/// The smallest box holding every node of `mesh` (mm).
+Eigen::AlignedBox3d bounding_box(const TetMesh& mesh);
+
 /// The range of a mesh that is one body: all of it.
 MeshRange whole_range(const TetMesh& mesh);
 

@@ -1,6 +1,7 @@
 // Where a chain puts the part before an operation (scene::Placement):
 // flipped, turned about the press axis, moved, rested on the lowest die.
 #pragma once
+#include "anvil/die/DieSurface.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Chain.h"
 #include "anvil/scene/RunState.h"
@@ -26,9 +27,10 @@ std::vector<SymmetryPlane> symmetry_planes(const scene::Case& c, const mesh::Tet
 void place_part(const scene::Placement& place, const scene::Case& next, scene::RunState& part,
                 const std::string& where);
 
-/// mm the part must move along z to rest on `die` at its start: the
-/// smallest height of a boundary node above the die's upward facets below
-/// it (negative: the part sinks into the die by that much).
-double height_above_die(const scene::RunState& part, const scene::DieSpec& die);
+/// mm the part must move along z to rest on a die's surface `die`: the
+/// smallest height of a boundary node above its upward facets below it
+/// (negative: the part sinks into the die by that much; infinite: no facet
+/// lies under the part).
+double height_above_die(const scene::RunState& part, const die::SurfaceTriangles& die);
 
 } // namespace anvil::run
