@@ -151,11 +151,11 @@ void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
     // The quadrature points of the facets of `from`, grouped by the facet
     // of the other body they fall on, so that add() sums their friction
     // blocks once per pair of facets.
-    auto project_facets = [&](const mesh::MeshRange& from, const ContactSurface& onto, bool on_slave) {
+    auto project_facets = [&](const mesh::MeshRange& from, const ContactSurface& target, bool on_slave) {
       for (int f = from.first_face; f < from.first_face + from.face_count; ++f) {
         if (boundary.on_symmetry_plane(f)) continue;
         const double facet_area = mesh::area_vector(mesh, mesh.boundary_faces[f]).norm();
-        onto.facet_points(f, pair.method, search_distance, facet_points);
+        target.facet_points(f, pair.method, search_distance, facet_points);
         for (const FacetPoint& g : facet_points) {
           const double area = g.area_fraction * facet_area;
           points_.push_back(point(mesh.boundary_faces[f], g.barycentric, g.hit, area, share * area, on_slave));

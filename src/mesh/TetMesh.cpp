@@ -43,37 +43,38 @@ void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged, const st
   }
 }
 
-void validate(const TetMesh& mesh, const std::string& source) {
+std::string fault(const TetMesh& mesh) {
   const int n = mesh.node_count();
-  if (mesh.tets.empty()) throw InputError(source + ": the mesh has no tetrahedra");
+  if (mesh.tets.empty()) return "the mesh has no tetrahedra";
   std::vector<char> used(static_cast<std::size_t>(n), 0);
   for (int e = 0; e < mesh.tet_count(); ++e) {
     const Tet& t = mesh.tets[e];
     for (int v : t) {
       if (v < 0 || v >= n)
-        throw InputError(source + ": tetrahedron " + std::to_string(e + 1) + " refers to node " +
-                         std::to_string(v + 1) + ", but the mesh has " + std::to_string(n) + " nodes");
+        return "tetrahedron " + std::to_string(e + 1) + " refers to node " + std::to_string(v + 1) +
+               ", but the mesh has " + std::to_string(n) + " nodes";
       used[v] = 1;
     }
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b)
-        if (t[a] == t[b])
-          throw InputError(source + ": tetrahedron " + std::to_string(e + 1) + " repeats node " +
-                           std::to_string(t[a] + 1));
+        if (t[a] == t[b]) return "tetrahedron " + std::to_string(e + 1) + " repeats node " + std::to_string(t[a] + 1);
     const double q = quality(mesh, e);
     if (!std::isfinite(q) || q <= 0.0)
-      throw InputError(
-          source + ": tetrahedron " + std::to_string(e + 1) +
-          (q < 0.0 ? " is inverted (negative volume: det[x1-x0,x2-x0,x3-x0] < 0)" : " is degenerate (zero volume)"));
+      return "tetrahedron " + std::to_string(e + 1) +
+             (q < 0.0 ? " is inverted (negative volume: det[x1-x0,x2-x0,x3-x0] < 0)" : " is degenerate (zero volume)");
     if (q < 1e-8)
-      throw InputError(source + ": tetrahedron " + std::to_string(e + 1) + " is degenerate (quality " +
-                       std::to_string(q) + ", volume " + std::to_string(signed_volume(mesh, e)) + " mm3)");
+      return "tetrahedron " + std::to_string(e + 1) + " is degenerate (quality " + std::to_string(q) + ", volume " +
+             std::to_string(signed_volume(mesh, e)) + " mm3)";
   }
   for (int i = 0; i < n; ++i) {
-    if (!used[i]) throw InputError(source + ": node " + std::to_string(i + 1) + " is not used by any tetrahedron");
-    if (!mesh.nodes[i].allFinite())
-      throw InputError(source + ": node " + std::to_string(i + 1) + " has a non-finite coordinate");
+    if (!used[i]) return "node " + std::to_string(i + 1) + " is not used by any tetrahedron";
+    if (!mesh.nodes[i].allFinite()) return "node " + std::to_string(i + 1) + " has a non-finite coordinate";
   }
+  return {};
+}
+
+void validate(const TetMesh& mesh, const std::string& source) {
+  if (const std::string why = fault(mesh); !why.empty()) throw InputError(source + ": " + why);
 }
 
 double volume(const TetMesh& mesh) {

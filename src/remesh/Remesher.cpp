@@ -1,5 +1,6 @@
 #include "anvil/remesh/Remesher.h"
 
+#include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
 #include "anvil/io/Checkpoint.h"
@@ -37,6 +38,7 @@ struct Remeshed {
   PutBack put_back;
   double volume_put_back = 0.0; ///< mm³, of `mesh` after the put-back, before keep_material
   double given_back = 0.0;      ///< mm, keep_material's move of the free surface
+  std::string failed;           ///< why CGAL's mesh could not be made or used; empty when it was
 };
 
 /// A remesh may not change the body's volume by more than this before the
@@ -119,9 +121,14 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
       settings.size = [&size_field, s = coarsen * scale](const mesh::Point& x) { return size_field(x, s); };
     }
     Remeshed t;
-    t.remeshed = remesh_body(part, settings);
-    t.mesh = t.remeshed;
     t.edge_length = settings.edge_length;
+    try {
+      t.remeshed = remesh_body(part, settings);
+    } catch (const RunError& error) {
+      t.failed = error.what();
+      return t;
+    }
+    t.mesh = t.remeshed;
     t.put_back = put_onto_dies(t.mesh, part, touching_die, scene, b, state.dies, settings.edge_length, spec.quality);
     t.volume_put_back = mesh::volume(t.mesh);
     t.given_back = keep_material(t.mesh, scene, b, state.dies, material, settings.edge_length);
@@ -131,6 +138,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   const double volume = mesh::volume(part), floor = kQualityFloorShare * spec.quality;
   // Why try `t` cannot replace the body's mesh; empty when it can.
   auto fault = [&](const Remeshed& t) {
+    if (!t.failed.empty()) return t.failed;
     char text[200] = "";
     const double change = mesh::volume(t.remeshed) / volume - 1.0;
     if (std::abs(change) > kMostVolumeChange)
@@ -235,7 +243,13 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, cons
   settings.edge_length = body.remesh_size;
   settings.feature_angle = spec.feature_angle;
   settings.iterations = spec.iterations;
-  RegionRemesh local = remesh_region(part, region, settings);
+  RegionRemesh local;
+  try {
+    local = remesh_region(part, region, settings);
+  } catch (const RunError& error) {
+    why_not = error.what();
+    return std::nullopt;
+  }
   for (int e = local.kept_tets; e < local.mesh.tet_count(); ++e)
     out.worst = std::min(out.worst, mesh::quality(local.mesh, e));
   if (out.worst < spec.quality) {

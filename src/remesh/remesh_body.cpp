@@ -251,7 +251,7 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
       out.nodes[v] -= (normal.dot(out.nodes[v]) - offset) * normal;
   }
   mesh::restore_volume(out, mesh::volume(body), inside_curved_patches(out, curved_tags(body, patch, tag_of_patch)));
-  mesh::validate(out, "remeshed body");
+  if (const std::string why = mesh::fault(out); !why.empty()) throw RunError("remeshed body: " + why);
   return out;
 }
 
@@ -314,7 +314,7 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
   for (const mesh::Triangle& f : body.boundary_faces)
     tagged.push_back({number.at(handles[f[0] + 1]), number.at(handles[f[1] + 1]), number.at(handles[f[2] + 1])});
   mesh::build_boundary(out.mesh, tagged, body.boundary_tags);
-  mesh::validate(out.mesh, "locally remeshed body");
+  if (const std::string why = mesh::fault(out.mesh); !why.empty()) throw RunError("locally remeshed body: " + why);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include "anvil/io/JsonWriter.h"
 #include "anvil/io/RunWriter.h"
 #include "anvil/io/atomic_file.h"
+#include "anvil/mesh/level_set_cut.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/Remesher.h"
 #include "anvil/scene/Die.h"
@@ -23,6 +24,13 @@
 
 namespace anvil::run {
 namespace {
+
+/// An edge the cut crosses within this share of its length from one end
+/// has that end put onto the cut: a split so near a node leaves a sliver.
+constexpr double kSnapShare = 0.3;
+/// The quality that move may take an element around the node down to, at
+/// worst half of this (or of what it had, when less).
+constexpr double kSnapFloor = 0.2;
 
 /// The nearest point to `x` on segment [a, b] (in a plane).
 Eigen::Vector2d nearest_on_segment(const Eigen::Vector2d& x, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -118,106 +126,106 @@ Cut make_cut(const scene::TrimSpec& spec, const std::string& where, double size)
 
 scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<const SymmetryPlane> planes) {
   const mesh::TetMesh& m = part.mesh;
-  std::vector<mesh::Point> x = m.nodes;
-  std::vector<double> phi(x.size());
+  mesh::TetMesh moved = m;
+  std::vector<double> phi(m.nodes.size());
   const double on_cut = 1e-9 * mesh::bounding_box(m).diagonal().norm(); // mm: a node this near is on it
-  for (std::size_t n = 0; n < x.size(); ++n) {
-    phi[n] = cut.distance(x[n]);
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
+    phi[n] = cut.distance(m.nodes[n]);
     if (std::abs(phi[n]) < on_cut) phi[n] = 0.0;
   }
-  // Each edge across the cut: its nearer end onto the cut (φ is 1-Lipschitz:
-  // a node moves by at most half the edge). No edge crosses afterwards.
-  std::vector<char> snap(x.size(), 0);
+  // An edge the cut crosses near one end would leave a sliver: that end is
+  // put onto the cut instead, unless the move spoils an element around it
+  // (φ is 1-Lipschitz: it moves by at most kSnapShare of the edge).
+  std::vector<char> snap(m.nodes.size(), 0);
   for (const mesh::Tet& t : m.tets)
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) {
         const int a = t[i], b = t[j];
-        if ((phi[a] < 0.0 && phi[b] > 0.0) || (phi[a] > 0.0 && phi[b] < 0.0))
-          snap[std::abs(phi[a]) <= std::abs(phi[b]) ? a : b] = 1;
+        if (phi[a] * phi[b] >= 0.0) continue;
+        const double share = std::abs(phi[a]) / (std::abs(phi[a]) + std::abs(phi[b]));
+        if (share < kSnapShare) snap[a] = 1;
+        if (share > 1.0 - kSnapShare) snap[b] = 1;
       }
-  for (std::size_t n = 0; n < x.size(); ++n) {
+  // The move is judged on the elements around the node that keep a part
+  // (a node inside the cut, or all on it): it may not leave one below half
+  // the lower of kSnapFloor and the worst of them before (a split this near
+  // the node would leave far worse).
+  const std::vector<std::vector<int>> around = mesh::tets_around_nodes(m);
+  const auto worst_kept = [&](std::size_t node) {
+    double worst = 1.0;
+    for (int e : around[node]) {
+      const mesh::Tet& t = m.tets[e];
+      const bool kept = std::any_of(t.begin(), t.end(), [&](int v) { return phi[v] < 0.0; }) ||
+                        std::none_of(t.begin(), t.end(), [&](int v) { return phi[v] > 0.0; });
+      if (kept) worst = std::min(worst, mesh::quality(moved, e));
+    }
+    return worst;
+  };
+  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
     if (!snap[n]) continue;
     // Onto the cut, and back onto the symmetry planes the node is on: the
     // alternating projections meet where the cut crosses them.
     std::vector<const SymmetryPlane*> on;
     for (const SymmetryPlane& p : planes)
-      if (std::abs(x[n][p.axis] - p.at) < on_cut) on.push_back(&p);
+      if (std::abs(m.nodes[n][p.axis] - p.at) < on_cut) on.push_back(&p);
+    mesh::Point to = m.nodes[n];
     for (int pass = 0; pass < (on.empty() ? 1 : 50); ++pass) {
-      x[n] = cut.nearest(x[n]);
+      to = cut.nearest(to);
       for (const SymmetryPlane* p : on)
-        x[n][p->axis] = p->at;
+        to[p->axis] = p->at;
     }
-    phi[n] = 0.0;
+    const double floor = 0.5 * std::min(kSnapFloor, worst_kept(n));
+    const mesh::Point was = moved.nodes[n];
+    moved.nodes[n] = to;
+    if (worst_kept(n) >= floor)
+      phi[n] = 0.0;
+    else
+      moved.nodes[n] = was;
   }
-  std::vector<char> keep_tet(m.tets.size(), 0);
-  for (std::size_t e = 0; e < m.tets.size(); ++e) {
-    const mesh::Tet& t = m.tets[e];
-    double sum = 0.0;
-    for (int v : t)
-      sum += phi[v];
-    if (sum == 0.0) // all four on the cut: the side its centre is on
-      sum = cut.distance(0.25 * (x[t[0]] + x[t[1]] + x[t[2]] + x[t[3]]));
-    keep_tet[e] = sum < 0.0;
-  }
+  // Each body cut on its own; its fields follow the pieces (an element's
+  // values to its pieces, a node's interpolated along the edge it lies on).
   scene::RunState out;
-  std::vector<int> number(x.size(), -1); // each kept node's index in out.mesh
+  std::vector<std::vector<int>> parents(part.bodies.size());
+  std::vector<std::vector<mesh::NodeOrigin>> origins(part.bodies.size());
   for (std::size_t b = 0; b < part.bodies.size(); ++b) {
     const mesh::MeshRange& r = part.bodies[b];
-    const int base = out.mesh.node_count();
-    mesh::TetMesh piece;
-    for (int e = r.first_tet; e < r.first_tet + r.tet_count; ++e) {
-      if (!keep_tet[e]) continue;
-      mesh::Tet t = m.tets[e];
-      for (int& v : t) {
-        if (number[v] < 0) {
-          number[v] = base + piece.node_count();
-          piece.nodes.push_back(x[v]);
-        }
-        v = number[v] - base;
-      }
-      piece.tets.push_back(t);
-    }
-    if (piece.tets.empty()) throw InputError("the trim cut removes the whole of body " + std::to_string(b + 1));
-    std::vector<mesh::Triangle> faces; // the boundary faces that stay, with their tags
-    std::vector<int> tags;
-    for (int f = r.first_face; f < r.first_face + r.face_count; ++f) {
-      mesh::Triangle face = m.boundary_faces[f];
-      bool stays = true;
-      for (int& v : face)
-        stays = stays && number[v] >= 0, v = stays ? number[v] - base : v;
-      if (stays) faces.push_back(face), tags.push_back(m.boundary_tags[f]);
-    }
-    mesh::build_boundary(piece, faces, tags);
-    out.bodies.push_back(mesh::append(out.mesh, piece));
+    mesh::LevelSetCut piece = mesh::cut_by_level_set(
+        mesh::extract(moved, r), std::span<const double>(phi).subspan(r.first_node, r.node_count), cut.distance);
+    if (piece.mesh.tets.empty()) throw InputError("the trim cut removes the whole of body " + std::to_string(b + 1));
+    out.bodies.push_back(mesh::append(out.mesh, piece.mesh));
+    parents[b] = std::move(piece.parent);
+    origins[b] = std::move(piece.origin);
   }
-  // Fields: the kept elements' and nodes', in their new order.
-  const auto keep_elements = [&](const std::vector<double>& values, int per) {
+  const auto element_field = [&](const std::vector<double>& values, int per) {
     std::vector<double> kept;
-    for (std::size_t e = 0; e < m.tets.size(); ++e)
-      if (keep_tet[e]) kept.insert(kept.end(), values.begin() + per * e, values.begin() + per * (e + 1));
+    for (std::size_t b = 0; b < part.bodies.size(); ++b)
+      for (int e : parents[b]) {
+        const auto first = values.begin() + per * (part.bodies[b].first_tet + e);
+        kept.insert(kept.end(), first, first + per);
+      }
     return kept;
   };
-  const auto keep_nodes = [&](const std::vector<double>& values, int per) {
-    std::vector<double> kept(per * out.mesh.nodes.size());
-    for (std::size_t n = 0; n < x.size(); ++n)
-      if (number[n] >= 0) std::copy_n(values.begin() + per * n, per, kept.begin() + per * number[n]);
+  const auto body_nodal = [&](std::size_t b, const double* values, int per, std::vector<double>& to) {
+    for (const mesh::NodeOrigin& o : origins[b])
+      for (int k = 0; k < per; ++k)
+        to.push_back((1.0 - o.t) * values[per * o.a + k] + o.t * values[per * o.b + k]);
+  };
+  const auto nodal_field = [&](const std::vector<double>& values, int per) {
+    std::vector<double> kept;
+    for (std::size_t b = 0; b < part.bodies.size(); ++b)
+      body_nodal(b, values.data() + per * part.bodies[b].first_node, per, kept);
     return kept;
   };
-  out.equivalent_strain = keep_elements(part.equivalent_strain, 1);
+  out.equivalent_strain = element_field(part.equivalent_strain, 1);
   for (const std::vector<double>& d : part.damage)
-    out.damage.push_back(keep_elements(d, 1));
-  if (!part.elastic_stress.empty()) out.elastic_stress = keep_elements(part.elastic_stress, 6);
-  if (!part.temperature.empty()) out.temperature = keep_nodes(part.temperature, 1);
-  if (!part.material_position.empty()) out.material_position = keep_nodes(part.material_position, 3);
+    out.damage.push_back(element_field(d, 1));
+  if (!part.elastic_stress.empty()) out.elastic_stress = element_field(part.elastic_stress, 6);
+  if (!part.temperature.empty()) out.temperature = nodal_field(part.temperature, 1);
+  if (!part.material_position.empty()) out.material_position = nodal_field(part.material_position, 3);
   out.unknowns = {Eigen::VectorXd::Zero(4 * out.mesh.node_count()), Eigen::VectorXd::Zero(3 * out.mesh.tet_count())};
   out.body_wear.resize(part.body_wear.size());
   for (std::size_t b = 0; b < part.body_wear.size(); ++b)
-    if (!part.body_wear[b].empty()) {
-      out.body_wear[b].assign(out.bodies[b].node_count, 0.0);
-      for (int n = 0; n < part.bodies[b].node_count; ++n)
-        if (const int to = number[part.bodies[b].first_node + n]; to >= 0)
-          out.body_wear[b][to - out.bodies[b].first_node] = part.body_wear[b][n];
-    }
+    if (!part.body_wear[b].empty()) body_nodal(b, part.body_wear[b].data(), 1, out.body_wear[b]);
   return out;
 }
 

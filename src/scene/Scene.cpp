@@ -310,6 +310,8 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
   }
   heat_only = c.time.enabled && !(reference_velocity > 0.0);
   if (heat_only) {
+    effects = heat_alone_effects(effects);
+    compensate_volume = false;
     if (!thermal)
       throw InputError(c.path + ": nothing moves at t = 0 (no moving die, no prescribed velocity): the time loop "
                                 "needs a motion, or a 'thermal' section to solve heat alone (cooling, dwell)");

@@ -30,9 +30,11 @@ public:
   const YAML::Node& root() const { return root_; }
   /// The same file read through another root: an operation's document,
   /// built of this file's nodes (checked already).
-  CheckedYaml with_root(YAML::Node root) const {
+  CheckedYaml with_root(const YAML::Node& root) const {
     CheckedYaml copy = *this;
-    copy.root_ = std::move(root);
+    // reset, not assignment: a YAML::Node copy shares this root's node, and
+    // assigning to it would make this file's root the operation's document.
+    copy.root_.reset(root);
     return copy;
   }
   const std::string& path() const { return path_; }

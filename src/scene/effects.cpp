@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace anvil::scene {
 
@@ -122,6 +123,17 @@ std::vector<std::string> resolve_effects(const Case& c, const std::vector<const 
   for (const Effect& e : effect_registry())
     if (std::find(active.begin(), active.end(), e.name) != active.end()) ordered.push_back(e.name);
   return ordered;
+}
+
+std::vector<std::string> heat_alone_effects(const std::vector<std::string>& effects) {
+  static const std::vector<std::string> exercised = {
+      "symmetry_planes",   "time_stepping",         "rigid_dies", "heat", "air_cooling",
+      "die_heat_transfer", "contact_heat_transfer", "flow_lines"};
+  std::vector<std::string> kept;
+  std::copy_if(effects.begin(), effects.end(), std::back_inserter(kept), [](const std::string& e) {
+    return std::find(exercised.begin(), exercised.end(), e) != exercised.end();
+  });
+  return kept;
 }
 
 } // namespace anvil::scene

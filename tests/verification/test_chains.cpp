@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <regex>
 
 using namespace anvil;
@@ -71,6 +72,25 @@ std::string upsettings(int count, double stroke) {
 
 } // namespace
 
+TEST_CASE("an operation's own sections stand over the top level's for it alone", "[verification]") {
+  // The first operation remeshes and allows 60 Newton iterations; the
+  // second says neither, so it takes the top level's (no remeshing, the
+  // default budget), whatever the one before asked.
+  const std::string text = billet("dies:\n" + dies(8.0) +
+                                  "operations:\n"
+                                  "  - {name: first, remeshing: {quality: 0.2}, solver: {max_iterations: 60}, "
+                                  "time: {stop: {stroke: 1}}}\n"
+                                  "  - {name: second, time: {stop: {stroke: 1}}}\n");
+  const scene::Chain chain = scene::read_chain(write_case("anvil_chain_sections", text));
+  REQUIRE(chain.operations.size() == 2);
+  CHECK(chain.operations[0].input.remeshing.enabled);
+  CHECK(chain.operations[0].input.newton.max_iterations == 60);
+  CHECK_FALSE(chain.operations[1].input.remeshing.enabled);
+  const scene::Case plain =
+      scene::read_case(write_case("anvil_chain_plain", billet("dies:\n" + dies(8.0))), {"time.stop.stroke=1"});
+  CHECK(chain.operations[1].input.newton.max_iterations == plain.newton.max_iterations);
+}
+
 TEST_CASE("a chain of two upsettings gives the loads of one upsetting of the same total stroke", "[verification]") {
   log::set_quiet(true);
   const std::string chain = write_case("anvil_chain_two", billet(upsettings(2, 2.0)));
@@ -101,33 +121,79 @@ TEST_CASE("a chain of two upsettings gives the loads of one upsetting of the sam
   CHECK(io::read_summary_number(out, "time_s") == Approx(0.4).epsilon(1e-12));
 }
 
-TEST_CASE("a trim by a line removes the volume of its cut", "[verification]") {
-  // A 10 x 10 x 4 mm block cut by the plane x = 7.3 (a square trim line):
-  // every node of an edge across it is put onto it, so the part kept is
-  // exactly the block's x <= 7.3 (292 mm3), whatever the mesh.
+/// The trim of a 10 x 10 x 4 mm block (x, y in [0, 10]) by `cut` (the
+/// trim's YAML), run as a chain of that one operation; its folder.
+std::string trimmed_block(const std::string& name, const std::string& cut) {
   log::set_quiet(true);
-  const std::string path = write_case("anvil_chain_trim", "anvil: 1\n"
-                                                          "bodies:\n"
-                                                          "  - name: block\n"
-                                                          "    material: " +
-                                                              source_path("materials/steel_c45_1100C.yaml") +
-                                                              "\n"
-                                                              "    mesh: {generate: box, size: [10, 10, 4], "
-                                                              "element_size: 1.0}\n"
-                                                              "output: {picture: false}\n"
-                                                              "operations:\n"
-                                                              "  - name: cut\n"
-                                                              "    type: trim\n"
-                                                              "    trim: {line: [-1, -1, 7.3, -1, 7.3, 11, -1, 11]}\n");
-  const std::string out = run_chain(path, "anvil_chain_trim");
-  const RunOutputs trim{out + "/01-cut"};
-  CHECK(trim.summary_number("removed_volume_model_mm3") == Approx(108.0).epsilon(1e-9));
-  CHECK(trim.summary_number("volume_mm3") == Approx(292.0).epsilon(1e-9));
+  const std::string path = write_case(name, "anvil: 1\n"
+                                            "bodies:\n"
+                                            "  - name: block\n"
+                                            "    material: " +
+                                                source_path("materials/steel_c45_1100C.yaml") +
+                                                "\n"
+                                                "    mesh: {generate: box, size: [10, 10, 4], element_size: 1.0}\n"
+                                                "output: {picture: false}\n"
+                                                "operations:\n"
+                                                "  - name: cut\n"
+                                                "    type: trim\n"
+                                                "    trim: " +
+                                                cut + "\n");
+  return run_chain(path, name) + "/01-cut";
+}
+
+/// A closed STL box [lo, hi] with outward normals.
+std::string stl_box(const std::string& name, const mesh::Point& lo, const mesh::Point& hi) {
+  const std::string path = (std::filesystem::temp_directory_path() / (name + ".stl")).string();
+  std::ofstream stl(path);
+  stl << "solid box\n";
+  auto corner = [&](int k) {
+    return mesh::Point(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  };
+  // Each side as two triangles, counter-clockwise seen from outside.
+  const int sides[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& q : sides)
+    for (const auto& tri : {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}}) {
+      const mesh::Point a = corner(tri[0]), b = corner(tri[1]), c = corner(tri[2]);
+      const mesh::Point n = (b - a).cross(c - a).normalized();
+      stl << "facet normal " << n.transpose() << "\n outer loop\n";
+      for (const mesh::Point& x : {a, b, c})
+        stl << "  vertex " << x.transpose() << "\n";
+      stl << " endloop\nendfacet\n";
+    }
+  stl << "endsolid box\n";
+  return path;
+}
+
+/// Checks the kept part of a trimmed block: its volume, no node where
+/// `outside` says, no inverted element.
+void check_trim(const std::string& folder, double kept, const std::function<bool(const mesh::Point&)>& outside) {
+  const RunOutputs trim{folder};
+  CHECK(trim.summary_number("removed_volume_model_mm3") == Approx(400.0 - kept).epsilon(1e-9));
+  CHECK(trim.summary_number("volume_mm3") == Approx(kept).epsilon(1e-9));
   const scene::RunState state = trim.final_state();
   for (const mesh::Point& x : state.mesh.nodes)
-    CHECK(x.x() <= 7.3 + 1e-12);
+    CHECK_FALSE(outside(x));
   for (int e = 0; e < state.mesh.tet_count(); ++e)
     CHECK(mesh::quality(state.mesh, e) > 0.0);
+}
+
+TEST_CASE("a trim removes the volume of its cut", "[verification]") {
+  // The elements the cut crosses are split along it, so the part kept is
+  // exactly the block's side of a plane cut, whatever the mesh (to 1e-9,
+  // rounding of the summed element volumes).
+  SECTION("a line along the mesh: the plane x = 7.3 (292 mm3 kept)") {
+    check_trim(trimmed_block("anvil_chain_trim", "{line: [-1, -1, 7.3, -1, 7.3, 11, -1, 11]}"), 292.0,
+               [](const mesh::Point& x) { return x.x() > 7.3 + 1e-12; });
+  }
+  SECTION("a line across the mesh: the plane x + y = 12 (a corner of 8 x 8 / 2 x 4 = 128 mm3 removed)") {
+    check_trim(trimmed_block("anvil_chain_trim_oblique", "{line: [-1, -1, 13, -1, -1, 13]}"), 272.0,
+               [](const mesh::Point& x) { return x.x() + x.y() > 12.0 + 1e-9; });
+  }
+  SECTION("a closed STL: the box x <= 7.3 (292 mm3 kept)") {
+    const std::string stl = stl_box("anvil_chain_trim_box", {-1, -1, -1}, {7.3, 11, 5});
+    check_trim(trimmed_block("anvil_chain_trim_stl", "{stl: " + stl + "}"), 292.0,
+               [](const mesh::Point& x) { return x.x() > 7.3 + 1e-12; });
+  }
 }
 
 TEST_CASE("a chain stopped in its third operation resumes there and ends as the uninterrupted one", "[verification]") {

@@ -39,9 +39,13 @@ inline Point area_vector(const TetMesh& mesh, const Triangle& face) {
 /// Triangles of `tagged` that are not on the boundary (internal surfaces) are ignored.
 void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged = {}, const std::vector<int>& tags = {});
 
-/// Throws InputError naming `source` and the first offending element or node
+/// What is wrong with `mesh`, naming the first offending element or node
 /// (1-based numbers, as in mesh files): indices out of range, repeated
-/// vertices, inverted or degenerate tets, unreferenced nodes, no tets.
+/// vertices, inverted or degenerate tets, unreferenced nodes, no tets;
+/// empty when nothing is.
+std::string fault(const TetMesh& mesh);
+
+/// Throws InputError "`source`: fault(mesh)" when the mesh has a fault.
 void validate(const TetMesh& mesh, const std::string& source);
 
 /// Sum of tet volumes (mm³).

@@ -36,7 +36,8 @@ struct RemeshSettings {
 /// Boundary patches: faces of one tag, joined across edges where the normals
 /// turn by less than `feature_angle`; patch borders are protected features.
 /// Each new boundary face carries the tag of the patch it lies on.
-/// Throws RunError when CGAL cannot take the mesh.
+/// Throws RunError when CGAL cannot take the mesh or its result has a fault
+/// (an inverted element: the caller keeps the old mesh).
 mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings);
 
 /// A body remeshed in a region, the rest kept as it was.
@@ -53,7 +54,8 @@ struct RegionRemesh {
 /// settings.edge_length, with every boundary frozen: the body's surface and
 /// the region's border with the kept tets keep their nodes and faces, so
 /// the contact surface stays where it is and the kept tets fit the new
-/// ones. Throws RunError when CGAL cannot take the mesh.
+/// ones. Throws RunError when CGAL cannot take the mesh or its result has a
+/// fault.
 RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebuilt, const RemeshSettings& settings);
 
 /// Patch number (from 1) of each boundary face of `body`, as remesh_body sets them.

@@ -24,11 +24,13 @@ struct Cut {
 /// The cut of `spec`: a line's distance is taken in the plane normal to z.
 Cut make_cut(const scene::TrimSpec& spec, const std::string& where, double size);
 
-/// `part` cut by `cut`: the nodes of each edge that crosses it, the nearer
-/// end, put onto it; the elements on the far side removed; every field of
-/// the elements and nodes kept. Elements next to the cut may be poor or
-/// inverted: the caller remeshes them. A node on a symmetry plane of
-/// `planes` stays on it (put where the cut meets the plane).
+/// `part` cut by `cut`: the elements the cut crosses split along it
+/// (mesh::cut_by_level_set), those on the far side removed; a node next to
+/// a crossing, where the split would leave a sliver, first put onto the cut
+/// when that spoils no element around it. Every field kept: an element's
+/// values go to its pieces, a node's are interpolated along its edge. A node
+/// on a symmetry plane of `planes` stays on it. Elements next to the cut
+/// may be poor (never inverted): the caller remeshes them.
 scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<const SymmetryPlane> planes);
 
 /// Runs trim operation `op` into options.output_directory: the part cut,

@@ -20,4 +20,9 @@ const std::vector<Effect>& effect_registry();
 /// Names of the effects `c` needs, given its bodies' laws.
 std::vector<std::string> resolve_effects(const Case& c, const std::vector<const material::Material*>& laws);
 
+/// Of `effects`, those a scene in which nothing moves exercises: it solves
+/// heat alone (a transfer, dwell or cooling), so no flow, friction,
+/// remeshing or what they feed.
+std::vector<std::string> heat_alone_effects(const std::vector<std::string>& effects);
+
 } // namespace anvil::scene
