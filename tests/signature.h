@@ -5,10 +5,14 @@
 #pragma once
 #include "anvil/core/error.h"
 #include "anvil/io/RunResults.h"
+#include "anvil/run/Simulation.h"
+#include "anvil/run/chain.h"
 #include "anvil/scene/Case.h"
+#include "anvil/scene/Chain.h"
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -18,11 +22,28 @@
 
 namespace signature {
 
-/// A case as the signature runs it: a time-stepping case for its first 10
-/// increments (the whole runs are the hard tier's), any other as it is.
-inline anvil::scene::Case read_case(const std::string& path) {
-  const anvil::scene::Case c = anvil::scene::read_case(path);
-  return c.time.enabled ? anvil::scene::read_case(path, {"time.max_increments=10"}) : c;
+/// Runs the case at `path` as the signature does, into `directory` (emptied
+/// first), and returns the folder of the run it signs. A time-stepping case
+/// runs its first 10 increments (the whole runs are the hard tier's), any
+/// other as it is. A chain (docs/chains.md) runs to its first forging
+/// operation, that one for its first 10 increments, where the chain stops:
+/// what follows a forging is the hard tier's (tests/hard), and the chains'
+/// own mechanics the verification tier's.
+inline std::string run(const std::string& path, const std::string& directory) {
+  std::filesystem::remove_all(directory);
+  const anvil::scene::Chain chain = anvil::scene::read_chain(path);
+  if (!chain.is_chain()) {
+    const anvil::scene::Case& c = chain.operations.front().input;
+    anvil::run::run(c.time.enabled ? anvil::scene::read_case(path, {"time.max_increments=10"}) : c, {directory});
+    return directory;
+  }
+  for (std::size_t k = 0; k < chain.operations.size(); ++k)
+    if (chain.operations[k].kind == anvil::scene::OperationKind::forge) {
+      const std::string cut = "operations[" + std::to_string(k) + "].time.max_increments=10";
+      anvil::run::run_chain(anvil::scene::read_chain(path, {cut}), {directory});
+      return directory + "/" + anvil::run::operation_folder(chain, static_cast<int>(k));
+    }
+  throw anvil::InputError(path + ": a chain without a forging operation has no signature (no load)");
 }
 
 struct Row {

@@ -67,7 +67,9 @@ usage:
                                  (--field underfill) colours the dies;
                                  --range LOW HIGH fixes the colour bar;
                                  --flow-lines draws a cut through the part
-                                 with its flow lines (output.flow_lines)
+                                 with its flow lines (output.flow_lines);
+                                 --operations: a chain's folder, the end of
+                                 each operation (docs/chains.md)
   anvil --schema                 every case-file and material-card key: type,
                                  default, range, unit, meaning
   anvil --list                   the effects a scene can call for

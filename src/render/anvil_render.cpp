@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -186,6 +187,7 @@ struct Options {
   double range[2] = {0.0, 0.0}; ///< colour bar range shared by the frames; empty: each frame's own
   bool fixed_range = false;     ///< --range: the user's, beyond it the colours saturate
   bool flow_lines = false;      ///< --flow-lines: a cut through the part with its flow lines
+  bool operations = false;      ///< --operations: a chain's folder, the last frame of each operation
   int width = 1000, height = 750;
 };
 
@@ -462,6 +464,51 @@ vtkSmartPointer<vtkImageData> contact_sheet(const std::vector<vtkSmartPointer<vt
   return sheet;
 }
 
+/// A frame to draw, with the loads of the run it belongs to for its caption.
+struct Shot {
+  anvil::io::SeriesEntry frame;
+  std::vector<anvil::io::LoadRow> loads;
+  std::string load_surface;
+};
+
+/// `frame` with the loads of run folder `directory` (its first load
+/// surface's); none where it has no loads.csv (a chain's folder has none:
+/// its operations' folders do).
+Shot shot(const anvil::io::SeriesEntry& frame, const std::string& directory) {
+  Shot s{frame, {}, {}};
+  if (!std::filesystem::exists(directory + "/loads.csv")) return s;
+  const std::vector<std::string> surfaces = anvil::io::read_load_surfaces(directory);
+  if (surfaces.empty()) return s;
+  s.load_surface = surfaces.front();
+  s.loads = anvil::io::read_loads(directory, s.load_surface);
+  return s;
+}
+
+/// The last frame of each operation of the chain in `directory` (its
+/// NN-name folders, docs/chains.md), read from the operation's own series:
+/// in the chain's, a trim's frame takes the place of the stroke's last.
+std::vector<Shot> operation_ends(const std::string& directory) {
+  std::vector<std::filesystem::path> folders;
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory() && name.size() > 3 && std::isdigit(static_cast<unsigned char>(name[0])) &&
+        std::isdigit(static_cast<unsigned char>(name[1])) && name[2] == '-' &&
+        std::filesystem::exists(entry.path() / "anvil.pvd"))
+      folders.push_back(entry.path());
+  }
+  if (folders.empty())
+    throw std::runtime_error(directory + " holds no operation (NN-name folders): not a chain's folder");
+  std::sort(folders.begin(), folders.end());
+  std::vector<Shot> shots;
+  for (const std::filesystem::path& folder : folders) {
+    anvil::io::SeriesEntry last = anvil::io::read_series(folder.string()).back();
+    for (std::string& part : last.parts)
+      part = (folder.filename() / part).string();
+    shots.push_back(shot(last, folder.string()));
+  }
+  return shots;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -486,6 +533,8 @@ int main(int argc, char** argv) {
         o.sheet = true;
       else if (arg == "--flow-lines")
         o.flow_lines = true;
+      else if (arg == "--operations")
+        o.operations = true;
       else if (arg == "--out")
         o.out = value();
       else if (arg == "--range") {
@@ -505,18 +554,22 @@ int main(int argc, char** argv) {
   if (o.directory.empty() || !(o.view == "iso" || o.view == "front" || o.view == "top") || o.frames < 1) {
     std::fprintf(stderr,
                  "usage: anvil render DIR [--field NAME] [--range LOW HIGH] [--view iso|front|top] [--frames N] "
-                 "[--mirror] [--sheet] [--flow-lines]\n");
+                 "[--mirror] [--sheet] [--flow-lines] [--operations]\n");
     return 2;
   }
   try {
-    const std::vector<anvil::io::SeriesEntry> frames = anvil::io::read_series(o.directory);
-    // A chain's folder has no loads.csv: its operations' folders do.
-    const std::vector<std::string> surfaces = std::filesystem::exists(o.directory + "/loads.csv")
-                                                  ? anvil::io::read_load_surfaces(o.directory)
-                                                  : std::vector<std::string>{};
-    const std::string load_surface = surfaces.empty() ? "" : surfaces.front();
-    const std::vector<anvil::io::LoadRow> loads =
-        surfaces.empty() ? std::vector<anvil::io::LoadRow>{} : anvil::io::read_loads(o.directory, load_surface);
+    // The frames: a chain's operation ends, or evenly spread over the
+    // series, the last one always included.
+    std::vector<Shot> shots;
+    if (o.operations)
+      shots = operation_ends(o.directory);
+    else {
+      const std::vector<anvil::io::SeriesEntry> series = anvil::io::read_series(o.directory);
+      const int count = std::min<int>(o.out.empty() ? o.frames : 1, int(series.size()));
+      for (int k = 0; k < count; ++k)
+        shots.push_back(
+            shot(series[count == 1 ? series.size() - 1 : k * (series.size() - 1) / (count - 1)], o.directory));
+    }
     auto grids_of = [&](const anvil::io::SeriesEntry& frame) {
       Grids grids;
       for (const std::string& file : frame.parts)
@@ -524,20 +577,18 @@ int main(int argc, char** argv) {
       return grids;
     };
     if (!o.out.empty()) {
-      write_png(render(o, frames.back(), grids_of(frames.back()), loads, load_surface), o.out);
+      const Shot& last = shots.back();
+      write_png(render(o, last.frame, grids_of(last.frame), last.loads, last.load_surface), o.out);
       std::printf("%s\n", o.out.c_str());
       return 0;
     }
     const std::string picture_name = o.flow_lines ? "flow_lines" : o.field.empty() ? "default" : o.field;
     const std::filesystem::path folder = std::filesystem::path(o.directory) / "render";
     std::filesystem::create_directories(folder);
-    const int count = std::min<int>(o.frames, int(frames.size()));
-    std::vector<const anvil::io::SeriesEntry*> chosen;
+    const std::size_t count = shots.size();
     std::vector<Grids> grids;
-    for (int k = 0; k < count; ++k) { // evenly spread over the series, the last one always included
-      chosen.push_back(&frames[count == 1 ? frames.size() - 1 : k * (frames.size() - 1) / (count - 1)]);
-      grids.push_back(grids_of(*chosen.back()));
-    }
+    for (const Shot& s : shots)
+      grids.push_back(grids_of(s.frame));
     if (count > 1 && !o.fixed_range) {
       // One colour bar for every frame, so the animation and the sheet compare.
       o.range[0] = std::numeric_limits<double>::infinity();
@@ -550,12 +601,13 @@ int main(int argc, char** argv) {
     }
     std::vector<vtkSmartPointer<vtkImageData>> pictures;
     std::vector<std::string> files; // in `folder`
-    for (std::size_t k = 0; k < chosen.size(); ++k) {
+    for (std::size_t k = 0; k < count; ++k) {
       char name[160];
-      const std::string operation = std::filesystem::path(chosen[k]->parts.front()).parent_path().string();
+      const anvil::io::SeriesEntry& frame = shots[k].frame;
+      const std::string operation = std::filesystem::path(frame.parts.front()).parent_path().string();
       std::snprintf(name, sizeof name, "%s%s%s_%06d.png", operation.c_str(), operation.empty() ? "" : "_",
-                    picture_name.c_str(), chosen[k]->increment);
-      pictures.push_back(render(o, *chosen[k], grids[k], loads, load_surface));
+                    picture_name.c_str(), frame.increment);
+      pictures.push_back(render(o, frame, grids[k], shots[k].loads, shots[k].load_surface));
       files.push_back(name);
       write_png(pictures.back(), (folder / name).string());
       std::printf("%s\n", (folder / name).c_str());

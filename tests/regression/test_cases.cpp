@@ -48,9 +48,9 @@ void check_signatures(int half) {
     const std::string& name = names[k];
     INFO("case " << name << " (reference: tests/regression/signatures/" << name << ".csv; tools/update_signatures)");
     const signature::Signature ref = signature::read_csv(source_path("tests/regression/signatures/" + name + ".csv"));
-    const RunOutputs out =
-        run_case(signature::read_case(source_path("cases/" + name + ".yaml")), "anvil_signature_" + name);
-    const signature::Signature got = signature::of_run(out.directory);
+    const signature::Signature got = signature::of_run(
+        signature::run(source_path("cases/" + name + ".yaml"),
+                       (std::filesystem::temp_directory_path() / ("anvil_signature_" + name)).string()));
     REQUIRE(got.surfaces == ref.surfaces);
     REQUIRE(got.rows.size() == ref.rows.size());
     const double stroke = peak(ref, [](const auto& r) { return r.stroke; });

@@ -3,6 +3,8 @@
 #include "run_outputs.h"
 
 #include "anvil/core/log.h"
+#include "anvil/run/chain.h"
+#include "anvil/scene/Chain.h"
 
 #include <fstream>
 
@@ -45,6 +47,33 @@ std::string budget_text(const scene::HeatBudget& h) {
   return "plastic " + std::to_string(h.plastic) + " mJ, friction " + std::to_string(h.friction) + ", to dies " +
          std::to_string(h.to_dies) + ", to air " + std::to_string(h.to_environment) + ", stored " +
          std::to_string(h.stored);
+}
+
+/// The lumped tests' part: a cube of side 10 mm at 1000 °C, every face in
+/// air at 20 °C, h = 10 W/(m2.K), no radiation (the fluid card has none).
+/// With a Biot number h (V/A) / k = 5.6e-4 its mean temperature cools as
+/// one lump: T(t) = T_air + (T₀ − T_air) exp(−t/τ), τ = ρ c V / (h A) = 780 s.
+constexpr const char* kCubeInAir = R"(anvil: 1
+bodies:
+  - name: cube
+    material: fluid.yaml
+    temperature: 1000
+    mesh: {generate: box, size: [10, 10, 10], element_size: 2.5}
+thermal:
+  environment: {temperature: 20, convection: 0.01}
+)";
+constexpr double kCubeRhoC = 7800.0 * 600.0 * 1e-6; ///< mJ/(mm3.K), the fluid card's
+constexpr double kCubeH = 0.01;                     ///< mW/(mm2.K)
+
+/// The lump's temperature at `t` s (°C).
+double lumped_cube(double t) {
+  const double tau = kCubeRhoC * (1000.0 / 600.0) / kCubeH;
+  return 20.0 + 980.0 * std::exp(-t / tau);
+}
+
+/// The cube's mean temperature (°C) once it has stored `stored` mJ (c constant).
+double cube_mean(double stored) {
+  return 1000.0 + stored / (kCubeRhoC * 1000.0);
 }
 
 } // namespace
@@ -174,38 +203,22 @@ TEST_CASE("remeshing a hot billet carries its temperatures and books the stored 
 }
 
 TEST_CASE("a small part cooling in air follows the lumped exact curve (heat alone: nothing moves)", "[verification]") {
-  // A cube of side 10 mm, every face in air at 20 °C, h = 10 W/(m2.K), no
-  // radiation, nothing moving: the time loop solves heat alone. With a Biot
-  // number h (V/A) / k = 5.6e-4 the cube's mean temperature cools as one lump:
-  //   T(t) = T_air + (T₀ − T_air) exp(−t/τ),  τ = ρ c V / (h A) = 780 s.
+  // The cube in air (kCubeInAir), nothing moving: the time loop solves heat alone.
   log::set_quiet(true);
   const auto folder = fluid_folder("anvil_lumped_input");
-  write_text(folder / "case.yaml", R"(anvil: 1
-bodies:
-  - name: cube
-    material: fluid.yaml
-    temperature: 1000
-    mesh: {generate: box, size: [10, 10, 10], element_size: 2.5}
-thermal:
-  environment: {temperature: 20, convection: 0.01}
-time:
-  stop: {time: 60}
-)");
+  write_text(folder / "case.yaml", std::string(kCubeInAir) + "time:\n  stop: {time: 60}\n");
   const RunOutputs out = run_case(scene::read_case((folder / "case.yaml").string()), "anvil_lumped_cooling");
   const scene::RunState state = out.final_state();
   REQUIRE(state.increment == 50); // the default heat step: a fiftieth of the end time
-  const double rho_c = 7800.0 * 600.0 * 1e-6, h = 0.01, volume_per_area = 1000.0 / 600.0; // mJ/(mm3.K), mW/(mm2.K)
-  const double tau = rho_c * volume_per_area / h;
-  const double lumped = 20.0 + 980.0 * std::exp(-60.0 / tau);
+  const double lumped = lumped_cube(60.0);
   const auto [low, high] = std::minmax_element(state.temperature.begin(), state.temperature.end());
-  // The cube's mean temperature from the heat it stored (c constant).
-  const double mean = 1000.0 + state.heat.stored / (rho_c * 1000.0);
+  const double mean = cube_mean(state.heat.stored);
   // Quasi-steady conduction (a²/α = 4 s ≪ 60 s): each pair of faces draws a
   // slab profile of depth q a/(2k) (q = h (T − T_air), a the half side); a
   // corner sits below the centre by the three of them.
-  const double q = h * (mean - 20.0), spread = 3.0 * q * 5.0 / (2.0 * 30.0);
-  INFO("T " << *low << " to " << *high << " C, mean " << mean << " C at 60 s; lumped " << lumped << " C (tau " << tau
-            << " s); conduction spread " << spread << " C");
+  const double q = kCubeH * (mean - 20.0), spread = 3.0 * q * 5.0 / (2.0 * 30.0);
+  INFO("T " << *low << " to " << *high << " C, mean " << mean << " C at 60 s; lumped " << lumped
+            << " C; conduction spread " << spread << " C");
   // The mean follows the lump but for its surface being cooler than itself
   // (q a/(3k), 0.5 °C: 0.05 °C over the 72 °C drop) and the heat step's
   // first-order time error (Δt/τ = 1.5e-3: n (Δt/τ)²/2 of the drop, 0.06 °C).
@@ -215,4 +228,38 @@ time:
   CHECK(*high - *low > 0.8 * spread);
   CHECK(state.heat.to_environment > 0.0);
   CHECK(std::abs(state.heat.imbalance()) < 1e-9 * state.heat.to_environment);
+}
+
+TEST_CASE("a small part carried and cooled in a chain follows the lumped exact curve", "[verification]") {
+  // The cube above as a chain: 30 s of transfer lying on a support that
+  // draws the heat air would (h = 10 W/(m2.K) to 20 °C), then 30 s of
+  // cooling in air. Each operation starts from the temperatures the one
+  // before left, and the chain's time runs on: the mean follows the same
+  // lump, T_air + (T₀ − T_air) exp(−t/τ), at the end of each, to the
+  // tolerance above.
+  log::set_quiet(true);
+  const auto folder = fluid_folder("anvil_lumped_chain_input");
+  write_text(folder / "case.yaml", std::string(kCubeInAir) + R"(output: {picture: false}
+operations:
+  - name: transfer
+    type: transfer
+    dies:
+      - {name: support, plane: {point: [0, 0, 0], normal: [0, 0, 1]}, temperature: 20, heat_transfer: [0.01]}
+    time: {heat_step: 1.2, stop: {time: 30}}
+  - name: cool
+    type: cool
+    time: {heat_step: 1.2, stop: {time: 30}}
+)");
+  const auto out = std::filesystem::temp_directory_path() / "anvil_lumped_chain";
+  std::filesystem::remove_all(out);
+  run::run_chain(scene::read_chain((folder / "case.yaml").string()), run::RunOptions{out.string(), false, false});
+  double stored = 0.0; // mJ, over the operations so far
+  for (const auto& [folder_name, t] : {std::pair{"01-transfer", 30.0}, std::pair{"02-cool", 60.0}}) {
+    const scene::RunState state = RunOutputs{(out / folder_name).string()}.final_state();
+    stored += state.heat.stored;
+    const double mean = cube_mean(stored), lumped = lumped_cube(t);
+    INFO(folder_name << ": mean " << mean << " C at " << t << " s; lumped " << lumped << " C");
+    CHECK(std::abs(mean - lumped) < 0.2);
+    CHECK(std::abs(state.heat.imbalance()) < 1e-9 * std::abs(state.heat.stored));
+  }
 }

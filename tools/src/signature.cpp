@@ -20,9 +20,7 @@ int main(int argc, char** argv) {
   anvil::solver::PetscSession petsc(petsc_argc, argv);
   try {
     anvil::log::set_quiet(true);
-    std::filesystem::remove_all(argv[2]);
-    anvil::run::run(signature::read_case(argv[1]), {argv[2]});
-    std::fputs(signature::to_csv(signature::of_run(argv[2])).c_str(), stdout);
+    std::fputs(signature::to_csv(signature::of_run(signature::run(argv[1], argv[2]))).c_str(), stdout);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "anvil_signature: %s: %s\n", argv[1], e.what());

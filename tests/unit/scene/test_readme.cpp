@@ -4,7 +4,7 @@
 // regression tier's job).
 #include "test_common.h"
 
-#include "anvil/scene/Case.h"
+#include "anvil/scene/Chain.h"
 
 #include <filesystem>
 #include <fstream>
@@ -58,7 +58,7 @@ TEST_CASE("README and docs/ name only files that exist, and the cases they name 
   REQUIRE(cases.size() >= 5);
   for (const std::string& c : cases) {
     INFO("case " << c);
-    CHECK_NOTHROW(anvil::scene::read_case((root / c).string()));
+    CHECK_NOTHROW(anvil::scene::read_chain((root / c).string())); // a case is a chain of one
   }
 }
 

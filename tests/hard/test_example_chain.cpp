@@ -1,0 +1,46 @@
+// The example chain (cases/hub_flange_chain.yaml) to its end: furnace,
+// transfer, upsetting, the closed-die finisher, trim, cooling.
+#include "run_outputs.h"
+
+#include "anvil/core/log.h"
+#include "anvil/mesh/tet_geometry.h"
+#include "anvil/run/chain.h"
+#include "anvil/scene/Chain.h"
+
+#include <algorithm>
+#include <filesystem>
+
+using namespace anvil;
+
+TEST_CASE("the hub-flange chain runs its five operations to the end", "[hard]") {
+  log::set_quiet(true);
+  const auto out = std::filesystem::temp_directory_path() / "anvil_hard_hub_flange_chain";
+  std::filesystem::remove_all(out);
+  const scene::Chain chain = scene::read_chain(source_path("cases/hub_flange_chain.yaml"), {"output.vtk=false"});
+  const run::RunEnd end = run::run_chain(chain, {out.string()});
+  CHECK(end.complete);
+  CHECK(io::read_summary_number(out.string(), "operations_done") == 5);
+  auto folder = [&](int k) { return RunOutputs{(out / run::operation_folder(chain, k)).string()}; };
+  // The finisher closes its dies: the upper one's whole stroke.
+  const std::vector<LoadRow> finish = folder(2).loads("upper");
+  REQUIRE(!finish.empty());
+  CHECK(finish.back().stroke == Approx(7.8).epsilon(1e-9));
+  // The trim removes the flash beyond its line (a 48-gon inscribed in r 13
+  // mm): what it keeps lies within r 13, and the removed and kept volumes
+  // make up what the finisher left, to rounding.
+  const RunOutputs trim = folder(3);
+  const scene::RunState finished = folder(2).final_state(), trimmed = trim.final_state();
+  const double removed = trim.summary_number("removed_volume_model_mm3");
+  CHECK(removed > 0.0);
+  CHECK(mesh::volume(trimmed.mesh) + removed == Approx(mesh::volume(finished.mesh)).epsilon(1e-9));
+  for (const mesh::Point& x : trimmed.mesh.nodes)
+    CHECK(x.head<2>().norm() <= 13.0 + 1e-9);
+  for (int e = 0; e < trimmed.mesh.tet_count(); ++e)
+    CHECK(mesh::quality(trimmed.mesh, e) > 0.0);
+  // In air the trimmed part only cools: its hottest node ends colder than
+  // it started, its coldest no colder than the air.
+  const scene::RunState cooled = folder(4).final_state();
+  const auto [low, high] = std::minmax_element(cooled.temperature.begin(), cooled.temperature.end());
+  CHECK(*high < *std::max_element(trimmed.temperature.begin(), trimmed.temperature.end()));
+  CHECK(*low > 20.0);
+}
