@@ -18,8 +18,9 @@
 // time, energy, work, stroke, peak load, last load, over; absent before energy
 // presses), /wear (the die wear of every worn die's vertices, one after the
 // other) with /wear_sizes (one count per die, 0 without wear) and /body_wear
-// with /body_wear_sizes (per body; all absent before die wear), scalar
-// attributes on the root group.
+// with /body_wear_sizes (per body; all absent before die wear),
+// /die_drawing (2: the dies' extent and sampling; absent before chains),
+// scalar attributes on the root group.
 #include "anvil/io/Checkpoint.h"
 
 #include "anvil/core/error.h"
@@ -303,6 +304,8 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
     const std::array<double, 8> heat{h.plastic, h.friction,  h.to_dies,      h.to_environment,
                                      h.stored,  h.remeshing, h.initial_heat, s.transfer_time};
     write_array(file, "heat", H5T_NATIVE_DOUBLE, heat.data(), heat.size(), 0);
+    const double drawing[2] = {s.die_extent, s.die_sampling};
+    write_array(file, "die_drawing", H5T_NATIVE_DOUBLE, drawing, 2, 0);
     std::vector<double> outputs;
     std::string files;
     for (const scene::OutputFrame& e : s.outputs) {
@@ -473,6 +476,13 @@ RunState read_state(hid_t file, const std::string& path) {
     if (heat.size() != 8) throw InputError(path + ": checkpoint dataset 'heat' has a wrong size");
     s.heat = {heat[0], heat[1], heat[2], heat[3], heat[4], heat[5], heat[6]};
     s.transfer_time = heat[7];
+  }
+  if (H5Lexists(file, "die_drawing", H5P_DEFAULT) > 0) { // absent before chains: drawn from the mesh
+    std::vector<double> drawing;
+    read_finite_array(file, path, "die_drawing", drawing, 1);
+    if (drawing.size() != 2 || drawing[0] < 0.0 || drawing[1] < 0.0)
+      throw InputError(path + ": checkpoint dataset 'die_drawing' holds other than 2 sizes >= 0 (damaged file)");
+    s.die_extent = drawing[0], s.die_sampling = drawing[1];
   }
   if (H5Lexists(file, "material_position", H5P_DEFAULT) > 0) // absent before flow lines
     read_finite_array(file, path, "material_position", s.material_position, 3);

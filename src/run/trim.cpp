@@ -223,6 +223,7 @@ scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<
   if (!part.temperature.empty()) out.temperature = nodal_field(part.temperature, 1);
   if (!part.material_position.empty()) out.material_position = nodal_field(part.material_position, 3);
   out.unknowns = {Eigen::VectorXd::Zero(4 * out.mesh.node_count()), Eigen::VectorXd::Zero(3 * out.mesh.tet_count())};
+  out.die_extent = part.die_extent, out.die_sampling = part.die_sampling;
   out.body_wear.resize(part.body_wear.size());
   for (std::size_t b = 0; b < part.body_wear.size(); ++b)
     if (!part.body_wear[b].empty()) body_nodal(b, part.body_wear[b].data(), 1, out.body_wear[b]);

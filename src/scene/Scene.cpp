@@ -1,6 +1,7 @@
 #include "anvil/scene/Scene.h"
 
 #include "anvil/core/error.h"
+#include "anvil/core/log.h"
 #include "anvil/die/overlap_volume.h"
 #include "anvil/mesh/generators.h"
 #include "anvil/mesh/mesh_io.h"
@@ -286,10 +287,13 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
   // Scales from the initial mesh, so that a resumed run uses the very same numbers.
   body_size = mesh::bounding_box(initial_mesh).diagonal().norm();
   reference_length = mean_boundary_edge(initial_mesh);
+  const bool drawn = carried && carried->die_extent > 0.0;
+  die_extent = drawn ? carried->die_extent : body_size;
+  die_sampling = drawn ? carried->die_sampling : reference_length; // a worn die: a sample per boundary edge
   {
     Timers::Scope scope(timers, "effect rigid_dies (setup)");
     for (const DieSpec& spec : c.dies)
-      dies.push_back(build_die(spec, body_size, reference_length)); // a worn die: a sample per boundary edge
+      dies.push_back(build_die(spec, die_extent, die_sampling));
   }
   for (std::size_t d = 0; d < dies.size(); ++d)
     surfaces.push_back({dies[d].name, int(d), -1});
@@ -383,11 +387,18 @@ RunState initial_state(const Scene& scene, const RunState* part) {
         state.body_wear[b] = part->body_wear[b];
     // A die worn in an operation before (the chain gives its wear in this
     // scene's order) wears on.
-    for (std::size_t d = 0; d < scene.dies.size(); ++d)
-      if (d < part->wear.size() && part->wear[d].size() == state.wear[d].size() && !state.wear[d].empty())
+    for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+      if (d >= part->wear.size() || part->wear[d].empty() || state.wear[d].empty()) continue;
+      if (part->wear[d].size() == state.wear[d].size())
         state.wear[d] = part->wear[d];
+      else
+        log::info("die '%s': another surface than the one of that name before (%zu vertices, then %zu): its wear "
+                  "starts from zero",
+                  scene.dies[d].name.c_str(), state.wear[d].size(), part->wear[d].size());
+    }
   }
   state.volume.initial = part ? part->volume.initial : mesh::volume(state.mesh);
+  state.die_extent = scene.die_extent, state.die_sampling = scene.die_sampling;
   state.inside_dies = inside_dies(scene, state);
   return state;
 }

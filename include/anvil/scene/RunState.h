@@ -167,6 +167,11 @@ struct RunState {
   /// Wear (mm) at each node of each meshed die (a body with wear), by its
   /// node in the body (elastic bodies keep their mesh); empty for the others.
   std::vector<std::vector<double>> body_wear;
+  /// mm: the size a plane die is drawn to (without plane.half_size) and the
+  /// spacing a worn die is sampled at, as the run's first scene drew them;
+  /// a chain's later operations draw theirs alike, so that a die used again
+  /// has the same vertices and wears on. 0: not drawn yet.
+  double die_extent = 0.0, die_sampling = 0.0;
   std::vector<OutputFrame> outputs; ///< the VTK series written so far (io::VtkSeries)
   /// mm³ per body of its mesh inside the dies (die::overlap_volume), measured
   /// whenever the mesh or the dies move; not stored: measured again on resume.

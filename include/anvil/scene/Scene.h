@@ -84,8 +84,11 @@ struct Scene {
   /// Nothing moves (no moving die, no prescribed velocity) in a thermal
   /// scene: the time loop solves heat alone (cooling, dwell, transfer).
   bool heat_only = false;
-  double body_size = 0.0;          ///< mm, diagonal of the initial bounding box
-  double reference_length = 0.0;   ///< mm, mean boundary edge of the initial mesh
+  double body_size = 0.0;        ///< mm, diagonal of the initial bounding box
+  double reference_length = 0.0; ///< mm, mean boundary edge of the initial mesh
+  /// mm: the dies' drawing (RunState::die_extent, die_sampling): the body's
+  /// size and mean boundary edge, or what the carried part's dies were drawn with.
+  double die_extent = 0.0, die_sampling = 0.0;
   double reference_velocity = 0.0; ///< mm/s, fastest die or imposed velocity at t = 0
   int upper_die = 0;               ///< with a final gap: the die above
   double die_gap0 = 0.0;           ///< mm, gap between the two dies at zero displacement
