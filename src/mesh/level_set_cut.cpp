@@ -30,9 +30,10 @@ double root_on_edge(const Point& xa, const Point& xb, double fa, double fb,
   return t;
 }
 
-/// Dompierre's three tets of the prism with triangles (v0 v1 v2), (v3 v4 v5),
-/// vertex i joined to i + 3, numbered `id`: each quadrilateral face split
-/// along the diagonal through its smallest number.
+/// Dompierre's three tets of the prism of node numbers v with triangles
+/// (v0 v1 v2), (v3 v4 v5), vertex i joined to i + 3: the prism turned
+/// (kTurn) so that its smallest number comes first, each quadrilateral face
+/// split along the diagonal through its smallest number.
 void split_prism(const std::array<int, 6>& v, std::vector<Tet>& out) {
   static constexpr int kTurn[6][6] = {{0, 1, 2, 3, 4, 5}, {1, 2, 0, 4, 5, 3}, {2, 0, 1, 5, 3, 4},
                                       {3, 5, 4, 0, 2, 1}, {4, 3, 5, 1, 0, 2}, {5, 4, 3, 2, 1, 0}};
