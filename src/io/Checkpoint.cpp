@@ -19,6 +19,7 @@
 // presses), /wear (the die wear of every worn die's vertices, one after the
 // other) with /wear_sizes (one count per die, 0 without wear) and /body_wear
 // with /body_wear_sizes (per body; all absent before die wear),
+// /remesh_rebuilt_share (per remesh; absent before it was kept),
 // /die_drawing (2: the dies' extent and sampling; absent before chains),
 // scalar attributes on the root group.
 #include "anvil/io/Checkpoint.h"
@@ -239,13 +240,15 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
                        r.worst_quality_before, r.worst_quality_after, r.volume_change, r.strain_integral_change,
                        r.strain_max_change, r.seconds, r.load_old_mesh, r.load_new_mesh, r.material_change});
     write_array(file, "remeshes", H5T_NATIVE_DOUBLE, remeshes.data(), s.remeshes.size(), 13);
-    std::vector<double> die_depths, die_overlaps;
+    std::vector<double> die_depths, die_overlaps, rebuilt_shares;
     for (const RemeshRecord& r : s.remeshes) {
       die_depths.push_back(r.die_depth_after);
       die_overlaps.push_back(r.die_overlap_after);
+      rebuilt_shares.push_back(r.rebuilt_share);
     }
     write_array(file, "remesh_die_depth", H5T_NATIVE_DOUBLE, die_depths.data(), die_depths.size(), 0);
     write_array(file, "remesh_die_overlap", H5T_NATIVE_DOUBLE, die_overlaps.data(), die_overlaps.size(), 0);
+    write_array(file, "remesh_rebuilt_share", H5T_NATIVE_DOUBLE, rebuilt_shares.data(), rebuilt_shares.size(), 0);
 
     std::vector<double> nodes;
     for (const mesh::Point& p : s.mesh.nodes)
@@ -388,6 +391,7 @@ RunState read_state(hid_t file, const std::string& path) {
   };
   per_remesh_value("remesh_die_depth", "a depth", &RemeshRecord::die_depth_after);
   per_remesh_value("remesh_die_overlap", "a volume", &RemeshRecord::die_overlap_after);
+  per_remesh_value("remesh_rebuilt_share", "a share", &RemeshRecord::rebuilt_share);
   read_finite_array(file, path, "nodes", nodes, 3);
   for (std::size_t i = 0; i < nodes.size(); i += 3)
     s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);

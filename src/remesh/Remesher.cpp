@@ -397,17 +397,17 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
         for (std::size_t k = 0; k < damage.size(); ++k)
           append_values(damage[k], local->damage[k].data(), local->damage[k].size());
         if (carries_stress) stress.insert(stress.end(), 6 * local->mesh.tets.size(), 0.0);
-        const scene::RemeshRecord record{
-            state.increment,
-            int(b),
-            part.node_count(),
-            local->mesh.node_count(),
-            worst_quality(part),
-            worst_quality(local->mesh),
-            relative(mesh::volume(local->mesh), mesh::volume(part)),
-            local->strain_integral_change,
-            local->strain_max_change,
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+        scene::RemeshRecord record{state.increment,
+                                   int(b),
+                                   part.node_count(),
+                                   local->mesh.node_count(),
+                                   worst_quality(part),
+                                   worst_quality(local->mesh),
+                                   relative(mesh::volume(local->mesh), mesh::volume(part)),
+                                   local->strain_integral_change,
+                                   local->strain_max_change,
+                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+        record.rebuilt_share = double(local->rebuilt) / part.tet_count();
         state.remeshes.push_back(record);
         log::info(
             "  remesh '%s' (%s), local: %d of %d elements rebuilt, the rest and the surface kept; %d -> %d nodes; "
@@ -501,22 +501,23 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     if (carries_stress) stress.insert(stress.end(), 6 * fresh.tets.size(), 0.0); // a flowing body carries none
 
     const double strain_remeshed = integral(best.remeshed, fresh_strain); // ∫ε̄ dV before the fit to the dies
-    const scene::RemeshRecord record{state.increment,
-                                     int(b),
-                                     part.node_count(),
-                                     fresh.node_count(),
-                                     worst_quality(part),
-                                     best.worst,
-                                     relative(volume_remeshed, volume_before),
-                                     relative(strain_remeshed, integral(part, part_strain)),
-                                     relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
-                                              *std::max_element(part_strain.begin(), part_strain.end())),
-                                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+    scene::RemeshRecord record{state.increment,
+                               int(b),
+                               part.node_count(),
+                               fresh.node_count(),
+                               worst_quality(part),
+                               best.worst,
+                               relative(volume_remeshed, volume_before),
+                               relative(strain_remeshed, integral(part, part_strain)),
+                               relative(*std::max_element(fresh_strain.begin(), fresh_strain.end()),
+                                        *std::max_element(part_strain.begin(), part_strain.end())),
+                               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     // What the remesh changed (CGAL's mesh, and the material given back),
     // and apart, what the put-back took off: a contact projection, as after
     // an increment.
     state.volume.remeshing += volume_remeshed - volume_before + volume_after - best.volume_put_back;
     state.volume.projection += best.volume_put_back - volume_remeshed;
+    record.rebuilt_share = 1.0;
     state.remeshes.push_back(record);
     log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm; worst quality %.3f -> %.3f; "
               "volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",

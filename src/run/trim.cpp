@@ -1,5 +1,6 @@
 #include "anvil/run/trim.h"
 
+#include "anvil/contact/SurfaceSearch.h"
 #include "anvil/core/Timers.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
@@ -29,8 +30,14 @@ namespace {
 /// has that end put onto the cut: a split so near a node leaves a sliver.
 constexpr double kSnapShare = 0.3;
 /// The quality that move may take an element around the node down to, at
-/// worst half of this (or of what it had, when less).
+/// worst half of this (or of what it had, when less); and below which a
+/// piece of the cut has its nodes put onto the cut in a second pass.
 constexpr double kSnapFloor = 0.2;
+/// Passes of that second chance.
+constexpr int kSnapPasses = 3;
+/// A node of the part's surface put onto the cut may change the volume of
+/// its elements by at most this share (an interior node changes none).
+constexpr double kShapeChange = 0.2;
 
 /// The nearest point to `x` on segment [a, b] (in a plane).
 Eigen::Vector2d nearest_on_segment(const Eigen::Vector2d& x, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
@@ -75,9 +82,11 @@ double mass_of(const scene::Scene& scene, int b, double volume) {
   return thermal ? 1e-9 * thermal->density * volume : std::numeric_limits<double>::quiet_NaN();
 }
 
-/// summary.json of a trim; `removed` is each body's volume cut off (mm³, model).
-void write_trim_summary(const std::string& directory, const scene::Scene& scene, const std::vector<double>& removed,
+/// summary.json of a trim: each body's volume cut off and the change of
+/// what it keeps by the nodes put onto the cut (`cut`, mm³, model).
+void write_trim_summary(const std::string& directory, const scene::Scene& scene, const CutPart& cut,
                         const scene::RunState& after, const std::string& remeshed, double seconds) {
+  const std::vector<double>& removed = cut.removed;
   io::JsonWriter json;
   json.begin_object()
       .member("case", scene.input.path)
@@ -95,6 +104,7 @@ void write_trim_summary(const std::string& directory, const scene::Scene& scene,
         .member("elements", after.bodies[b].tet_count)
         .member("volume_mm3", mesh::volume(after.mesh, after.bodies[b]))
         .member("removed_volume_model_mm3", removed[b])
+        .member("reshaped_volume_model_mm3", cut.reshaped[b])
         .member("removed_volume_whole_part_mm3", scene.symmetry_copies * removed[b]);
     if (const double mass = mass_of(scene, int(b), scene.symmetry_copies * removed[b]); !std::isnan(mass))
       json.member("removed_mass_whole_part_kg", mass);
@@ -124,7 +134,7 @@ Cut make_cut(const scene::TrimSpec& spec, const std::string& where, double size)
   return cut;
 }
 
-scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<const SymmetryPlane> planes) {
+CutPart cut_part(const scene::RunState& part, const Cut& cut, std::span<const SymmetryPlane> planes) {
   const mesh::TetMesh& m = part.mesh;
   mesh::TetMesh moved = m;
   std::vector<double> phi(m.nodes.size());
@@ -132,6 +142,17 @@ scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<
   for (std::size_t n = 0; n < m.nodes.size(); ++n) {
     phi[n] = cut.distance(m.nodes[n]);
     if (std::abs(phi[n]) < on_cut) phi[n] = 0.0;
+  }
+  CutPart result;
+  // The exact split, no node moved: the volume the cut takes off.
+  for (std::size_t b = 0; b < part.bodies.size(); ++b) {
+    const mesh::MeshRange& r = part.bodies[b];
+    const double kept = mesh::volume(
+        mesh::cut_by_level_set(mesh::extract(m, r), std::span<const double>(phi).subspan(r.first_node, r.node_count),
+                               cut.distance)
+            .mesh);
+    result.removed.push_back(mesh::volume(m, r) - kept);
+    result.reshaped.push_back(-kept); // the kept part's volume is added below
   }
   // An edge the cut crosses near one end would leave a sliver: that end is
   // put onto the cut instead, unless the move spoils an element around it
@@ -161,40 +182,96 @@ scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<
     }
     return worst;
   };
-  for (std::size_t n = 0; n < m.nodes.size(); ++n) {
-    if (!snap[n]) continue;
-    // Onto the cut, and back onto the symmetry planes the node is on: the
-    // alternating projections meet where the cut crosses them.
+  // The nodes of the part's own surface (faces not on a symmetry plane)
+  // move along it: the alternating projections onto the cut and onto the
+  // surface (and onto the symmetry planes a node is on) meet where they
+  // cross. Its faces around the node follow only to their chords, and
+  // more at an edge of the surface: kShapeChange bounds that.
+  std::vector<char> on_surface(m.nodes.size(), 0);
+  std::vector<mesh::Triangle> surface_faces;
+  for (const mesh::Triangle& f : m.boundary_faces) {
+    const bool symmetry = std::any_of(planes.begin(), planes.end(), [&](const SymmetryPlane& p) {
+      return std::all_of(f.begin(), f.end(), [&](int v) { return std::abs(m.nodes[v][p.axis] - p.at) < on_cut; });
+    });
+    if (symmetry) continue;
+    surface_faces.push_back(f);
+    for (int v : f)
+      on_surface[v] = 1;
+  }
+  const contact::SurfaceSearch surface(m.nodes, surface_faces);
+  // Puts node n onto the cut unless an element around it that keeps a part
+  // would end below `floor`, or the part's shape would change too much.
+  const auto put_onto_cut = [&](std::size_t n, double floor) {
     std::vector<const SymmetryPlane*> on;
     for (const SymmetryPlane& p : planes)
       if (std::abs(m.nodes[n][p.axis] - p.at) < on_cut) on.push_back(&p);
     mesh::Point to = m.nodes[n];
-    for (int pass = 0; pass < (on.empty() ? 1 : 50); ++pass) {
+    for (int pass = 0; pass < (on.empty() && !on_surface[n] ? 1 : 50); ++pass) {
       to = cut.nearest(to);
+      if (on_surface[n]) to = surface.closest(to).point;
       for (const SymmetryPlane* p : on)
         to[p->axis] = p->at;
     }
-    const double floor = 0.5 * std::min(kSnapFloor, worst_kept(n));
+    if (std::abs(cut.distance(to)) > 1e-6 * (to - m.nodes[n]).norm() + on_cut) return false; // they do not meet
+    // Judged as it will be cut: the node on the cut (an element may then be
+    // kept whole). A surface node may not change the part's volume by more
+    // than kShapeChange of its elements' (an edge node moved off its edge).
     const mesh::Point was = moved.nodes[n];
+    const double level = phi[n];
+    double before = 0.0, after = 0.0;
+    for (int e : around[n])
+      before += mesh::signed_volume(moved, e);
     moved.nodes[n] = to;
-    if (worst_kept(n) >= floor)
-      phi[n] = 0.0;
-    else
-      moved.nodes[n] = was;
+    phi[n] = 0.0;
+    for (int e : around[n])
+      after += mesh::signed_volume(moved, e);
+    if (std::abs(after - before) <= kShapeChange * before && worst_kept(n) >= floor) return true;
+    moved.nodes[n] = was;
+    phi[n] = level;
+    return false;
+  };
+  for (std::size_t n = 0; n < m.nodes.size(); ++n)
+    if (snap[n]) put_onto_cut(n, 0.5 * std::min(kSnapFloor, worst_kept(n)));
+  // Each body cut on its own.
+  std::vector<mesh::LevelSetCut> pieces(part.bodies.size());
+  const auto cut_bodies = [&] {
+    for (std::size_t b = 0; b < part.bodies.size(); ++b) {
+      const mesh::MeshRange& r = part.bodies[b];
+      pieces[b] = mesh::cut_by_level_set(
+          mesh::extract(moved, r), std::span<const double>(phi).subspan(r.first_node, r.node_count), cut.distance);
+      if (pieces[b].mesh.tets.empty())
+        throw InputError("the trim cut removes the whole of body " + std::to_string(b + 1));
+    }
+  };
+  cut_bodies();
+  // A piece still below kSnapFloor (a split near a node whose move was
+  // refused, or near an edge): each node of its element that an edge
+  // across the cut leaves is put onto the cut when that leaves the elements
+  // around it better than the piece; then the part is cut again.
+  for (int pass = 0; pass < kSnapPasses; ++pass) {
+    bool again = false;
+    for (std::size_t b = 0; b < part.bodies.size(); ++b)
+      for (int e = 0; e < pieces[b].mesh.tet_count(); ++e) {
+        const double q = mesh::quality(pieces[b].mesh, e);
+        if (q >= kSnapFloor) continue;
+        const mesh::Tet& t = m.tets[part.bodies[b].first_tet + pieces[b].parent[e]];
+        for (int v : t)
+          if (phi[v] != 0.0 && std::any_of(t.begin(), t.end(), [&](int w) { return phi[v] * phi[w] < 0.0; }))
+            again = put_onto_cut(v, q * (1.0 + 1e-9)) || again;
+      }
+    if (!again) break;
+    cut_bodies();
   }
-  // Each body cut on its own; its fields follow the pieces (an element's
-  // values to its pieces, a node's interpolated along the edge it lies on).
-  scene::RunState out;
+  // The fields follow the pieces: an element's values to its pieces, a
+  // node's interpolated along the edge it lies on.
+  scene::RunState& out = result.part;
   std::vector<std::vector<int>> parents(part.bodies.size());
   std::vector<std::vector<mesh::NodeOrigin>> origins(part.bodies.size());
   for (std::size_t b = 0; b < part.bodies.size(); ++b) {
-    const mesh::MeshRange& r = part.bodies[b];
-    mesh::LevelSetCut piece = mesh::cut_by_level_set(
-        mesh::extract(moved, r), std::span<const double>(phi).subspan(r.first_node, r.node_count), cut.distance);
-    if (piece.mesh.tets.empty()) throw InputError("the trim cut removes the whole of body " + std::to_string(b + 1));
-    out.bodies.push_back(mesh::append(out.mesh, piece.mesh));
-    parents[b] = std::move(piece.parent);
-    origins[b] = std::move(piece.origin);
+    out.bodies.push_back(mesh::append(out.mesh, pieces[b].mesh));
+    result.reshaped[b] += mesh::volume(pieces[b].mesh);
+    parents[b] = std::move(pieces[b].parent);
+    origins[b] = std::move(pieces[b].origin);
   }
   const auto element_field = [&](const std::vector<double>& values, int per) {
     std::vector<double> kept;
@@ -227,7 +304,7 @@ scene::RunState cut_part(const scene::RunState& part, const Cut& cut, std::span<
   out.body_wear.resize(part.body_wear.size());
   for (std::size_t b = 0; b < part.body_wear.size(); ++b)
     if (!part.body_wear[b].empty()) body_nodal(b, part.body_wear[b].data(), 1, out.body_wear[b]);
-  return out;
+  return result;
 }
 
 RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunState& part) {
@@ -241,10 +318,12 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
     part = scene::initial_state(built);
   }
   const Cut cut = make_cut(op.trim, op.source, 2.0 * mesh::bounding_box(part.mesh).diagonal().norm());
-  scene::RunState cut_state = cut_part(part, cut, symmetry_planes(op.input, part.mesh));
-  std::vector<double> removed(part.bodies.size()); // mm³ of each body, model
+  CutPart cut_off = cut_part(part, cut, symmetry_planes(op.input, part.mesh));
+  scene::RunState& cut_state = cut_off.part;
+  const std::vector<double>& removed = cut_off.removed; // mm³ of each body, model
   for (std::size_t b = 0; b < part.bodies.size(); ++b)
-    removed[b] = mesh::volume(part.mesh, part.bodies[b]) - mesh::volume(cut_state.mesh, cut_state.bodies[b]);
+    log::info("trim: body %zu: the nodes put onto the cut change the part's volume by %+.4f%%", b + 1,
+              100.0 * cut_off.reshaped[b] / mesh::volume(cut_state.mesh, cut_state.bodies[b]));
   cut_state.volume.initial = part.volume.initial - std::accumulate(removed.begin(), removed.end(), 0.0);
   const scene::Scene scene(op.input, timers, &cut_state);
   scene::RunState state = scene::initial_state(scene, &cut_state);
@@ -264,7 +343,9 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
     const std::vector<int> touching(state.mesh.node_count(), -1);
     const std::vector<double> rate(state.mesh.tet_count(), 0.0);
     remesh::remesh(scene, state, due, touching, rate, 0.0, timers);
-    remeshed = state.remeshes.empty() ? "refused" : "along the cut";
+    remeshed = state.remeshes.empty()                      ? "refused"
+               : state.remeshes.back().rebuilt_share < 1.0 ? "along the cut"
+                                                           : "whole part";
   }
   for (int e = 0; e < state.mesh.tet_count(); ++e)
     if (!(mesh::quality(state.mesh, e) > 0.0))
@@ -275,7 +356,7 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   processes::on_root([&] {
     io::write_checkpoint(dir + "/checkpoint.h5", state, scene.fingerprint);
-    write_trim_summary(dir, scene, removed, state, remeshed, seconds);
+    write_trim_summary(dir, scene, cut_off, state, remeshed, seconds);
   });
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     log::info("trim: body '%s': %.6g mm3 removed (whole part %.6g mm3, %.4g kg)", scene.bodies[b].name.c_str(),

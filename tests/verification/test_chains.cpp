@@ -12,6 +12,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <regex>
 
 using namespace anvil;
@@ -155,8 +156,9 @@ TEST_CASE("a die's wear accumulates over the operations of a chain as over one s
 }
 
 /// The trim of a 10 x 10 x 4 mm block (x, y in [0, 10]) by `cut` (the
-/// trim's YAML), run as a chain of that one operation; its folder.
-std::string trimmed_block(const std::string& name, const std::string& cut) {
+/// trim's YAML; `extra`, more keys of the operation), run as a chain of
+/// that one operation; its folder.
+std::string trimmed_block(const std::string& name, const std::string& cut, const std::string& extra = "") {
   log::set_quiet(true);
   const std::string path = write_case(name, "anvil: 1\n"
                                             "bodies:\n"
@@ -170,7 +172,7 @@ std::string trimmed_block(const std::string& name, const std::string& cut) {
                                                 "  - name: cut\n"
                                                 "    type: trim\n"
                                                 "    trim: " +
-                                                cut + "\n");
+                                                cut + "\n" + extra);
   return run_chain(path, name) + "/01-cut";
 }
 
@@ -221,6 +223,20 @@ TEST_CASE("a trim removes the volume of its cut", "[verification]") {
   SECTION("a line across the mesh: the plane x + y = 12 (a corner of 8 x 8 / 2 x 4 = 128 mm3 removed)") {
     check_trim(trimmed_block("anvil_chain_trim_oblique", "{line: [-1, -1, 13, -1, -1, 13]}"), 272.0,
                [](const mesh::Point& x) { return x.x() + x.y() > 12.0 + 1e-9; });
+  }
+  SECTION("pieces below remeshing.quality rebuilt along the cut, the rest kept") {
+    // The plane 14.3 x + 14 y = 171.9 cuts off the corner (10, 10) with legs
+    // 10 - 28.9/14 and 10 - 31.9/14.3 mm; remeshing.quality 0.3 leaves
+    // pieces of the cut below it, which the local remesh rebuilds (it keeps
+    // the region's boundary, hence the volume).
+    const double removed = 4.0 * 0.5 * (10.0 - 28.9 / 14.0) * (10.0 - 31.9 / 14.3);
+    const std::string folder = trimmed_block("anvil_chain_trim_local", "{line: [-1, -1, 13, -1, -1, 13.3]}",
+                                             "    remeshing: {quality: 0.3}\n");
+    check_trim(folder, 400.0 - removed,
+               [](const mesh::Point& x) { return 14.3 * x.x() + 14.0 * x.y() > 171.9 + 1e-9; });
+    std::ifstream summary(folder + "/summary.json");
+    const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+    CHECK(text.find("\"remesh\": \"along the cut\"") != std::string::npos);
   }
   SECTION("a closed STL: the box x <= 7.3 (292 mm3 kept)") {
     const std::string stl = stl_box("anvil_chain_trim_box", {-1, -1, -1}, {7.3, 11, 5});

@@ -89,6 +89,9 @@ struct RemeshRecord {
   /// mm³, the body's overlap with the dies after the remesh (what its
   /// put-back left); NaN without dies or from an older checkpoint.
   double die_overlap_after = std::numeric_limits<double>::quiet_NaN();
+  /// Share of the body's elements the remesh rebuilt: 1 for a whole
+  /// remesh, less for a local one; NaN from an older checkpoint.
+  double rebuilt_share = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// One blow of an energy press (hammer, screw press), struck or under way.
