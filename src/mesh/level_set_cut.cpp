@@ -82,9 +82,10 @@ LevelSetCut cut_by_level_set(const TetMesh& mesh, std::span<const double> phi,
   };
   LevelSetCut out;
   std::vector<Tet> pieces;
+  std::vector<int> in, on, off; // the element's nodes inside, on and beyond the cut
   for (int e = 0; e < mesh.tet_count(); ++e) {
     const Tet& t = mesh.tets[e];
-    std::vector<int> in, on, off;
+    in.clear(), on.clear(), off.clear();
     for (int v : t)
       (phi[v] < 0.0 ? in : phi[v] > 0.0 ? off : on).push_back(v);
     pieces.clear();

@@ -7,6 +7,7 @@
 // from the solver: only this program links VTK's rendering.
 #include "anvil/core/subprocess.h"
 #include "anvil/io/RunResults.h"
+#include "render_frames.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -464,51 +465,6 @@ vtkSmartPointer<vtkImageData> contact_sheet(const std::vector<vtkSmartPointer<vt
   return sheet;
 }
 
-/// A frame to draw, with the loads of the run it belongs to for its caption.
-struct Shot {
-  anvil::io::SeriesEntry frame;
-  std::vector<anvil::io::LoadRow> loads;
-  std::string load_surface;
-};
-
-/// `frame` with the loads of run folder `directory` (its first load
-/// surface's); none where it has no loads.csv (a chain's folder has none:
-/// its operations' folders do).
-Shot shot(const anvil::io::SeriesEntry& frame, const std::string& directory) {
-  Shot s{frame, {}, {}};
-  if (!std::filesystem::exists(directory + "/loads.csv")) return s;
-  const std::vector<std::string> surfaces = anvil::io::read_load_surfaces(directory);
-  if (surfaces.empty()) return s;
-  s.load_surface = surfaces.front();
-  s.loads = anvil::io::read_loads(directory, s.load_surface);
-  return s;
-}
-
-/// The last frame of each operation of the chain in `directory` (its
-/// NN-name folders, docs/chains.md), read from the operation's own series:
-/// in the chain's, a trim's frame takes the place of the stroke's last.
-std::vector<Shot> operation_ends(const std::string& directory) {
-  std::vector<std::filesystem::path> folders;
-  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
-    const std::string name = entry.path().filename().string();
-    if (entry.is_directory() && name.size() > 3 && std::isdigit(static_cast<unsigned char>(name[0])) &&
-        std::isdigit(static_cast<unsigned char>(name[1])) && name[2] == '-' &&
-        std::filesystem::exists(entry.path() / "anvil.pvd"))
-      folders.push_back(entry.path());
-  }
-  if (folders.empty())
-    throw std::runtime_error(directory + " holds no operation (NN-name folders): not a chain's folder");
-  std::sort(folders.begin(), folders.end());
-  std::vector<Shot> shots;
-  for (const std::filesystem::path& folder : folders) {
-    anvil::io::SeriesEntry last = anvil::io::read_series(folder.string()).back();
-    for (std::string& part : last.parts)
-      part = (folder.filename() / part).string();
-    shots.push_back(shot(last, folder.string()));
-  }
-  return shots;
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -560,16 +516,9 @@ int main(int argc, char** argv) {
   try {
     // The frames: a chain's operation ends, or evenly spread over the
     // series, the last one always included.
-    std::vector<Shot> shots;
-    if (o.operations)
-      shots = operation_ends(o.directory);
-    else {
-      const std::vector<anvil::io::SeriesEntry> series = anvil::io::read_series(o.directory);
-      const int count = std::min<int>(o.out.empty() ? o.frames : 1, int(series.size()));
-      for (int k = 0; k < count; ++k)
-        shots.push_back(
-            shot(series[count == 1 ? series.size() - 1 : k * (series.size() - 1) / (count - 1)], o.directory));
-    }
+    const std::vector<anvil::render::Shot> shots =
+        o.operations ? anvil::render::operation_ends(o.directory)
+                     : anvil::render::spread_frames(o.directory, o.out.empty() ? o.frames : 1);
     auto grids_of = [&](const anvil::io::SeriesEntry& frame) {
       Grids grids;
       for (const std::string& file : frame.parts)
@@ -577,8 +526,8 @@ int main(int argc, char** argv) {
       return grids;
     };
     if (!o.out.empty()) {
-      const Shot& last = shots.back();
-      write_png(render(o, last.frame, grids_of(last.frame), last.loads, last.load_surface), o.out);
+      const anvil::render::Shot& last = shots.back();
+      write_png(render(o, last.frame, grids_of(last.frame), last.loads->rows, last.loads->surface), o.out);
       std::printf("%s\n", o.out.c_str());
       return 0;
     }
@@ -587,7 +536,7 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(folder);
     const std::size_t count = shots.size();
     std::vector<Grids> grids;
-    for (const Shot& s : shots)
+    for (const anvil::render::Shot& s : shots)
       grids.push_back(grids_of(s.frame));
     if (count > 1 && !o.fixed_range) {
       // One colour bar for every frame, so the animation and the sheet compare.
@@ -607,7 +556,7 @@ int main(int argc, char** argv) {
       const std::string operation = std::filesystem::path(frame.parts.front()).parent_path().string();
       std::snprintf(name, sizeof name, "%s%s%s_%06d.png", operation.c_str(), operation.empty() ? "" : "_",
                     picture_name.c_str(), frame.increment);
-      pictures.push_back(render(o, frame, grids[k], shots[k].loads, shots[k].load_surface));
+      pictures.push_back(render(o, frame, grids[k], shots[k].loads->rows, shots[k].loads->surface));
       files.push_back(name);
       write_png(pictures.back(), (folder / name).string());
       std::printf("%s\n", (folder / name).c_str());

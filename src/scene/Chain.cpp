@@ -12,11 +12,10 @@
 namespace anvil::scene {
 namespace {
 
+/// The kind to_string names `type` (checked by the schema), else forge.
 OperationKind operation_kind(const std::string& type) {
-  if (type == "transfer") return OperationKind::transfer;
-  if (type == "dwell") return OperationKind::dwell;
-  if (type == "cool") return OperationKind::cool;
-  if (type == "trim") return OperationKind::trim;
+  for (OperationKind kind : {OperationKind::transfer, OperationKind::dwell, OperationKind::cool, OperationKind::trim})
+    if (type == to_string(kind)) return kind;
   return OperationKind::forge;
 }
 

@@ -394,7 +394,7 @@ RunState initial_state(const Scene& scene, const RunState* part) {
       else
         log::info("die '%s': another surface than the one of that name before (%zu vertices, then %zu): its wear "
                   "starts from zero",
-                  scene.dies[d].name.c_str(), state.wear[d].size(), part->wear[d].size());
+                  scene.dies[d].name.c_str(), part->wear[d].size(), state.wear[d].size());
     }
   }
   state.volume.initial = part ? part->volume.initial : mesh::volume(state.mesh);
