@@ -15,9 +15,6 @@ std::array<int, 3> sorted(Triangle f) {
   return f;
 }
 
-// Faces of a positively oriented tet, each ordered with its normal pointing out.
-constexpr int kFaceVertices[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-
 } // namespace
 
 void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged, const std::vector<int>& tags) {

@@ -5,6 +5,7 @@
 #include "anvil/core/processes.h"
 #include "anvil/io/Checkpoint.h"
 #include "anvil/mesh/TetMesh.h"
+#include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/die_feature_depth.h"
@@ -23,6 +24,7 @@
 #include <cstdio>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <stop_token>
 #include <thread>
 
@@ -178,6 +180,20 @@ double relative(double after, double before) {
   return before != 0.0 ? after / before - 1.0 : after - before;
 }
 
+/// Logs what fitting a new mesh to the dies did: `put_back` took its volume
+/// from `remeshed` to `put_back_volume` (mm³), and the material given back
+/// (the free surface moved `given_back`, mm) to `after`.
+void log_fit(const PutBack& put_back, double remeshed, double put_back_volume, double given_back, double after) {
+  if (put_back.nodes + put_back.closed > 0)
+    log::info("    put onto the dies: %d new boundary nodes inside them (deepest %.3g mm), %d off them where the old "
+              "surface touched (widest gap %.3g mm): volume %+.4f%% (contact projection)",
+              put_back.nodes, put_back.deepest, put_back.closed, put_back.widest,
+              100.0 * relative(put_back_volume, remeshed));
+  if (given_back != 0.0)
+    log::info("    material given back: the free surface moved %+.3g mm along its outward normal, volume %+.4f%%",
+              given_back, 100.0 * relative(after, put_back_volume));
+}
+
 /// A body remeshed around its poor elements, with its fields.
 struct LocalRemesh {
   mesh::TetMesh mesh;
@@ -187,7 +203,12 @@ struct LocalRemesh {
   Eigen::VectorXd temperature;             ///< a node; empty when isothermal
   Eigen::VectorXd material;                ///< 3 a node: where it started; empty without flow lines
   int rebuilt = 0;                         ///< tets of the old mesh rebuilt
-  double worst = 1.0;                      ///< worst quality of the rebuilt region
+  RegionSurface surface = RegionSurface::kept;
+  double worst = 1.0; ///< worst quality of the rebuilt region
+  /// With the surface rebuilt: mm³ of CGAL's mesh and after the put-back onto the dies, what that and keep_material
+  /// did.
+  double volume_remeshed = 0.0, volume_put_back = 0.0, given_back = 0.0;
+  PutBack put_back;
   double strain_integral_change = 0.0, strain_max_change = 0.0; ///< relative, over the body
 };
 
@@ -195,6 +216,11 @@ struct LocalRemesh {
 constexpr int kRegionLayers = 2;
 /// A region larger than this share of a body is rebuilt whole.
 constexpr double kMostLocal = 0.5;
+/// CGAL splits edges longer than 4/3 of its length (with a margin): a region
+/// whose surface is rebuilt has such edges of its border bisected first, in
+/// up to kBorderPasses passes (a bisection can leave another long edge).
+constexpr double kCgalSplits = 4.0 / 3.0 / 1.01;
+constexpr int kBorderPasses = 3;
 
 /// The tets of `m` that `keep` flags, as a mesh of their own.
 mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
@@ -212,20 +238,95 @@ mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
   return out;
 }
 
-/// Body `b`'s mesh `part` rebuilt where its elements are poor (rebuild_region),
-/// the rest kept bit for bit with its fields; the fields transferred in the
-/// rebuilt region only. Nothing, with `why_not` saying why, when the region
-/// is most of the body or the result's region is still below the trigger
-/// (its poor elements are held by the surface, which a local remesh keeps).
-std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, const mesh::TetMesh& part,
-                                          const Eigen::Ref<const Eigen::VectorXd>& part_nodal,
-                                          const std::vector<double>& part_strain,
-                                          const std::vector<std::vector<double>>& part_damage,
-                                          const double* part_temperature, const double* part_material, double time_step,
+/// A body's mesh and the fields a remesh carries.
+struct BodyFields {
+  mesh::TetMesh mesh;
+  Eigen::VectorXd nodal;                   ///< 4 a node: v, p
+  std::vector<double> strain;              ///< ε̄ a tet
+  std::vector<std::vector<double>> damage; ///< D a tet, per damage criterion
+  std::vector<double> temperature;         ///< a node; empty when isothermal
+  std::vector<double> material;            ///< 3 a node; empty without flow lines
+  std::vector<int> touching_die;           ///< a node: the die it presses on, or −1
+};
+
+/// Bisects the edges longer than `longest` (mm) between two nodes of the
+/// tets `region` flags that kept tets share too (the region's border),
+/// carrying `fields` and `region` onto the halves. Returns whether any was.
+bool bisect_long_border_edges(BodyFields& fields, std::vector<char>& region, double longest) {
+  mesh::TetMesh& m = fields.mesh;
+  std::vector<char> in_region(m.nodes.size(), 0), in_kept(m.nodes.size(), 0);
+  for (int e = 0; e < m.tet_count(); ++e)
+    for (int v : m.tets[e])
+      (region[e] ? in_region : in_kept)[v] = 1;
+  std::set<std::array<int, 2>> long_edges;
+  for (int e = 0; e < m.tet_count(); ++e) {
+    if (!region[e]) continue;
+    const mesh::Tet& t = m.tets[e];
+    for (int a = 0; a < 4; ++a)
+      for (int c = a + 1; c < 4; ++c)
+        if (in_kept[t[a]] && in_kept[t[c]] && (m.nodes[t[a]] - m.nodes[t[c]]).norm() > longest)
+          long_edges.insert({std::min(t[a], t[c]), std::max(t[a], t[c])});
+  }
+  if (long_edges.empty()) return false;
+  const int nodes_before = m.node_count();
+  const mesh::Bisection cut = mesh::bisect_edges(m, {long_edges.begin(), long_edges.end()});
+  auto by_parent = [&](auto& values) {
+    auto halves = values;
+    halves.resize(cut.parent.size());
+    for (std::size_t e = 0; e < cut.parent.size(); ++e)
+      halves[e] = values[cut.parent[e]];
+    values = std::move(halves);
+  };
+  by_parent(region);
+  by_parent(fields.strain);
+  for (std::vector<double>& d : fields.damage)
+    by_parent(d);
+  // Nodal fields: the mean of the edge's ends at its midpoint (P1, exact).
+  auto at_midpoints = [&](auto& values, int stride) {
+    values.conservativeResize(stride * m.node_count());
+    for (std::size_t k = 0; k < cut.midpoint_of.size(); ++k) {
+      const auto& [a, c] = cut.midpoint_of[k];
+      values.segment(stride * (nodes_before + k), stride) =
+          0.5 * (values.segment(stride * a, stride) + values.segment(stride * c, stride));
+    }
+  };
+  at_midpoints(fields.nodal, 4);
+  auto at_midpoints_std = [&](std::vector<double>& values, int stride) {
+    if (values.empty()) return;
+    Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(values.data(), Eigen::Index(values.size()));
+    at_midpoints(v, stride);
+    values.assign(v.data(), v.data() + v.size());
+  };
+  at_midpoints_std(fields.temperature, 1);
+  at_midpoints_std(fields.material, 3);
+  for (const auto& [a, c] : cut.midpoint_of)
+    fields.touching_die.push_back(fields.touching_die[a] == fields.touching_die[c] ? fields.touching_die[a] : -1);
+  return true;
+}
+
+/// Body `b`'s mesh `part` rebuilt where its elements are poor (rebuild_region)
+/// or around the die corners of `due`, the rest kept bit for bit with its
+/// fields; the fields transferred in the rebuilt region only. The region's
+/// surface is kept when that is enough; it is rebuilt around a die corner,
+/// or when the poor elements are held by the surface, and then its new
+/// nodes are put onto the dies and the material `material` (mm³) kept on
+/// its new free surface. Nothing, with `why_not` saying why, when the
+/// region is most of the body or its result is still below the trigger.
+std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene::RunState& state, int b,
+                                          const RemeshDue& due, BodyFields fields, double material, double time_step,
                                           std::string& why_not) {
   const scene::RemeshSpec& spec = scene.input.remeshing;
   const scene::Body& body = scene.bodies[b];
-  const std::vector<char> region = rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
+  mesh::TetMesh& part = fields.mesh;
+  const Eigen::VectorXd& part_nodal = fields.nodal;
+  const std::vector<double>& part_strain = fields.strain;
+  const std::vector<std::vector<double>>& part_damage = fields.damage;
+  std::vector<char> region = rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
+  if (!due.die_corners.empty()) {
+    const std::vector<char> around = region_around(part, due.die_corners, body.remesh_size, kRegionLayers);
+    for (std::size_t e = 0; e < region.size(); ++e)
+      region[e] = region[e] || around[e];
+  }
   LocalRemesh out;
   out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1));
   char text[200];
@@ -243,28 +344,71 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, int b, cons
   settings.edge_length = body.remesh_size;
   settings.feature_angle = spec.feature_angle;
   settings.iterations = spec.iterations;
+  settings.quality_floor = spec.quality;
   RegionRemesh local;
-  try {
-    local = remesh_region(part, region, settings);
-  } catch (const RunError& error) {
-    why_not = error.what();
-    return std::nullopt;
-  }
-  for (int e = local.kept_tets; e < local.mesh.tet_count(); ++e)
-    out.worst = std::min(out.worst, mesh::quality(local.mesh, e));
-  if (out.worst < spec.quality) {
-    std::snprintf(text, sizeof text,
-                  "a local remesh of %d elements left worst quality %.3f (its surface, which it keeps, holds it)",
-                  out.rebuilt, out.worst);
+  mesh::TetMesh before_fit; // CGAL's mesh of the old region, before the fit to the dies: ε̄ is remapped on it
+  // One try: the region remeshed with its surface kept or rebuilt; false,
+  // with why_not, when it failed or left an element below the trigger.
+  auto rebuild = [&](RegionSurface surface) {
+    out.surface = surface;
+    try {
+      std::vector<char> pinned(part.nodes.size(), 0);
+      for (std::size_t n = 0; n < pinned.size(); ++n)
+        pinned[n] = fields.touching_die[n] >= 0;
+      local = remesh_region(part, region, settings, surface, pinned);
+    } catch (const RunError& error) {
+      why_not = error.what();
+      return false;
+    }
+    if (surface == RegionSurface::rebuilt) {
+      std::vector<char> fresh(local.mesh.nodes.size(), 0);
+      for (std::size_t n = 0; n < fresh.size(); ++n)
+        fresh[n] = local.old_node[n] < 0;
+      before_fit = local.mesh;
+      out.volume_remeshed = mesh::volume(local.mesh);
+      out.put_back = put_onto_dies(local.mesh, part, fields.touching_die, scene, b, state.dies, settings.edge_length,
+                                   spec.quality, fresh);
+      out.volume_put_back = mesh::volume(local.mesh);
+      out.given_back = keep_material(local.mesh, scene, b, state.dies, material, settings.edge_length, fresh);
+      if (const std::string fault = mesh::fault(local.mesh); !fault.empty()) {
+        why_not = "locally remeshed body fitted to the dies: " + fault;
+        return false;
+      }
+    }
+    out.worst = 1.0;
+    for (int e = local.kept_tets; e < local.mesh.tet_count(); ++e)
+      out.worst = std::min(out.worst, mesh::quality(local.mesh, e));
+    if (out.worst >= spec.quality) return true;
+    std::snprintf(text, sizeof text, "a local remesh of %d elements, its surface %s, left worst quality %.3f",
+                  out.rebuilt, surface == RegionSurface::kept ? "kept" : "rebuilt", out.worst);
     why_not = text;
-    return std::nullopt;
+    return false;
+  };
+  // Poor elements are rebuilt inside the surface (the contact surface
+  // stays where it is); a die corner needs new surface nodes around it.
+  // Rebuilding the surface where it holds poor elements moved the flash
+  // case's load by 2-6 % (its contact nodes in the region resampled), no
+  // less than a whole remesh: those take the whole body.
+  if (due.die_corners.empty()) {
+    if (!rebuild(RegionSurface::kept)) return std::nullopt;
+  } else {
+    // CGAL would split the border's edges longer than 4/3 of its length:
+    // they are bisected first, on both sides (the kept tets keep their
+    // nodes and shape, their fields exactly).
+    for (int pass = 0; pass < kBorderPasses; ++pass)
+      if (!bisect_long_border_edges(fields, region, kCgalSplits * settings.edge_length)) break;
+    out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1));
+    if (!rebuild(RegionSurface::rebuilt)) return std::nullopt;
   }
+  // The nodal fields, taken after the bisection may have moved them.
+  const double* part_temperature = fields.temperature.empty() ? nullptr : fields.temperature.data();
+  const double* part_material = fields.material.empty() ? nullptr : fields.material.data();
   // Fields: the kept nodes and tets keep theirs; the new ones take them from
   // the old region, ε̄ and D by the conservative remap.
   const mesh::TetMesh old_region = tets_of(part, region);
   std::vector<char> is_new(local.mesh.tets.size(), 0);
   std::fill(is_new.begin() + local.kept_tets, is_new.end(), 1);
-  const mesh::TetMesh new_region = tets_of(local.mesh, is_new);
+  const mesh::TetMesh new_region = tets_of(out.surface == RegionSurface::kept ? local.mesh : before_fit, is_new);
   const PointLocator in_old(old_region);
   // An element field of the body on the local mesh: kept tets first (remesh_region's order), then the new.
   auto element_field = [&](const std::vector<double>& values) {
@@ -385,9 +529,18 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     }
     if (why->local) {
       std::string whole;
+      BodyFields fields{
+          part,
+          Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count),
+          part_strain,
+          part_damage,
+          {},
+          {},
+          {touching_die.begin() + range.first_node, touching_die.begin() + range.first_node + range.node_count}};
+      if (thermal) fields.temperature.assign(part_temperature, part_temperature + range.node_count);
+      if (flow_lines) fields.material.assign(part_material, part_material + 3 * range.node_count);
       std::optional<LocalRemesh> local =
-          remesh_locally(scene, int(b), part, Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count),
-                         part_strain, part_damage, part_temperature, part_material, time_step, whole);
+          remesh_locally(scene, state, int(b), *why, std::move(fields), material_before[b], time_step, whole);
       if (local) {
         ranges.push_back(mesh::append(next, local->mesh));
         append_values(nodal, local->nodal.data(), local->nodal.size());
@@ -408,13 +561,25 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
                                    local->strain_max_change,
                                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
         record.rebuilt_share = double(local->rebuilt) / part.tet_count();
+        const bool kept_surface = local->surface == RegionSurface::kept;
+        if (!kept_surface) {
+          // As for a whole remesh: CGAL's change and the material given
+          // back, and apart the put-back's (a contact projection).
+          const double volume_after = mesh::volume(local->mesh);
+          record.volume_change = relative(local->volume_remeshed, mesh::volume(part));
+          state.volume.remeshing += local->volume_remeshed - mesh::volume(part) + volume_after - local->volume_put_back;
+          state.volume.projection += local->volume_put_back - local->volume_remeshed;
+        }
         state.remeshes.push_back(record);
-        log::info(
-            "  remesh '%s' (%s), local: %d of %d elements rebuilt, the rest and the surface kept; %d -> %d nodes; "
-            "worst quality %.3f -> %.3f; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
-            scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, part.tet_count(), record.nodes_before,
-            record.nodes_after, record.worst_quality_before, record.worst_quality_after,
-            100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
+        log::info("  remesh '%s' (%s), local: %d of %d elements rebuilt, the rest and %s kept; %d -> %d nodes; "
+                  "worst quality %.3f -> %.3f; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
+                  scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, part.tet_count(),
+                  kept_surface ? "the surface" : "the surface outside the region", record.nodes_before,
+                  record.nodes_after, record.worst_quality_before, record.worst_quality_after,
+                  100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
+        if (!kept_surface)
+          log_fit(local->put_back, local->volume_remeshed, local->volume_put_back, local->given_back,
+                  mesh::volume(local->mesh));
         continue;
       }
       log::info("  remesh '%s': the whole body, as %s", scene.bodies[b].name.c_str(), whole.c_str());
@@ -525,14 +690,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
               fresh.tet_count(), best.edge_length, record.worst_quality_before, record.worst_quality_after,
               100.0 * record.volume_change, 100.0 * record.strain_integral_change, 100.0 * record.strain_max_change,
               record.seconds);
-    if (best.put_back.nodes + best.put_back.closed > 0)
-      log::info("    put onto the dies: %d new boundary nodes inside them (deepest %.3g mm), %d off them where the old "
-                "surface touched (widest gap %.3g mm): volume %+.4f%% (contact projection)",
-                best.put_back.nodes, best.put_back.deepest, best.put_back.closed, best.put_back.widest,
-                100.0 * relative(best.volume_put_back, volume_remeshed));
-    if (best.given_back != 0.0)
-      log::info("    material given back: the free surface moved %+.3g mm along its outward normal, volume %+.4f%%",
-                best.given_back, 100.0 * relative(volume_after, best.volume_put_back));
+    log_fit(best.put_back, volume_remeshed, best.volume_put_back, best.given_back, volume_after);
     if (volume_after != volume_remeshed)
       log::info("    integral of strain %+.3f%% by these moves (the elements carry their values)",
                 100.0 * relative(integral(fresh, fresh_strain), strain_remeshed));

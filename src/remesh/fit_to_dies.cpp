@@ -12,7 +12,7 @@ namespace anvil::remesh {
 
 PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<const int> touching_die,
                       const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
-                      double element_size, double quality_floor) {
+                      double element_size, double quality_floor, std::span<const char> movable) {
   // The new boundary lies on the old one, and nodal contact lets a die
   // corner sink between nodes: new nodes there start inside the die, where
   // the next increment would push them out at once. They are put onto it
@@ -50,7 +50,7 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
   PutBack done;
   const double one_pass = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < fresh.nodes.size(); ++i) {
-    if (!on_boundary[i]) continue;
+    if (!on_boundary[i] || (!movable.empty() && !movable[i])) continue;
     mesh::Point x = fresh.nodes[i];
     std::array<bool, 3> free{true, true, true};
     for (const auto& [axis, coordinate] : planes)
@@ -76,7 +76,8 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
 }
 
 double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body,
-                     std::span<const scene::DieState> dies_now, double material, double element_size) {
+                     std::span<const scene::DieState> dies_now, double material, double element_size,
+                     std::span<const char> movable) {
   // CGAL's mesh keeps the old mesh's volume (restore_volume) but not its
   // material: its chords cut across die fillets, the restoration pushes
   // nodes on the dies into them, and the put-back then cuts off more than
@@ -92,6 +93,9 @@ double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body,
       for (int f : scene::select_faces(fresh, bc.faces))
         for (int v : fresh.boundary_faces[f])
           free_node[v] = 0;
+  if (!movable.empty())
+    for (std::size_t i = 0; i < fresh.nodes.size(); ++i)
+      free_node[i] = free_node[i] && movable[i];
   const double off_die = 0.1 * element_size;
   for (std::size_t i = 0; i < fresh.nodes.size(); ++i)
     for (std::size_t d = 0; d < scene.dies.size() && free_node[i]; ++d)

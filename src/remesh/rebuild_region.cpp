@@ -13,6 +13,20 @@ std::vector<char> rebuild_region(const mesh::TetMesh& part, const Eigen::Ref<con
     flagged[e] = mesh::quality(part, e) < threshold ||
                  mesh::quality(moved(t[0]), moved(t[1]), moved(t[2]), moved(t[3])) < threshold;
   }
+  return grow_region(part, std::move(flagged), layers);
+}
+
+std::vector<char> region_around(const mesh::TetMesh& part, std::span<const mesh::Point> points, double radius,
+                                int layers) {
+  std::vector<char> flagged(part.tets.size(), 0);
+  for (int e = 0; e < part.tet_count(); ++e)
+    for (const mesh::Point& x : points)
+      for (int v : part.tets[e])
+        flagged[e] = flagged[e] || (part.nodes[v] - x).norm() <= radius;
+  return grow_region(part, std::move(flagged), layers);
+}
+
+std::vector<char> grow_region(const mesh::TetMesh& part, std::vector<char> flagged, int layers) {
   std::vector<char> touched(part.nodes.size(), 0);
   for (int layer = 0; layer < layers; ++layer) {
     for (int e = 0; e < part.tet_count(); ++e)

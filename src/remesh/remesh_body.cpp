@@ -24,12 +24,20 @@
 #include <numeric>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
+
+#include <boost/functional/hash.hpp>
 
 namespace anvil::remesh {
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Triangulation = CGAL::Tetrahedral_remeshing::Remeshing_triangulation_3<Kernel>;
 using VertexHandle = Triangulation::Vertex_handle;
+
+/// A region's remesh length is at least this share above 3/4 of its longest
+/// border edge, so that CGAL (which splits edges beyond 4/3 of it) leaves the
+/// border whole.
+constexpr double kBorderMargin = 1.01;
 
 /// Face key as build_triangulation looks it up: the smallest index first, the rest in order.
 std::array<int, 3> facet_key(const mesh::Triangle& f) {
@@ -140,6 +148,42 @@ std::vector<int> build(const mesh::TetMesh& body, double feature_angle, Subdomai
   return tag_of_patch;
 }
 
+/// Puts the boundary nodes of `out` that `movable` flags (CGAL's new or
+/// moved ones) back onto the surface of `body` (patches `patch`, tags
+/// `tag_of_patch`) and gives `out` the volume `volume` on its curved patches.
+/// CGAL smooths the vertices of a curved patch in its tangent plane, which
+/// lets them sink below the old surface (0.34 % of a quarter cylinder's
+/// volume at h = R/10); what is left after the move is the chord error of
+/// the new facets. Not where that would leave an element below
+/// `quality_floor` (in a die fillet's groove this move can flatten an
+/// element): the volume restoration makes up what such a node leaves.
+void settle_on_old_surface(mesh::TetMesh& out, const mesh::TetMesh& body, const std::vector<int>& patch,
+                           const std::vector<int>& tag_of_patch, const std::vector<char>& movable, double volume,
+                           double quality_floor) {
+  const contact::SurfaceSearch old_surface(body.nodes, body.boundary_faces);
+  std::vector<char> on_boundary = mesh::boundary_node_flags(out);
+  for (std::size_t n = 0; n < on_boundary.size(); ++n)
+    on_boundary[n] = on_boundary[n] && movable[n];
+  mesh::QualityGuard guard(out);
+  for (std::size_t n = 0; n < out.nodes.size(); ++n)
+    if (on_boundary[n]) guard.move(out, int(n), old_surface.closest(out.nodes[n]).point, quality_floor);
+  // A node on the border of a flat patch may land on the curved face next
+  // to it (off a symmetry plane by a fraction of a µm, enough to make the
+  // plane's faces no longer coplanar): flat patches keep their nodes.
+  const auto planes = flat_tags(body);
+  for (std::size_t f = 0; f < out.boundary_faces.size(); ++f) {
+    const auto plane = planes.find(out.boundary_tags[f]);
+    if (plane == planes.end()) continue;
+    const auto& [normal, offset] = plane->second;
+    for (int v : out.boundary_faces[f])
+      if (movable[v]) out.nodes[v] -= (normal.dot(out.nodes[v]) - offset) * normal;
+  }
+  std::vector<char> restorable = inside_curved_patches(out, curved_tags(body, patch, tag_of_patch));
+  for (std::size_t n = 0; n < restorable.size(); ++n)
+    restorable[n] = restorable[n] && movable[n];
+  mesh::restore_volume(out, volume, restorable);
+}
+
 } // namespace
 
 mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {
@@ -227,57 +271,88 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
     return *std::min_element(a.begin(), a.end()) < *std::min_element(b.begin(), b.end());
   });
   mesh::build_boundary(out, tagged, tags);
-  // CGAL smooths the vertices of a curved patch in its tangent plane, which
-  // lets them sink below the old surface (0.34 % of a quarter cylinder's
-  // volume at h = R/10). Put boundary nodes back on the old surface; what is
-  // left is the chord error of the new facets. Not where that would leave an
-  // element below quality_floor (in a die fillet's groove this move can
-  // flatten an element): restore_volume makes up
-  // the volume such a node leaves.
-  const contact::SurfaceSearch old_surface(body.nodes, body.boundary_faces);
-  const std::vector<char> on_boundary = mesh::boundary_node_flags(out);
-  mesh::QualityGuard guard(out);
-  for (std::size_t n = 0; n < out.nodes.size(); ++n)
-    if (on_boundary[n]) guard.move(out, int(n), old_surface.closest(out.nodes[n]).point, settings.quality_floor);
-  // A node on the border of a flat patch may land on the curved face next
-  // to it (off a symmetry plane by a fraction of a µm, enough to make the
-  // plane's faces no longer coplanar): flat patches keep their nodes.
-  const auto planes = flat_tags(body);
-  for (std::size_t f = 0; f < out.boundary_faces.size(); ++f) {
-    const auto plane = planes.find(out.boundary_tags[f]);
-    if (plane == planes.end()) continue;
-    const auto& [normal, offset] = plane->second;
-    for (int v : out.boundary_faces[f])
-      out.nodes[v] -= (normal.dot(out.nodes[v]) - offset) * normal;
-  }
-  mesh::restore_volume(out, mesh::volume(body), inside_curved_patches(out, curved_tags(body, patch, tag_of_patch)));
+  settle_on_old_surface(out, body, patch, tag_of_patch, std::vector<char>(out.nodes.size(), 1), mesh::volume(body),
+                        settings.quality_floor);
   if (const std::string why = mesh::fault(out); !why.empty()) throw RunError("remeshed body: " + why);
   return out;
 }
 
-RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebuilt, const RemeshSettings& settings) {
-  // The kept tets are outside for CGAL (subdomain 0), and every boundary,
-  // the region's border with them included, is frozen: CGAL changes the
-  // region's inside only, and every vertex on its border stays where it is.
+RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebuilt, const RemeshSettings& settings,
+                           RegionSurface surface, std::span<const char> pinned) {
+  // The kept tets are outside for CGAL (subdomain 0): it changes the
+  // region's inside only. With the surface kept every boundary is frozen,
+  // the region's border with the kept tets included. With the surface
+  // rebuilt the boundaries are remeshed, and the border with the kept tets
+  // is held by making its edges constraints: their vertices become CGAL
+  // corners (more than two constrained edges each), which no smoothing
+  // moves and no collapse removes, and a constrained edge is not flipped.
+  // CGAL may still split one longer than 4/3 of the length asked: that
+  // border is then not the kept tets' any more, and the remesh is refused.
   Triangulation tr;
   std::vector<VertexHandle> handles;
   std::vector<int> patch;
-  build(
+  const std::vector<int> tag_of_patch = build(
       body, settings.feature_angle, [&](std::size_t e) { return rebuilt[e] ? 1 : 0; }, tr, handles, patch);
-  CGAL::tetrahedral_isotropic_remeshing(
-      tr, settings.edge_length, CGAL::parameters::number_of_iterations(settings.iterations).remesh_boundaries(false));
-
-  // The nodes that stay: those of kept tets and on the region's boundary,
-  // which CGAL could not move or remove; their handles live on.
   const int n = body.node_count();
   std::vector<char> stays(static_cast<std::size_t>(n), 0);
   for (std::size_t e = 0; e < body.tets.size(); ++e)
     if (!rebuilt[e])
       for (int v : body.tets[e])
         stays[v] = 1;
-  for (const mesh::Triangle& f : body.boundary_faces)
-    for (int v : f)
-      stays[v] = 1;
+  // The border between the region and the kept tets, as sorted node triples.
+  std::set<std::array<int, 3>> border;
+  {
+    std::map<std::array<int, 3>, int> sides; // face -> 1 region, 2 kept, 3 both
+    for (std::size_t e = 0; e < body.tets.size(); ++e)
+      for (const auto& fv : mesh::kFaceVertices) {
+        const mesh::Tet& t = body.tets[e];
+        std::array<int, 3> key{t[fv[0]], t[fv[1]], t[fv[2]]};
+        std::sort(key.begin(), key.end());
+        sides[key] |= rebuilt[e] ? 1 : 2;
+      }
+    for (const auto& [key, side] : sides)
+      if (side == 3) border.insert(key);
+  }
+  if (surface == RegionSurface::kept) {
+    CGAL::tetrahedral_isotropic_remeshing(
+        tr, settings.edge_length, CGAL::parameters::number_of_iterations(settings.iterations).remesh_boundaries(false));
+    for (const mesh::Triangle& f : body.boundary_faces)
+      for (int v : f)
+        stays[v] = 1;
+  } else {
+    // CGAL splits an edge longer than 4/3 of the length asked: the length
+    // is raised so that no border edge is.
+    double longest = 0.0;
+    for (const std::array<int, 3>& f : border)
+      for (int a = 0; a < 3; ++a)
+        longest = std::max(longest, (body.nodes[f[a]] - body.nodes[f[(a + 1) % 3]]).norm());
+    const double length = std::max(settings.edge_length, kBorderMargin * 0.75 * longest);
+    if (length > settings.edge_length)
+      log::detail("    local remesh at %.3g mm (asked %.3g): its border with the kept elements has an edge of %.3g mm",
+                  length, settings.edge_length, longest);
+    using Edge = std::pair<VertexHandle, VertexHandle>;
+    std::unordered_set<Edge, boost::hash<Edge>> constrained;
+    for (const std::array<int, 3>& f : border)
+      for (int a = 0; a < 3; ++a) {
+        VertexHandle v = handles[f[a] + 1], w = handles[f[(a + 1) % 3] + 1];
+        constrained.insert(w < v ? Edge(w, v) : Edge(v, w));
+      }
+    if (!pinned.empty())
+      for (const mesh::Triangle& f : body.boundary_faces)
+        for (int a = 0; a < 3; ++a)
+          if (pinned[f[a]] && pinned[f[(a + 1) % 3]]) {
+            VertexHandle v = handles[f[a] + 1], w = handles[f[(a + 1) % 3] + 1];
+            constrained.insert(w < v ? Edge(w, v) : Edge(v, w));
+          }
+    CGAL::tetrahedral_isotropic_remeshing(tr, length,
+                                          CGAL::parameters::number_of_iterations(settings.iterations)
+                                              .remesh_boundaries(true)
+                                              .smooth_constrained_edges(false)
+                                              .edge_is_constrained_map(CGAL::Boolean_property_map(constrained)));
+  }
+
+  // The nodes that stay (those of kept tets, and with the surface kept those
+  // of the boundary), which CGAL could not move or remove: their handles live on.
   RegionRemesh out;
   std::unordered_map<VertexHandle, int> number;
   for (int i = 0; i < n; ++i)
@@ -294,7 +369,14 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
       out.mesh.tets.push_back(t);
     }
   out.kept_tets = out.mesh.tet_count();
+  // A region node CGAL left where it was keeps its number in the body.
+  std::unordered_map<VertexHandle, int> original;
+  for (int i = 0; i < n; ++i)
+    if (!stays[i]) original.emplace(handles[i + 1], i);
   // The new region: its new vertices after the kept ones, its tets after the kept tets.
+  std::vector<mesh::Triangle> tagged;
+  std::vector<int> tags;
+  std::size_t border_faces = 0;
   for (auto c : tr.finite_cell_handles()) {
     if (c->subdomain_index() == 0) continue;
     mesh::Tet t;
@@ -302,18 +384,68 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
       const auto [it, added] = number.try_emplace(c->vertex(i), static_cast<int>(out.mesh.nodes.size()));
       if (added) {
         const auto& x = c->vertex(i)->point();
-        out.mesh.nodes.emplace_back(x.x(), x.y(), x.z());
-        out.old_node.push_back(-1);
+        const mesh::Point at(x.x(), x.y(), x.z());
+        const auto was = original.find(c->vertex(i));
+        out.mesh.nodes.push_back(at);
+        out.old_node.push_back(was != original.end() && body.nodes[was->second] == at ? was->second : -1);
       }
       t[i] = it->second;
     }
     out.mesh.tets.push_back(t);
+    if (surface == RegionSurface::kept) continue;
+    for (int i = 0; i < 4; ++i) {
+      const VertexHandle a = c->vertex((i + 1) % 4), b = c->vertex((i + 2) % 4), d = c->vertex((i + 3) % 4);
+      if (c->neighbor(i)->subdomain_index() != 0) continue;
+      std::array<int, 3> key{-1, -1, -1};
+      const int pa = number.at(a), pb = number.at(b), pd = number.at(d);
+      if (out.old_node[pa] >= 0 && out.old_node[pb] >= 0 && out.old_node[pd] >= 0) {
+        key = {out.old_node[pa], out.old_node[pb], out.old_node[pd]};
+        std::sort(key.begin(), key.end());
+      }
+      if (border.count(key) > 0) {
+        ++border_faces;
+        continue;
+      }
+      const int p = c->surface_patch_index(i);
+      tagged.push_back({pa, pb, pd});
+      tags.push_back(p > 0 && p < static_cast<int>(tag_of_patch.size()) ? tag_of_patch[p] : 0);
+    }
   }
-  // The boundary is the body's, face for face.
-  std::vector<mesh::Triangle> tagged;
-  for (const mesh::Triangle& f : body.boundary_faces)
-    tagged.push_back({number.at(handles[f[0] + 1]), number.at(handles[f[1] + 1]), number.at(handles[f[2] + 1])});
-  mesh::build_boundary(out.mesh, tagged, body.boundary_tags);
+  if (surface == RegionSurface::kept) {
+    // The boundary is the body's, face for face.
+    for (const mesh::Triangle& f : body.boundary_faces)
+      tagged.push_back({number.at(handles[f[0] + 1]), number.at(handles[f[1] + 1]), number.at(handles[f[2] + 1])});
+    tags = body.boundary_tags;
+  } else {
+    if (border_faces != border.size())
+      throw RunError("locally remeshed body: CGAL changed the region's border with the kept elements");
+    // The kept tets' faces on the body's surface keep their tags.
+    std::map<std::array<int, 3>, int> tag_of;
+    for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
+      std::array<int, 3> key = body.boundary_faces[f];
+      std::sort(key.begin(), key.end());
+      tag_of.emplace(key, body.boundary_tags[f]);
+    }
+    for (int e = 0; e < out.kept_tets; ++e)
+      for (const auto& fv : mesh::kFaceVertices) {
+        const mesh::Tet& t = out.mesh.tets[e];
+        std::array<int, 3> key{out.old_node[t[fv[0]]], out.old_node[t[fv[1]]], out.old_node[t[fv[2]]]};
+        std::sort(key.begin(), key.end());
+        if (const auto it = tag_of.find(key); it != tag_of.end()) {
+          tagged.push_back({t[fv[0]], t[fv[1]], t[fv[2]]});
+          tags.push_back(it->second);
+        }
+      }
+  }
+  mesh::build_boundary(out.mesh, tagged, tags);
+  if (out.mesh.boundary_faces.size() != tagged.size())
+    throw RunError("locally remeshed body: its rebuilt region does not fit the kept elements");
+  if (surface == RegionSurface::rebuilt) {
+    std::vector<char> movable(out.mesh.nodes.size(), 0);
+    for (std::size_t v = 0; v < movable.size(); ++v)
+      movable[v] = out.old_node[v] < 0;
+    settle_on_old_surface(out.mesh, body, patch, tag_of_patch, movable, mesh::volume(body), settings.quality_floor);
+  }
   if (const std::string why = mesh::fault(out.mesh); !why.empty()) throw RunError("locally remeshed body: " + why);
   return out;
 }

@@ -52,9 +52,10 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
                 body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
                 q.predicted_worst);
     char why[160] = "";
-    // A local remesh may do for poor elements (it keeps the surface: a die
-    // corner sunk into the body, or a periodic remesh, takes the whole body).
-    const bool local = spec.local && (q.worst < spec.quality || q.predicted_worst <= 0.0);
+    // A local remesh may do for poor elements and for a die corner (its
+    // region's surface rebuilt); a periodic remesh takes the whole body.
+    bool local = spec.local && (q.worst < spec.quality || q.predicted_worst <= 0.0);
+    std::vector<mesh::Point> corners;
     if (q.worst < spec.quality)
       std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
     else if (q.predicted_worst <= 0.0)
@@ -71,13 +72,15 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
           const mesh::Point& x = inside[d].vertex;
           std::snprintf(why, sizeof why, "the vertex of die '%s' at %.3g, %.3g, %.3g mm is %.3g mm inside",
                         scene.dies[d].name.c_str(), x.x(), x.y(), x.z(), inside[d].depth);
+          local = spec.local;
+          corners.push_back(x);
         }
       const double overlap = state.inside_dies[b];
       if (!why[0] && due_again(overlap, spec.die_overlap * body.initial_volume, left.die_overlap))
         std::snprintf(why, sizeof why, "%.3g%% of its initial volume lies inside the dies",
                       100.0 * overlap / body.initial_volume);
     }
-    if (why[0]) due.push_back({int(b), why, local});
+    if (why[0]) due.push_back({int(b), why, local, std::move(corners)});
   }
   return due;
 }

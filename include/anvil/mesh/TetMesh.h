@@ -28,6 +28,10 @@ struct TetMesh {
   int tet_count() const { return static_cast<int>(tets.size()); }
 };
 
+/// The faces of a positively oriented tet (local vertex numbers), each
+/// ordered with its normal pointing out; face k is opposite vertex k.
+inline constexpr int kFaceVertices[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
 /// Area vector of a face: ½ (x1−x0)×(x2−x0), along the outward normal of a
 /// boundary face, of length its area (mm²).
 inline Point area_vector(const TetMesh& mesh, const Triangle& face) {

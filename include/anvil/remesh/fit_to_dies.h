@@ -26,17 +26,20 @@ struct PutBack {
 /// it (`touching_die`, per node of `old`: the die it presses on, or −1).
 /// Nodes on a symmetry plane of the body stay on it. A move that would leave
 /// an element around the node worse than `quality_floor` (or than it was) is
-/// not made: the next increment's contact takes that node.
+/// not made: the next increment's contact takes that node. With `movable`
+/// (a flag per node of `fresh`) only the flagged nodes move (a local remesh's new ones).
 PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<const int> touching_die,
                       const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
-                      double element_size, double quality_floor);
+                      double element_size, double quality_floor, std::span<const char> movable = {});
 
 /// Gives `fresh`, the new mesh of body `body`, the material `material` (mm³:
 /// its volume less its overlap with the dies at `dies_now`) by moving its
 /// free surface (boundary nodes off the symmetry planes and more than a
 /// tenth of `element_size` off the dies) along its normal. Returns the
-/// distance moved (mm; 0 when the scene has no dies).
+/// distance moved (mm; 0 when the scene has no dies). With `movable`, only
+/// the flagged nodes of that free surface move.
 double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body,
-                     std::span<const scene::DieState> dies_now, double material, double element_size);
+                     std::span<const scene::DieState> dies_now, double material, double element_size,
+                     std::span<const char> movable = {});
 
 } // namespace anvil::remesh

@@ -5,6 +5,7 @@
 #include "anvil/mesh/TetMesh.h"
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 namespace anvil::remesh {
@@ -15,5 +16,14 @@ namespace anvil::remesh {
 /// tets around them (tets that share a node with a flagged one).
 std::vector<char> rebuild_region(const mesh::TetMesh& part, const Eigen::Ref<const Eigen::VectorXd>& nodal,
                                  double time_step, double threshold, int layers);
+
+/// Flags of the tets of `part` with a node within `radius` (mm) of one of
+/// `points` (a die corner sunk into the body), and of `layers` layers around them.
+std::vector<char> region_around(const mesh::TetMesh& part, std::span<const mesh::Point> points, double radius,
+                                int layers);
+
+/// `flagged` (one flag per tet of `part`) with `layers` layers of tets
+/// around it (tets that share a node with a flagged one).
+std::vector<char> grow_region(const mesh::TetMesh& part, std::vector<char> flagged, int layers);
 
 } // namespace anvil::remesh

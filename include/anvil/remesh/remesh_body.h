@@ -44,19 +44,27 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
 struct RegionRemesh {
   /// The kept tets first, in the body's order and with its node coordinates
   /// bit for bit, then the region's new tets; the nodes that stay (those of
-  /// kept tets and of the boundary) first, in the body's order, then the new.
+  /// kept tets, and of the boundary when it is kept) first, in the body's
+  /// order, then the others.
   mesh::TetMesh mesh;
-  std::vector<int> old_node; ///< per node of `mesh`: its index in the body, or −1 for a new node
+  std::vector<int> old_node; ///< per node of `mesh`: its index in the body where it is that node unmoved, else −1
   int kept_tets = 0;         ///< tets [0, kept_tets) are the body's tets not rebuilt, in order
 };
 
+/// What a local remesh does with the body's surface in its region.
+enum class RegionSurface {
+  kept,    ///< frozen: the surface keeps its nodes and faces (the contact surface stays where it is)
+  rebuilt, ///< remeshed with the region, new nodes put back onto the old surface, its volume kept
+};
+
 /// Remeshes the tets of `body` that `rebuilt` flags (one flag per tet) at
-/// settings.edge_length, with every boundary frozen: the body's surface and
-/// the region's border with the kept tets keep their nodes and faces, so
-/// the contact surface stays where it is and the kept tets fit the new
-/// ones. Throws RunError when CGAL cannot take the mesh or its result has a
-/// fault.
-RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebuilt, const RemeshSettings& settings);
+/// settings.edge_length. The region's border with the kept tets keeps its
+/// nodes and faces, so the kept tets fit the new ones; so does the body's
+/// surface in the region unless `surface` is RegionSurface::rebuilt. Throws
+/// RunError when CGAL cannot take the mesh, changes the border or its result
+/// has a fault.
+RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebuilt, const RemeshSettings& settings,
+                           RegionSurface surface = RegionSurface::kept, std::span<const char> pinned = {});
 
 /// Patch number (from 1) of each boundary face of `body`, as remesh_body sets them.
 std::vector<int> boundary_patches(const mesh::TetMesh& body, double feature_angle);

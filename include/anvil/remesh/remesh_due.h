@@ -13,10 +13,13 @@ struct RemeshDue {
   int body;
   std::string why;
   /// remeshing.local and a trigger that a local remesh may meet: poor
-  /// elements (now or in the next increment). A die corner sunk into the
-  /// body or its overlap with the dies needs new surface nodes, and a
-  /// periodic remesh is of the whole body: they remesh the whole body.
+  /// elements (now or in the next increment), a die corner sunk into the
+  /// body (its region's surface rebuilt). The overlap with the dies and a
+  /// periodic remesh are of the whole body.
   bool local = false;
+  /// The die vertex sunk into the body that asked for the remesh (mm);
+  /// none for the other triggers.
+  std::vector<mesh::Point> die_corners;
 };
 
 /// The bodies of `state` to remesh after an increment of `dt` (s), by the

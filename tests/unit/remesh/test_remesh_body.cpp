@@ -132,3 +132,66 @@ TEST_CASE("A local remesh rebuilds its region only: the rest keeps its nodes and
   INFO("worst quality in the region " << worst_before << " -> " << worst_after);
   CHECK(worst_after > 2.0 * worst_before);
 }
+
+TEST_CASE("A local remesh with its surface rebuilt keeps the rest and its border bit for bit, the volume and the "
+          "pinned nodes",
+          "[unit][remesh]") {
+  // A box whose nodes near x = 0 (surface nodes too, within their faces'
+  // planes) are squeezed towards x = 2. The tets with a centroid below
+  // x = 3 are rebuilt, the top face's nodes from x = 2.5 on pinned.
+  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
+  for (mesh::Point& x : box.nodes)
+    if (x.x() > 0.0 && x.x() < 2.5) x.x() = 2.0 + 0.05 * (x.x() - 2.0);
+  std::vector<char> rebuilt(box.tets.size(), 0), pinned(box.nodes.size(), 0);
+  for (int e = 0; e < box.tet_count(); ++e)
+    rebuilt[e] = mesh::centroid(box, e).x() < 3.0;
+  for (std::size_t n = 0; n < box.nodes.size(); ++n)
+    pinned[n] = box.nodes[n].z() == 4.0 && box.nodes[n].x() >= 2.5; // the top face, as if on a die
+  remesh::RemeshSettings settings;
+  settings.edge_length = 1.0;
+  auto worst_rebuilt = [](const mesh::TetMesh& m, int from) {
+    double worst = 1.0;
+    for (int e = from; e < m.tet_count(); ++e)
+      worst = std::min(worst, mesh::quality(m, e));
+    return worst;
+  };
+  const remesh::RegionRemesh frozen = remesh::remesh_region(box, rebuilt, settings);
+  const remesh::RegionRemesh out =
+      remesh::remesh_region(box, rebuilt, settings, remesh::RegionSurface::rebuilt, pinned);
+
+  int kept = 0;
+  for (int e = 0; e < box.tet_count(); ++e) {
+    if (rebuilt[e]) continue;
+    REQUIRE(kept < out.kept_tets);
+    for (int a = 0; a < 4; ++a) {
+      const int node = out.mesh.tets[kept][a];
+      CHECK(out.old_node[node] == box.tets[e][a]);
+      CHECK(out.mesh.nodes[node] == box.nodes[box.tets[e][a]]);
+    }
+    ++kept;
+  }
+  CHECK(kept == out.kept_tets);
+  // Pinned nodes kept where they were; every node with an old number unmoved.
+  for (std::size_t n = 0; n < box.nodes.size(); ++n)
+    if (pinned[n]) CHECK(std::count(out.old_node.begin(), out.old_node.end(), int(n)) == 1);
+  for (std::size_t n = 0; n < out.mesh.nodes.size(); ++n)
+    if (out.old_node[n] >= 0) CHECK(out.mesh.nodes[n] == box.nodes[out.old_node[n]]);
+  // The same box: its volume, its six tags, every boundary node on its faces.
+  CHECK(mesh::volume(out.mesh) == Approx(240.0).epsilon(1e-12));
+  CHECK(tags_of(out.mesh) == tags_of(box));
+  for (const mesh::Triangle& f : out.mesh.boundary_faces)
+    for (int v : f) {
+      const mesh::Point& x = out.mesh.nodes[v];
+      const double off = std::min({x.x(), 10 - x.x(), x.y(), 6 - x.y(), x.z(), 4 - x.z()});
+      CHECK(std::abs(off) < 1e-12);
+    }
+  // The region's surface was rebuilt: new boundary nodes (the frozen remesh has none).
+  const std::vector<char> on_boundary = mesh::boundary_node_flags(out.mesh);
+  int new_on_boundary = 0;
+  for (std::size_t n = 0; n < out.mesh.nodes.size(); ++n)
+    new_on_boundary += on_boundary[n] && out.old_node[n] < 0;
+  INFO("worst quality in the region: surface kept " << worst_rebuilt(frozen.mesh, frozen.kept_tets) << ", rebuilt "
+                                                    << worst_rebuilt(out.mesh, out.kept_tets));
+  CHECK(new_on_boundary > 0);
+  CHECK(worst_rebuilt(out.mesh, out.kept_tets) > 0.0);
+}

@@ -79,7 +79,9 @@ TEST_CASE("A die vertex sunk into the body asks for a remesh, and once a remesh 
   auto due = remesh::remesh_due(r.scene, r.state, kStep);
   REQUIRE(due.size() == 1);
   CHECK(due[0].why.find("the vertex of die 'upper'") == 0);
-  CHECK_FALSE(due[0].local); // a die corner needs new surface nodes: the whole body
+  CHECK(due[0].local); // a die corner: its region rebuilt, surface included
+  REQUIRE(due[0].die_corners.size() == 1);
+  CHECK(due[0].die_corners[0].z() > 0.0); // the upper die's vertex
 
   // A remesh that could not fit that vertex left it this deep: not due again at once …
   scene::RemeshRecord record{};
