@@ -7,8 +7,8 @@
 
 namespace anvil::remesh {
 
-std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
-                                           const std::vector<std::vector<mesh::Point>>& die_vertices) {
+std::vector<SunkVertex> sunk_die_vertices(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
+                                          const std::vector<std::vector<mesh::Point>>& die_vertices) {
   mesh::Point low = mesh.nodes[body.first_node], high = low;
   for (int i = body.first_node; i < body.first_node + body.node_count; ++i)
     low = low.cwiseMin(mesh.nodes[i]), high = high.cwiseMax(mesh.nodes[i]);
@@ -21,8 +21,8 @@ std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh
     for (const mesh::Point& x : die_vertices[d])
       if ((x.array() > low.array()).all() && (x.array() < high.array()).all())
         candidates.push_back(x), die_of.push_back(static_cast<int>(d));
-  std::vector<DieFeature> deepest(die_vertices.size());
-  if (candidates.empty()) return deepest;
+  std::vector<SunkVertex> sunk;
+  if (candidates.empty()) return sunk;
   const std::vector<Location> located = PointLocator(mesh).locate(candidates);
   const std::vector<mesh::Triangle> faces(mesh.boundary_faces.begin() + body.first_face,
                                           mesh.boundary_faces.begin() + body.first_face + body.face_count);
@@ -30,9 +30,16 @@ std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh
   for (std::size_t k = 0; k < candidates.size(); ++k) {
     const Location& at = located[k];
     if (!at.inside || at.tet < body.first_tet || at.tet >= body.first_tet + body.tet_count) continue;
-    const double depth = (candidates[k] - surface.closest(candidates[k]).point).norm();
-    if (depth > deepest[die_of[k]].depth) deepest[die_of[k]] = {depth, candidates[k]};
+    sunk.push_back({die_of[k], {(candidates[k] - surface.closest(candidates[k]).point).norm(), candidates[k]}});
   }
+  return sunk;
+}
+
+std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
+                                           const std::vector<std::vector<mesh::Point>>& die_vertices) {
+  std::vector<DieFeature> deepest(die_vertices.size());
+  for (const SunkVertex& v : sunk_die_vertices(mesh, body, die_vertices))
+    if (v.feature.depth > deepest[v.die].depth) deepest[v.die] = v.feature;
   return deepest;
 }
 

@@ -37,6 +37,10 @@ bool due_again(double value, double trigger, double left) {
   return value > std::max(trigger, left + 0.5 * trigger);
 }
 
+/// A die-corner remesh rebuilds around the die vertices deeper than this
+/// share of its trigger.
+constexpr double kAlongEdge = 0.5;
+
 } // namespace
 
 std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt) {
@@ -64,7 +68,10 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
       std::snprintf(why, sizeof why, "every %d increments", spec.every);
     else if (!scene.dies.empty()) {
       if (die_vertices.empty()) die_vertices = dies_in_place(scene, state); // the scene has dies here
-      const std::vector<DieFeature> inside = die_feature_depths(state.mesh, state.bodies[b], die_vertices);
+      const std::vector<SunkVertex> sunk = sunk_die_vertices(state.mesh, state.bodies[b], die_vertices);
+      std::vector<DieFeature> inside(scene.dies.size());
+      for (const SunkVertex& v : sunk)
+        if (v.feature.depth > inside[v.die].depth) inside[v.die] = v.feature;
       const LeftByRemesh left = left_by_last_remesh(state, int(b));
       const double depth_trigger = spec.die_penetration * body.remesh_size;
       for (std::size_t d = 0; d < scene.dies.size() && !why[0]; ++d)
@@ -72,8 +79,12 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
           const mesh::Point& x = inside[d].vertex;
           std::snprintf(why, sizeof why, "the vertex of die '%s' at %.3g, %.3g, %.3g mm is %.3g mm inside",
                         scene.dies[d].name.c_str(), x.x(), x.y(), x.z(), inside[d].depth);
+          // Rebuilt around every die vertex half as deep: a die edge sinks
+          // along its length, and a region around its deepest vertex alone
+          // leaves the rest of it to crush the elements under it.
           local = spec.local;
-          corners.push_back(x);
+          for (const SunkVertex& v : sunk)
+            if (v.feature.depth > kAlongEdge * depth_trigger) corners.push_back(v.feature.vertex);
         }
       const double overlap = state.inside_dies[b];
       if (!why[0] && due_again(overlap, spec.die_overlap * body.initial_volume, left.die_overlap))

@@ -16,6 +16,16 @@ struct DieFeature {
   mesh::Point vertex = mesh::Point::Zero(); ///< mm, where that vertex is
 };
 
+/// A die vertex inside a body.
+struct SunkVertex {
+  int die = 0;
+  DieFeature feature; ///< its depth and place
+};
+
+/// The vertices of the dies (each die's, in place) inside the body `body` of `mesh`.
+std::vector<SunkVertex> sunk_die_vertices(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
+                                          const std::vector<std::vector<mesh::Point>>& die_vertices);
+
 /// For each die (its vertices, in place), its vertex deepest inside the
 /// body `body` of `mesh`.
 std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
