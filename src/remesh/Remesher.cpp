@@ -205,8 +205,8 @@ struct LocalRemesh {
   int rebuilt = 0;                         ///< tets of the old mesh rebuilt
   RegionSurface surface = RegionSurface::kept;
   double worst = 1.0; ///< worst quality of the rebuilt region
-  /// With the surface rebuilt: mm³ of CGAL's mesh and after the put-back onto the dies, what that and keep_material
-  /// did.
+  /// With the surface rebuilt: the volume (mm³) of CGAL's mesh and after the
+  /// put-back onto the dies, and what the put-back and keep_material did.
   double volume_remeshed = 0.0, volume_put_back = 0.0, given_back = 0.0;
   PutBack put_back;
   double strain_integral_change = 0.0, strain_max_change = 0.0; ///< relative, over the body
