@@ -48,6 +48,8 @@ struct Remeshed {
 constexpr double kMostVolumeChange = 0.01;
 /// Nor leave an element worse than this share of remeshing.quality.
 constexpr double kQualityFloorShare = 1.0 / 3.0;
+/// The widest feature angle a last try of a poor remesh takes (deg).
+constexpr double kWidestFeatureAngle = 80.0;
 /// A line on the terminal every this often while CGAL works (s).
 constexpr double kProgressEvery = 5.0;
 
@@ -111,11 +113,11 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   const auto deadline =
       std::chrono::steady_clock::now() +
       std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(spec.time_limit));
-  auto make = [&](double scale) {
+  auto make = [&](double scale, double feature_angle) {
     RemeshSettings settings;
     settings.deadline = deadline;
     settings.edge_length = coarsen * scale * body.remesh_size;
-    settings.feature_angle = spec.feature_angle;
+    settings.feature_angle = feature_angle;
     settings.iterations = spec.iterations;
     settings.quality_floor = spec.quality;
     if (size_field) {
@@ -159,15 +161,22 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   // A result whose worst element is below the trigger would be due again at
   // once: CGAL can keep elements whose four nodes lie on patch borders. It
   // is remade with edges 5 % and then 10 % shorter, which changes where
-  // CGAL splits; the best acceptable try is kept.
+  // CGAL splits, and last with a feature angle twice as wide (at most
+  // kWidestFeatureAngle): a die edge presses a crease into the surface that
+  // the feature angle keeps as a patch border, with the element it crushed
+  // (the connecting rod's 0.002). The best acceptable try is kept.
+  std::vector<std::pair<double, double>> tries{
+      {1.0, spec.feature_angle}, {0.95, spec.feature_angle}, {0.9, spec.feature_angle}};
+  if (const double wider = std::min(2.0 * spec.feature_angle, kWidestFeatureAngle); wider > spec.feature_angle)
+    tries.emplace_back(1.0, wider);
   std::optional<Remeshed> best;
-  for (double scale : {1.0, 0.95, 0.9}) {
+  for (const auto& [scale, angle] : tries) {
     if (best && (best->worst >= spec.quality || std::chrono::steady_clock::now() > deadline)) break;
-    Remeshed again = make(scale);
+    Remeshed again = make(scale, angle);
     const std::string why = fault(again);
-    if (scale != 1.0 || !why.empty())
-      log::info("    remesh of '%s' with h %.3g mm: worst quality %.3f%s%s", body.name.c_str(), again.edge_length,
-                again.worst, why.empty() ? "" : "; not taken: ", why.c_str());
+    if (scale != 1.0 || angle != spec.feature_angle || !why.empty())
+      log::info("    remesh of '%s' with h %.3g mm, feature angle %.0f deg: worst quality %.3f%s%s", body.name.c_str(),
+                again.edge_length, angle, again.worst, why.empty() ? "" : "; not taken: ", why.c_str());
     if (why.empty() && (!best || again.worst > best->worst))
       best = std::move(again);
     else if (!best)
