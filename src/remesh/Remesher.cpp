@@ -5,14 +5,13 @@
 #include "anvil/core/processes.h"
 #include "anvil/io/Checkpoint.h"
 #include "anvil/mesh/TetMesh.h"
-#include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/die_feature_depth.h"
 #include "anvil/remesh/field_transfer.h"
 #include "anvil/remesh/fit_to_dies.h"
+#include "anvil/remesh/local_remesh.h"
 #include "anvil/remesh/quality.h"
-#include "anvil/remesh/rebuild_region.h"
 #include "anvil/remesh/remesh_body.h"
 #include "anvil/remesh/size_field.h"
 #include "anvil/thermal/HeatStep.h"
@@ -24,7 +23,6 @@
 #include <cstdio>
 #include <mutex>
 #include <optional>
-#include <set>
 #include <stop_token>
 #include <thread>
 
@@ -185,15 +183,6 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   return best;
 }
 
-/// The nodal thermal mass of a body `part` of one thermal material.
-thermal::NodalMass nodal_mass(const mesh::TetMesh& part, const thermal::ThermalMaterial& material) {
-  return thermal::nodal_mass(part, std::vector<const thermal::ThermalMaterial*>(part.tets.size(), &material));
-}
-
-double relative(double after, double before) {
-  return before != 0.0 ? after / before - 1.0 : after - before;
-}
-
 /// Logs what fitting a new mesh to the dies did: `put_back` took its volume
 /// from `remeshed` to `put_back_volume` (mm³), and the material given back
 /// (the free surface moved `given_back`, mm) to `after`.
@@ -206,293 +195,6 @@ void log_fit(const PutBack& put_back, double remeshed, double put_back_volume, d
   if (given_back != 0.0)
     log::info("    material given back: the free surface moved %+.3g mm along its outward normal, volume %+.4f%%",
               given_back, 100.0 * relative(after, put_back_volume));
-}
-
-/// A body remeshed around its poor elements, with its fields.
-struct LocalRemesh {
-  mesh::TetMesh mesh;
-  Eigen::VectorXd nodal;                   ///< 4 a node: v, p
-  std::vector<double> strain;              ///< ε̄ a tet
-  std::vector<std::vector<double>> damage; ///< D a tet, per damage criterion
-  Eigen::VectorXd temperature;             ///< a node; empty when isothermal
-  Eigen::VectorXd material;                ///< 3 a node: where it started; empty without flow lines
-  int rebuilt = 0;                         ///< tets of the old mesh rebuilt
-  RegionSurface surface = RegionSurface::kept;
-  double worst = 1.0; ///< worst quality of the rebuilt region
-  /// With the surface rebuilt: the volume (mm³) of CGAL's mesh and after the
-  /// put-back onto the dies, and what the put-back and keep_material did.
-  double volume_remeshed = 0.0, volume_put_back = 0.0, given_back = 0.0;
-  PutBack put_back;
-  double strain_integral_change = 0.0, strain_max_change = 0.0; ///< relative, over the body
-};
-
-/// Layers of elements around the poor ones that a local remesh rebuilds too.
-constexpr int kRegionLayers = 2;
-/// A region larger than this share of a body is rebuilt whole.
-constexpr double kMostLocal = 0.5;
-/// CGAL splits edges longer than 4/3 of its length (with a margin): a region
-/// whose surface is rebuilt has such edges of its border bisected first, in
-/// up to kBorderPasses passes (a bisection can leave another long edge).
-constexpr double kCgalSplits = 4.0 / 3.0 / 1.01;
-constexpr int kBorderPasses = 3;
-
-/// The tets of `m` that `keep` flags, as a mesh of their own.
-mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
-  mesh::TetMesh out;
-  std::vector<int> number(m.nodes.size(), -1);
-  for (int e = 0; e < m.tet_count(); ++e) {
-    if (!keep[e]) continue;
-    mesh::Tet t = m.tets[e];
-    for (int& v : t) {
-      if (number[v] < 0) number[v] = static_cast<int>(out.nodes.size()), out.nodes.push_back(m.nodes[v]);
-      v = number[v];
-    }
-    out.tets.push_back(t);
-  }
-  return out;
-}
-
-/// A body's mesh and the fields a remesh carries.
-struct BodyFields {
-  mesh::TetMesh mesh;
-  Eigen::VectorXd nodal;                   ///< 4 a node: v, p
-  std::vector<double> strain;              ///< ε̄ a tet
-  std::vector<std::vector<double>> damage; ///< D a tet, per damage criterion
-  std::vector<double> temperature;         ///< a node; empty when isothermal
-  std::vector<double> material;            ///< 3 a node; empty without flow lines
-  std::vector<int> touching_die;           ///< a node: the die it presses on, or −1
-};
-
-/// Bisects the edges longer than `longest` (mm) between two nodes of the
-/// tets `region` flags that kept tets share too (the region's border),
-/// carrying `fields` and `region` onto the halves. Returns whether any was.
-bool bisect_long_border_edges(BodyFields& fields, std::vector<char>& region, double longest) {
-  mesh::TetMesh& m = fields.mesh;
-  std::vector<char> in_region(m.nodes.size(), 0), in_kept(m.nodes.size(), 0);
-  for (int e = 0; e < m.tet_count(); ++e)
-    for (int v : m.tets[e])
-      (region[e] ? in_region : in_kept)[v] = 1;
-  std::set<std::array<int, 2>> long_edges;
-  for (int e = 0; e < m.tet_count(); ++e) {
-    if (!region[e]) continue;
-    const mesh::Tet& t = m.tets[e];
-    for (int a = 0; a < 4; ++a)
-      for (int c = a + 1; c < 4; ++c)
-        if (in_kept[t[a]] && in_kept[t[c]] && (m.nodes[t[a]] - m.nodes[t[c]]).norm() > longest)
-          long_edges.insert({std::min(t[a], t[c]), std::max(t[a], t[c])});
-  }
-  if (long_edges.empty()) return false;
-  const int nodes_before = m.node_count();
-  const mesh::Bisection cut = mesh::bisect_edges(m, {long_edges.begin(), long_edges.end()});
-  auto by_parent = [&](auto& values) {
-    auto halves = values;
-    halves.resize(cut.parent.size());
-    for (std::size_t e = 0; e < cut.parent.size(); ++e)
-      halves[e] = values[cut.parent[e]];
-    values = std::move(halves);
-  };
-  by_parent(region);
-  by_parent(fields.strain);
-  for (std::vector<double>& d : fields.damage)
-    by_parent(d);
-  // Nodal fields: the mean of the edge's ends at its midpoint (P1, exact).
-  auto at_midpoints = [&](auto& values, int stride) {
-    values.conservativeResize(stride * m.node_count());
-    for (std::size_t k = 0; k < cut.midpoint_of.size(); ++k) {
-      const auto& [a, c] = cut.midpoint_of[k];
-      values.segment(stride * (nodes_before + k), stride) =
-          0.5 * (values.segment(stride * a, stride) + values.segment(stride * c, stride));
-    }
-  };
-  at_midpoints(fields.nodal, 4);
-  auto at_midpoints_std = [&](std::vector<double>& values, int stride) {
-    if (values.empty()) return;
-    Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(values.data(), Eigen::Index(values.size()));
-    at_midpoints(v, stride);
-    values.assign(v.data(), v.data() + v.size());
-  };
-  at_midpoints_std(fields.temperature, 1);
-  at_midpoints_std(fields.material, 3);
-  for (const auto& [a, c] : cut.midpoint_of)
-    fields.touching_die.push_back(fields.touching_die[a] == fields.touching_die[c] ? fields.touching_die[a] : -1);
-  return true;
-}
-
-/// Body `b`'s mesh `part` rebuilt where its elements are poor (rebuild_region)
-/// or around the die corners of `due`, the rest kept bit for bit with its
-/// fields; the fields transferred in the rebuilt region only. The region's
-/// surface is kept when that is enough; it is rebuilt around a die corner,
-/// or when the poor elements are held by the surface, and then its new
-/// nodes are put onto the dies and the material `material` (mm³) kept on
-/// its new free surface. Nothing, with `why_not` saying why, when the
-/// region is most of the body or its result is still below the trigger.
-std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene::RunState& state, int b,
-                                          const RemeshDue& due, BodyFields fields, double material, double time_step,
-                                          std::string& why_not) {
-  const scene::RemeshSpec& spec = scene.input.remeshing;
-  const scene::Body& body = scene.bodies[b];
-  mesh::TetMesh& part = fields.mesh;
-  const Eigen::VectorXd& part_nodal = fields.nodal;
-  const std::vector<double>& part_strain = fields.strain;
-  const std::vector<std::vector<double>>& part_damage = fields.damage;
-  std::vector<char> region = rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
-  if (!due.die_corners.empty()) {
-    const std::vector<char> around = region_around(part, due.die_corners, body.remesh_size, kRegionLayers);
-    for (std::size_t e = 0; e < region.size(); ++e)
-      region[e] = region[e] || around[e];
-  }
-  LocalRemesh out;
-  out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1));
-  char text[200];
-  if (out.rebuilt == 0) {
-    why_not = "no element to rebuild locally";
-    return std::nullopt;
-  }
-  if (out.rebuilt > kMostLocal * part.tet_count()) {
-    std::snprintf(text, sizeof text, "the region to rebuild holds %d of its %d elements", out.rebuilt,
-                  part.tet_count());
-    why_not = text;
-    return std::nullopt;
-  }
-  RemeshSettings settings;
-  settings.edge_length = body.remesh_size;
-  settings.feature_angle = spec.feature_angle;
-  settings.iterations = spec.iterations;
-  settings.quality_floor = spec.quality;
-  RegionRemesh local;
-  mesh::TetMesh before_fit; // CGAL's mesh of the old region, before the fit to the dies: ε̄ is remapped on it
-  // One try: the region remeshed with its surface kept or rebuilt; false,
-  // with why_not, when it failed or left an element below the trigger.
-  auto rebuild = [&](RegionSurface surface) {
-    out.surface = surface;
-    try {
-      std::vector<char> pinned(part.nodes.size(), 0);
-      for (std::size_t n = 0; n < pinned.size(); ++n)
-        pinned[n] = fields.touching_die[n] >= 0;
-      local = remesh_region(part, region, settings, surface, pinned);
-    } catch (const RunError& error) {
-      why_not = error.what();
-      return false;
-    }
-    if (surface == RegionSurface::rebuilt) {
-      std::vector<char> fresh(local.mesh.nodes.size(), 0);
-      for (std::size_t n = 0; n < fresh.size(); ++n)
-        fresh[n] = local.old_node[n] < 0;
-      before_fit = local.mesh;
-      out.volume_remeshed = mesh::volume(local.mesh);
-      out.put_back = put_onto_dies(local.mesh, part, fields.touching_die, scene, b, state.dies, settings.edge_length,
-                                   spec.quality, fresh);
-      out.volume_put_back = mesh::volume(local.mesh);
-      out.given_back = keep_material(local.mesh, scene, b, state.dies, material, settings.edge_length, fresh);
-      if (const std::string fault = mesh::fault(local.mesh); !fault.empty()) {
-        why_not = "locally remeshed body fitted to the dies: " + fault;
-        return false;
-      }
-    }
-    out.worst = 1.0;
-    for (int e = local.kept_tets; e < local.mesh.tet_count(); ++e)
-      out.worst = std::min(out.worst, mesh::quality(local.mesh, e));
-    if (out.worst >= spec.quality) return true;
-    std::snprintf(text, sizeof text, "a local remesh of %d elements, its surface %s, left worst quality %.3f",
-                  out.rebuilt, surface == RegionSurface::kept ? "kept" : "rebuilt", out.worst);
-    why_not = text;
-    return false;
-  };
-  // Poor elements are rebuilt inside the surface (the contact surface
-  // stays where it is); a die corner needs new surface nodes around it.
-  // Rebuilding the surface where it holds poor elements moved the flash
-  // case's load by 2-6 % (its contact nodes in the region resampled), no
-  // less than a whole remesh: those take the whole body.
-  if (due.die_corners.empty()) {
-    if (!rebuild(RegionSurface::kept)) return std::nullopt;
-  } else {
-    // CGAL would split the border's edges longer than 4/3 of its length:
-    // they are bisected first, on both sides (the kept tets keep their
-    // nodes and shape, their fields exactly).
-    for (int pass = 0; pass < kBorderPasses; ++pass)
-      if (!bisect_long_border_edges(fields, region, kCgalSplits * settings.edge_length)) break;
-    out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1));
-    if (!rebuild(RegionSurface::rebuilt)) return std::nullopt;
-  }
-  // The nodal fields, taken after the bisection may have moved them.
-  const double* part_temperature = fields.temperature.empty() ? nullptr : fields.temperature.data();
-  const double* part_material = fields.material.empty() ? nullptr : fields.material.data();
-  // Fields: the kept nodes and tets keep theirs; the new ones take them from
-  // the old region, ε̄ and D by the conservative remap.
-  const mesh::TetMesh old_region = tets_of(part, region);
-  std::vector<char> is_new(local.mesh.tets.size(), 0);
-  std::fill(is_new.begin() + local.kept_tets, is_new.end(), 1);
-  const mesh::TetMesh new_region = tets_of(out.surface == RegionSurface::kept ? local.mesh : before_fit, is_new);
-  const PointLocator in_old(old_region);
-  // An element field of the body on the local mesh: kept tets first (remesh_region's order), then the new.
-  auto element_field = [&](const std::vector<double>& values) {
-    std::vector<double> old_values, result;
-    for (int e = 0; e < part.tet_count(); ++e)
-      if (region[e]) old_values.push_back(values[e]);
-    const std::vector<double> new_values = transfer_element(old_region, old_values, in_old, new_region);
-    result.reserve(local.mesh.tets.size());
-    for (int e = 0; e < part.tet_count(); ++e)
-      if (!region[e]) result.push_back(values[e]);
-    result.insert(result.end(), new_values.begin(), new_values.end());
-    return result;
-  };
-  out.strain = element_field(part_strain);
-  for (const std::vector<double>& d : part_damage)
-    out.damage.push_back(element_field(d));
-  out.strain_integral_change = relative(integral(local.mesh, out.strain), integral(part, part_strain));
-  out.strain_max_change = relative(*std::max_element(out.strain.begin(), out.strain.end()),
-                                   *std::max_element(part_strain.begin(), part_strain.end()));
-  std::vector<mesh::Point> fresh;
-  for (std::size_t n = 0; n < local.mesh.nodes.size(); ++n)
-    if (local.old_node[n] < 0) fresh.push_back(local.mesh.nodes[n]);
-  const std::vector<Location> at = in_old.locate(fresh);
-  // The old region's nodal values, in its own numbering (tets_of's order).
-  auto region_values = [&](const double* values, int stride) {
-    Eigen::VectorXd v(stride * old_region.node_count());
-    std::vector<int> number(part.nodes.size(), -1);
-    int next_node = 0;
-    for (int e = 0; e < part.tet_count(); ++e)
-      if (region[e])
-        for (int node : part.tets[e])
-          if (number[node] < 0) {
-            number[node] = next_node;
-            v.segment(stride * next_node++, stride) = Eigen::Map<const Eigen::VectorXd>(values + stride * node, stride);
-          }
-    return v;
-  };
-  auto carry = [&](const double* values, int stride, bool extend) {
-    const Eigen::VectorXd interpolated =
-        interpolate_nodal(old_region, region_values(values, stride), stride, at, extend);
-    Eigen::VectorXd all(stride * local.mesh.node_count());
-    for (std::size_t n = 0, k = 0; n < local.mesh.nodes.size(); ++n)
-      all.segment(stride * n, stride) =
-          local.old_node[n] >= 0
-              ? Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(values + stride * local.old_node[n], stride))
-              : Eigen::VectorXd(interpolated.segment(stride * k++, stride));
-    return all;
-  };
-  out.nodal = carry(part_nodal.data(), 4, false);
-  if (part_material) out.material = carry(part_material, 3, true);
-  if (part_temperature) {
-    out.temperature = carry(part_temperature, 1, false);
-    if (const auto& body_thermal = body.thermal) {
-      // The new nodes' interpolated temperatures change the stored heat a
-      // little: a shift of theirs alone gives it back.
-      const thermal::NodalMass m_old = nodal_mass(part, *body_thermal), m_new = nodal_mass(local.mesh, *body_thermal);
-      const double before =
-          thermal::enthalpy(m_old, mesh::whole_range(part), {part_temperature, std::size_t(part.node_count())});
-      const double after = thermal::enthalpy(m_new, mesh::whole_range(local.mesh),
-                                             {out.temperature.data(), std::size_t(local.mesh.node_count())});
-      double capacity = 0.0;
-      for (int n = 0; n < local.mesh.node_count(); ++n)
-        if (local.old_node[n] < 0) capacity += m_new.mass[n] * body_thermal->specific_heat.at(out.temperature[n]);
-      if (capacity > 0.0)
-        for (int n = 0; n < local.mesh.node_count(); ++n)
-          if (local.old_node[n] < 0) out.temperature[n] += (before - after) / capacity;
-    }
-  }
-  out.mesh = std::move(local.mesh);
-  return out;
 }
 
 void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,

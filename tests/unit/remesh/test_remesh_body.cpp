@@ -16,6 +16,23 @@ namespace {
 std::set<int> tags_of(const mesh::TetMesh& m) {
   return {m.boundary_tags.begin(), m.boundary_tags.end()};
 }
+/// Checks that the tets of `body` not `rebuilt` are `out`'s first tets, in
+/// order, on the same nodes with the same coordinates bit for bit.
+void check_kept_bit_for_bit(const mesh::TetMesh& body, const std::vector<char>& rebuilt,
+                            const remesh::RegionRemesh& out) {
+  int kept = 0;
+  for (int e = 0; e < body.tet_count(); ++e) {
+    if (rebuilt[e]) continue;
+    REQUIRE(kept < out.kept_tets);
+    for (int a = 0; a < 4; ++a) {
+      const int node = out.mesh.tets[kept][a];
+      CHECK(out.old_node[node] == body.tets[e][a]);
+      CHECK(out.mesh.nodes[node] == body.nodes[body.tets[e][a]]);
+    }
+    ++kept;
+  }
+  CHECK(kept == out.kept_tets);
+}
 } // namespace
 
 TEST_CASE("Remeshing a box keeps its volume, faces and tags", "[unit][remesh]") {
@@ -107,18 +124,7 @@ TEST_CASE("A local remesh rebuilds its region only: the rest keeps its nodes and
   const remesh::RegionRemesh out = remesh::remesh_region(box, rebuilt, settings);
 
   // The kept tets: the same, in order, on the same coordinates.
-  int kept = 0;
-  for (int e = 0; e < box.tet_count(); ++e) {
-    if (rebuilt[e]) continue;
-    REQUIRE(kept < out.kept_tets);
-    for (int a = 0; a < 4; ++a) {
-      const int node = out.mesh.tets[kept][a];
-      CHECK(out.old_node[node] == box.tets[e][a]);
-      CHECK(out.mesh.nodes[node] == box.nodes[box.tets[e][a]]); // bit for bit
-    }
-    ++kept;
-  }
-  CHECK(kept == out.kept_tets);
+  check_kept_bit_for_bit(box, rebuilt, out);
   // The surface: every boundary face of the box, on the same nodes.
   CHECK(out.mesh.boundary_faces.size() == box.boundary_faces.size());
   for (std::size_t n = 0; n < out.mesh.nodes.size(); ++n)
@@ -159,18 +165,7 @@ TEST_CASE("A local remesh with its surface rebuilt keeps the rest and its border
   const remesh::RegionRemesh out =
       remesh::remesh_region(box, rebuilt, settings, remesh::RegionSurface::rebuilt, pinned);
 
-  int kept = 0;
-  for (int e = 0; e < box.tet_count(); ++e) {
-    if (rebuilt[e]) continue;
-    REQUIRE(kept < out.kept_tets);
-    for (int a = 0; a < 4; ++a) {
-      const int node = out.mesh.tets[kept][a];
-      CHECK(out.old_node[node] == box.tets[e][a]);
-      CHECK(out.mesh.nodes[node] == box.nodes[box.tets[e][a]]);
-    }
-    ++kept;
-  }
-  CHECK(kept == out.kept_tets);
+  check_kept_bit_for_bit(box, rebuilt, out);
   // Pinned nodes kept where they were; every node with an old number unmoved.
   for (std::size_t n = 0; n < box.nodes.size(); ++n)
     if (pinned[n]) CHECK(std::count(out.old_node.begin(), out.old_node.end(), int(n)) == 1);
