@@ -35,12 +35,16 @@ std::vector<SunkVertex> sunk_die_vertices(const mesh::TetMesh& mesh, const mesh:
   return sunk;
 }
 
-std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
-                                           const std::vector<std::vector<mesh::Point>>& die_vertices) {
-  std::vector<DieFeature> deepest(die_vertices.size());
-  for (const SunkVertex& v : sunk_die_vertices(mesh, body, die_vertices))
+std::vector<DieFeature> deepest_per_die(const std::vector<SunkVertex>& sunk, std::size_t dies) {
+  std::vector<DieFeature> deepest(dies);
+  for (const SunkVertex& v : sunk)
     if (v.feature.depth > deepest[v.die].depth) deepest[v.die] = v.feature;
   return deepest;
+}
+
+std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
+                                           const std::vector<std::vector<mesh::Point>>& die_vertices) {
+  return deepest_per_die(sunk_die_vertices(mesh, body, die_vertices), die_vertices.size());
 }
 
 std::vector<std::vector<mesh::Point>> dies_in_place(const scene::Scene& scene, const scene::RunState& state) {

@@ -69,9 +69,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     else if (!scene.dies.empty()) {
       if (die_vertices.empty()) die_vertices = dies_in_place(scene, state); // the scene has dies here
       const std::vector<SunkVertex> sunk = sunk_die_vertices(state.mesh, state.bodies[b], die_vertices);
-      std::vector<DieFeature> inside(scene.dies.size());
-      for (const SunkVertex& v : sunk)
-        if (v.feature.depth > inside[v.die].depth) inside[v.die] = v.feature;
+      const std::vector<DieFeature> inside = deepest_per_die(sunk, scene.dies.size());
       const LeftByRemesh left = left_by_last_remesh(state, int(b));
       const double depth_trigger = spec.die_penetration * body.remesh_size;
       for (std::size_t d = 0; d < scene.dies.size() && !why[0]; ++d)

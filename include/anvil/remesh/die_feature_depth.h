@@ -26,6 +26,9 @@ struct SunkVertex {
 std::vector<SunkVertex> sunk_die_vertices(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
                                           const std::vector<std::vector<mesh::Point>>& die_vertices);
 
+/// For each of `dies` dies, its deepest vertex among `sunk` (depth 0 when it has none).
+std::vector<DieFeature> deepest_per_die(const std::vector<SunkVertex>& sunk, std::size_t dies);
+
 /// For each die (its vertices, in place), its vertex deepest inside the
 /// body `body` of `mesh`.
 std::vector<DieFeature> die_feature_depths(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
