@@ -350,6 +350,7 @@ void RunWriter::write_summary(const scene::Scene& scene, const scene::Discretisa
       if (!std::isnan(r.material_change)) json.member("material_change", r.material_change);
       if (!std::isnan(r.die_depth_after)) json.member("die_depth_after_mm", r.die_depth_after);
       if (!std::isnan(r.die_overlap_after)) json.member("die_overlap_after_mm3", r.die_overlap_after);
+      if (!std::isnan(r.rebuilt_share)) json.member("rebuilt_share", r.rebuilt_share);
       if (!std::isnan(r.load_old_mesh) && !std::isnan(r.load_new_mesh))
         json.member("load_old_mesh_N", r.load_old_mesh)
             .member("load_new_mesh_N", r.load_new_mesh)

@@ -287,15 +287,28 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
           state.volume.projection += local->volume_put_back - local->volume_remeshed;
         }
         state.remeshes.push_back(record);
-        log::info("  remesh '%s' (%s), local: %d of %d elements rebuilt, the rest and %s kept; %d -> %d nodes; "
-                  "worst quality %.3f -> %.3f; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
-                  scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, part.tet_count(),
-                  kept_surface ? "the surface" : "the surface outside the region", record.nodes_before,
-                  record.nodes_after, record.worst_quality_before, record.worst_quality_after,
-                  100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
+        if (!why->sunk_edges.empty())
+          log::info("  remesh '%s' (%s): %d elements split, their new surface nodes put onto the dies, the rest "
+                    "kept; %d -> %d nodes; worst quality %.3f -> %.3f; %.2f s",
+                    scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, record.nodes_before,
+                    record.nodes_after, record.worst_quality_before, record.worst_quality_after, record.seconds);
+        else
+          log::info("  remesh '%s' (%s), local: %d of %d elements rebuilt, the rest and %s kept; %d -> %d nodes; "
+                    "worst quality %.3f -> %.3f; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
+                    scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, part.tet_count(),
+                    kept_surface ? "the surface" : "the surface outside the region", record.nodes_before,
+                    record.nodes_after, record.worst_quality_before, record.worst_quality_after,
+                    100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
         if (!kept_surface)
           log_fit(local->put_back, local->volume_remeshed, local->volume_put_back, local->given_back,
                   mesh::volume(local->mesh));
+        continue;
+      }
+      if (!why->sunk_edges.empty()) {
+        // Not worth a whole remesh: the overlap's own trigger takes that.
+        log::info("  remesh '%s' (%s) not made: %s; the body keeps its mesh", scene.bodies[b].name.c_str(),
+                  why->why.c_str(), whole.c_str());
+        keep_mesh();
         continue;
       }
       log::info("  remesh '%s': the whole body, as %s", scene.bodies[b].name.c_str(), whole.c_str());

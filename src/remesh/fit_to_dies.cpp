@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace anvil::remesh {
 
@@ -73,6 +74,33 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
     }
   }
   return done;
+}
+
+std::vector<std::array<int, 2>> edges_over_die_features(const mesh::TetMesh& mesh, const mesh::MeshRange& range,
+                                                        const scene::Scene& scene,
+                                                        std::span<const scene::DieState> dies_now, double depth,
+                                                        double shortest, double deepest) {
+  std::set<std::array<int, 2>> edges;
+  for (int f = range.first_face; f < range.first_face + range.face_count; ++f) {
+    const mesh::Triangle& face = mesh.boundary_faces[f];
+    const Eigen::Vector3d area = mesh::area_vector(mesh, face);
+    if (area.squaredNorm() == 0.0) continue;
+    const Eigen::Vector3d outward = area.normalized();
+    for (int k = 0; k < 3; ++k) {
+      const int a = face[k], c = face[(k + 1) % 3];
+      const mesh::Point &xa = mesh.nodes[a], &xc = mesh.nodes[c];
+      if ((xa - xc).norm() <= shortest) continue;
+      const mesh::Point middle = 0.5 * (xa + xc);
+      for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+        const die::SurfaceProjection p = scene.dies[d].surface->project(middle - dies_now[d].displacement);
+        if (p.distance < -depth && p.distance >= -deepest && -p.normal.dot(outward) >= 0.5) {
+          edges.insert({std::min(a, c) - range.first_node, std::max(a, c) - range.first_node});
+          break;
+        }
+      }
+    }
+  }
+  return {edges.begin(), edges.end()};
 }
 
 double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body,

@@ -23,6 +23,11 @@ constexpr double kMostLocal = 0.5;
 /// up to kBorderPasses passes (a bisection can leave another long edge).
 constexpr double kCgalSplits = 4.0 / 3.0 / 1.01;
 constexpr int kBorderPasses = 3;
+/// A split over a sunk die feature keeps every element it makes or moves at
+/// this many times remeshing.quality: one just above the trigger falls below
+/// it in an increment or two, and a poor element on the surface takes a
+/// whole remesh.
+constexpr double kSplitQuality = 2.0;
 
 /// The tets of `m` that `keep` flags, as a mesh of their own.
 mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
@@ -40,28 +45,14 @@ mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
   return out;
 }
 
-/// Bisects the edges longer than `longest` (mm) between two nodes of the
-/// tets `region` flags that kept tets share too (the region's border),
-/// carrying `fields` and `region` onto the halves. Returns whether any was.
-bool bisect_long_border_edges(BodyFields& fields, std::vector<char>& region, double longest) {
+/// Bisects the edges `edges` of fields.mesh, each tet's halves taking its
+/// ε̄, D (and `region` flag, when given) and each midpoint the mean of its
+/// edge's nodal values (P1: exact), the die its ends both press on.
+mesh::Bisection bisect_carrying(BodyFields& fields, const std::vector<std::array<int, 2>>& edges,
+                                std::vector<char>* region) {
   mesh::TetMesh& m = fields.mesh;
-  std::vector<char> in_kept(m.nodes.size(), 0);
-  for (int e = 0; e < m.tet_count(); ++e)
-    if (!region[e])
-      for (int v : m.tets[e])
-        in_kept[v] = 1;
-  std::set<std::array<int, 2>> long_edges;
-  for (int e = 0; e < m.tet_count(); ++e) {
-    if (!region[e]) continue;
-    const mesh::Tet& t = m.tets[e];
-    for (int a = 0; a < 4; ++a)
-      for (int c = a + 1; c < 4; ++c)
-        if (in_kept[t[a]] && in_kept[t[c]] && (m.nodes[t[a]] - m.nodes[t[c]]).norm() > longest)
-          long_edges.insert({std::min(t[a], t[c]), std::max(t[a], t[c])});
-  }
-  if (long_edges.empty()) return false;
   const int nodes_before = m.node_count();
-  const mesh::Bisection cut = mesh::bisect_edges(m, {long_edges.begin(), long_edges.end()});
+  const mesh::Bisection cut = mesh::bisect_edges(m, edges);
   auto by_parent = [&](auto& values) {
     auto halves = values;
     halves.resize(cut.parent.size());
@@ -69,11 +60,10 @@ bool bisect_long_border_edges(BodyFields& fields, std::vector<char>& region, dou
       halves[e] = values[cut.parent[e]];
     values = std::move(halves);
   };
-  by_parent(region);
+  if (region) by_parent(*region);
   by_parent(fields.strain);
   for (std::vector<double>& d : fields.damage)
     by_parent(d);
-  // Nodal fields: the mean of the edge's ends at its midpoint (P1, exact).
   auto at_midpoints = [&](auto& values, int stride) {
     values.conservativeResize(stride * m.node_count());
     for (std::size_t k = 0; k < cut.midpoint_of.size(); ++k) {
@@ -93,6 +83,124 @@ bool bisect_long_border_edges(BodyFields& fields, std::vector<char>& region, dou
   at_midpoints_std(fields.material, 3);
   for (const auto& [a, c] : cut.midpoint_of)
     fields.touching_die.push_back(fields.touching_die[a] == fields.touching_die[c] ? fields.touching_die[a] : -1);
+  return cut;
+}
+
+/// Shifts the temperatures `t` of the nodes of `part` that `fresh` flags by
+/// one amount, so that the heat `part` stores equals that of `old` at
+/// `old_t`: interpolated or moved new nodes change it a little.
+void keep_stored_heat(const mesh::TetMesh& old, const double* old_t, const mesh::TetMesh& part, Eigen::VectorXd& t,
+                      const std::vector<char>& fresh, const thermal::ThermalMaterial& material) {
+  const thermal::NodalMass m_old = nodal_mass(old, material), m_new = nodal_mass(part, material);
+  const double before = thermal::enthalpy(m_old, mesh::whole_range(old), {old_t, std::size_t(old.node_count())});
+  const double after = thermal::enthalpy(m_new, mesh::whole_range(part), {t.data(), std::size_t(part.node_count())});
+  double capacity = 0.0;
+  for (int n = 0; n < part.node_count(); ++n)
+    if (fresh[n]) capacity += m_new.mass[n] * material.specific_heat.at(t[n]);
+  if (capacity > 0.0)
+    for (int n = 0; n < part.node_count(); ++n)
+      if (fresh[n]) t[n] += (before - after) / capacity;
+}
+
+/// A die fillet or edge sunk between the contact nodes: the boundary edges
+/// over it (`sunk_edges`) are bisected and their midpoints put onto the die;
+/// every other node stays where it is and every element keeps its fields
+/// (its halves take them). Nothing, with `why_not`, when no midpoint could
+/// be put onto a die without an element falling below remeshing.quality.
+std::optional<LocalRemesh> split_sunk_edges(const scene::Scene& scene, const scene::RunState& state, int b,
+                                            const std::vector<std::array<int, 2>>& sunk_edges, BodyFields fields,
+                                            std::string& why_not) {
+  const scene::Body& body = scene.bodies[b];
+  const double floor = kSplitQuality * scene.input.remeshing.quality;
+  const mesh::TetMesh old = fields.mesh;
+  // An edge whose tets' halves would fall below that, with the midpoint
+  // where the split makes it or on the die, stays: the quality trigger
+  // would take them next, with a remesh that resamples the surface the split
+  // keeps, and a midpoint that cannot go onto the die is a node for nothing.
+  auto on_die = [&](const mesh::Point& x) {
+    for (std::size_t d = 0; d < scene.dies.size(); ++d) {
+      const Eigen::Vector3d& shift = state.dies[d].displacement;
+      const die::SurfaceProjection p = scene.dies[d].surface->project(x - shift);
+      if (p.distance < 0.0) return mesh::Point(shift + p.point);
+    }
+    return x;
+  };
+  std::set<std::array<int, 2>> edges(sunk_edges.begin(), sunk_edges.end()), poor;
+  for (const mesh::Tet& t : old.tets)
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const std::array<int, 2> edge{std::min(t[i], t[j]), std::max(t[i], t[j])};
+        if (!edges.count(edge)) continue;
+        std::array<mesh::Point, 4> half{old.nodes[t[0]], old.nodes[t[1]], old.nodes[t[2]], old.nodes[t[3]]};
+        const mesh::Point middle = 0.5 * (half[i] + half[j]);
+        for (const mesh::Point& at : {middle, on_die(middle)})
+          for (int k : {i, j}) {
+            const mesh::Point end = half[k];
+            half[k] = at;
+            if (mesh::quality(half[0], half[1], half[2], half[3]) < floor) poor.insert(edge);
+            half[k] = end;
+          }
+      }
+  for (const std::array<int, 2>& edge : poor)
+    edges.erase(edge);
+  if (edges.empty()) {
+    why_not = "splitting any of the edges would leave an element below remeshing.quality";
+    return std::nullopt;
+  }
+  const std::vector<int> touching = fields.touching_die;
+  const std::vector<double> old_temperature = fields.temperature;
+  const mesh::Bisection cut = bisect_carrying(fields, {edges.begin(), edges.end()}, nullptr);
+  mesh::TetMesh& part = fields.mesh;
+  std::vector<char> fresh(part.nodes.size(), 0);
+  std::fill(fresh.begin() + old.node_count(), fresh.end(), 1);
+  LocalRemesh out;
+  out.surface = RegionSurface::rebuilt;
+  out.volume_remeshed = mesh::volume(part);
+  out.put_back = put_onto_dies(part, old, touching, scene, b, state.dies, body.remesh_size, floor, fresh);
+  if (out.put_back.nodes == 0) {
+    why_not = "none of the split edges' midpoints could be put onto the dies";
+    return std::nullopt;
+  }
+  out.volume_put_back = mesh::volume(part);
+  const std::set<int> split(cut.parent.begin() + old.tet_count(), cut.parent.end());
+  out.rebuilt = static_cast<int>(split.size());
+  for (int e = 0; e < part.tet_count(); ++e)
+    out.worst = std::min(out.worst, mesh::quality(part, e));
+  out.nodal = std::move(fields.nodal);
+  out.strain = std::move(fields.strain);
+  out.damage = std::move(fields.damage);
+  if (!fields.material.empty())
+    out.material = Eigen::Map<const Eigen::VectorXd>(fields.material.data(), Eigen::Index(fields.material.size()));
+  if (!fields.temperature.empty()) {
+    out.temperature =
+        Eigen::Map<const Eigen::VectorXd>(fields.temperature.data(), Eigen::Index(fields.temperature.size()));
+    if (body.thermal) keep_stored_heat(old, old_temperature.data(), part, out.temperature, fresh, *body.thermal);
+  }
+  out.mesh = std::move(part);
+  return out;
+}
+
+/// Bisects the edges longer than `longest` (mm) between two nodes of the
+/// tets `region` flags that kept tets share too (the region's border),
+/// carrying `fields` and `region` onto the halves. Returns whether any was.
+bool bisect_long_border_edges(BodyFields& fields, std::vector<char>& region, double longest) {
+  const mesh::TetMesh& m = fields.mesh;
+  std::vector<char> in_kept(m.nodes.size(), 0);
+  for (int e = 0; e < m.tet_count(); ++e)
+    if (!region[e])
+      for (int v : m.tets[e])
+        in_kept[v] = 1;
+  std::set<std::array<int, 2>> long_edges;
+  for (int e = 0; e < m.tet_count(); ++e) {
+    if (!region[e]) continue;
+    const mesh::Tet& t = m.tets[e];
+    for (int a = 0; a < 4; ++a)
+      for (int c = a + 1; c < 4; ++c)
+        if (in_kept[t[a]] && in_kept[t[c]] && (m.nodes[t[a]] - m.nodes[t[c]]).norm() > longest)
+          long_edges.insert({std::min(t[a], t[c]), std::max(t[a], t[c])});
+  }
+  if (long_edges.empty()) return false;
+  bisect_carrying(fields, {long_edges.begin(), long_edges.end()}, &region);
   return true;
 }
 
@@ -117,6 +225,7 @@ double relative(double after, double before) {
 std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene::RunState& state, int b,
                                           const RemeshDue& due, BodyFields fields, double material, double time_step,
                                           std::string& why_not) {
+  if (!due.sunk_edges.empty()) return split_sunk_edges(scene, state, b, due.sunk_edges, std::move(fields), why_not);
   const scene::RemeshSpec& spec = scene.input.remeshing;
   const scene::Body& body = scene.bodies[b];
   mesh::TetMesh& part = fields.mesh;
@@ -263,20 +372,11 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   if (part_material) out.material = carry(part_material, 3, true);
   if (part_temperature) {
     out.temperature = carry(part_temperature, 1, false);
-    if (const auto& body_thermal = body.thermal) {
-      // The new nodes' interpolated temperatures change the stored heat a
-      // little: a shift of theirs alone gives it back.
-      const thermal::NodalMass m_old = nodal_mass(part, *body_thermal), m_new = nodal_mass(local.mesh, *body_thermal);
-      const double before =
-          thermal::enthalpy(m_old, mesh::whole_range(part), {part_temperature, std::size_t(part.node_count())});
-      const double after = thermal::enthalpy(m_new, mesh::whole_range(local.mesh),
-                                             {out.temperature.data(), std::size_t(local.mesh.node_count())});
-      double capacity = 0.0;
-      for (int n = 0; n < local.mesh.node_count(); ++n)
-        if (local.old_node[n] < 0) capacity += m_new.mass[n] * body_thermal->specific_heat.at(out.temperature[n]);
-      if (capacity > 0.0)
-        for (int n = 0; n < local.mesh.node_count(); ++n)
-          if (local.old_node[n] < 0) out.temperature[n] += (before - after) / capacity;
+    if (body.thermal) {
+      std::vector<char> fresh_nodes(local.mesh.nodes.size(), 0);
+      for (std::size_t n = 0; n < fresh_nodes.size(); ++n)
+        fresh_nodes[n] = local.old_node[n] < 0;
+      keep_stored_heat(part, part_temperature, local.mesh, out.temperature, fresh_nodes, *body.thermal);
     }
   }
   out.mesh = std::move(local.mesh);

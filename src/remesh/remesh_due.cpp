@@ -2,6 +2,7 @@
 
 #include "anvil/core/log.h"
 #include "anvil/remesh/die_feature_depth.h"
+#include "anvil/remesh/fit_to_dies.h"
 #include "anvil/remesh/quality.h"
 
 #include <algorithm>
@@ -40,6 +41,12 @@ bool due_again(double value, double trigger, double left) {
 /// A die-corner remesh rebuilds around the die vertices deeper than this
 /// share of its trigger.
 constexpr double kAlongEdge = 0.5;
+/// A boundary edge whose midpoint is this share of the element size inside
+/// a die is split (its midpoint put onto the die), if it is longer than
+/// kShortestSplit element sizes: an edge is split once or twice, not down
+/// to the die's own facets.
+constexpr double kSunkEdgeDepth = 0.1;
+constexpr double kShortestSplit = 0.6;
 
 } // namespace
 
@@ -60,6 +67,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     // region's surface rebuilt); a periodic remesh takes the whole body.
     bool local = spec.local && (q.worst < spec.quality || q.predicted_worst <= 0.0);
     std::vector<mesh::Point> corners;
+    std::vector<std::array<int, 2>> sunk_edges;
     if (q.worst < spec.quality)
       std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
     else if (q.predicted_worst <= 0.0)
@@ -88,8 +96,20 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
       if (!why[0] && due_again(overlap, spec.die_overlap * body.initial_volume, left.die_overlap))
         std::snprintf(why, sizeof why, "%.3g%% of its initial volume lies inside the dies",
                       100.0 * overlap / body.initial_volume);
+      if (!why[0] && spec.split_sunk_edges) {
+        sunk_edges =
+            edges_over_die_features(state.mesh, state.bodies[b], scene, state.dies, kSunkEdgeDepth * body.remesh_size,
+                                    kShortestSplit * body.remesh_size, body.remesh_size);
+        if (!sunk_edges.empty()) {
+          std::snprintf(why, sizeof why,
+                        "%zu boundary edges over a die fillet or edge, %.3g%% of its volume inside "
+                        "the dies",
+                        sunk_edges.size(), 100.0 * overlap / body.initial_volume);
+          local = true;
+        }
+      }
     }
-    if (why[0]) due.push_back({int(b), why, local, std::move(corners)});
+    if (why[0]) due.push_back({int(b), why, local, std::move(corners), std::move(sunk_edges)});
   }
   return due;
 }

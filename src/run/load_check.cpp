@@ -33,7 +33,7 @@ void remesh_checking_load(const Scene& scene, RunState& state, std::span<const r
   const double old_mesh = check ? next_increment_load(scene, state, next, 1, timers) : 0.0;
   const std::size_t first_record = state.remeshes.size();
   remesh::remesh(scene, state, due, touching_die, rate, next.length, timers);
-  if (!check) return;
+  if (!check || state.remeshes.size() == first_record) return; // no body took a new mesh: nothing to compare
   // Twice on the new mesh: friction takes σ₀ from the strain rates of the
   // solution before, at first the interpolated velocity; the second solve
   // takes them from the first, as the next increment will.

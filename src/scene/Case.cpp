@@ -561,6 +561,7 @@ Case read_case_document(const CheckedYaml& doc, const std::vector<std::string>& 
     m.time_limit = doc.number(r, "time_limit", "remeshing.time_limit");
     m.check_load = doc.boolean(r, "check_load", "remeshing.check_load");
     m.local = doc.boolean(r, "local", "remeshing.local");
+    m.split_sunk_edges = doc.boolean(r, "split_sunk_edges", "remeshing.split_sunk_edges");
   }
   if (!c.dies.empty() && !c.time.enabled)
     doc.fail(root["dies"], "dies", "dies need a 'time' section (stroke increment and stop criteria)");

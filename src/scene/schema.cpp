@@ -449,6 +449,13 @@ const std::vector<KeySpec>& case_schema() {
                          "is remeshed when that region is over half of it, when the rebuilt elements stay below "
                          "remeshing.quality (the surface holds them), and for the periodic and die-corner triggers"),
                      "true"),
+        with_default(key("remeshing.split_sunk_edges", T::boolean,
+                         "after each increment, split the boundary edges whose midpoint lies over a tenth of an "
+                         "element inside a die (a die fillet or edge sunk between contact nodes) and put their "
+                         "midpoints onto the die, nothing else moved: less of the body inside the dies and a "
+                         "smaller volume change, for more remeshes and, in the closed-die cases, more whole "
+                         "remeshes with their load jumps (docs/remeshing.md)"),
+                     "false"),
         with_default(key("remeshing.check_load", T::boolean,
                          "also solve the increment after each remesh on the old mesh, and log and record the press "
                          "load's jump across the remesh at equal geometry (three more solves per remesh; the next "

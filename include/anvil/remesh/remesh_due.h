@@ -3,6 +3,7 @@
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct RemeshDue {
   /// The die vertex sunk into the body that asked for the remesh (mm);
   /// none for the other triggers.
   std::vector<mesh::Point> die_corners;
+  /// Boundary edges over a die fillet or edge sunk between contact nodes
+  /// (node pairs of the body, numbered from its first node): only they are
+  /// split, their midpoints put onto the die; none for the other triggers.
+  std::vector<std::array<int, 2>> sunk_edges;
 };
 
 /// The bodies of `state` to remesh after an increment of `dt` (s), by the
@@ -28,7 +33,9 @@ struct RemeshDue {
 /// deeper than die_penetration × the element size inside the body, more than
 /// die_overlap × its initial volume inside the dies (each of the last two
 /// again only once it has grown by half its trigger beyond what the body's
-/// last remesh left: a remesh that cannot fit a die does not repeat). Elastic
+/// last remesh left: a remesh that cannot fit a die does not repeat). Short
+/// of those, with remeshing.split_sunk_edges, boundary edges whose midpoint lies deeper
+/// than a tenth of the element size inside a die (sunk_edges). Elastic
 /// bodies keep their mesh. Logs each body's quality.
 std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt);
 

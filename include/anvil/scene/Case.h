@@ -152,6 +152,7 @@ struct RemeshSpec {
   double time_limit = 120.0;     ///< s, work limit of one body's remesh (checked between CGAL passes)
   bool check_load = false;       ///< solve the increment after a remesh on the old mesh too: the load jump it makes
   bool local = true;             ///< a quality trigger rebuilds the poor elements' region only (remesh_region)
+  bool split_sunk_edges = false; ///< split surface edges over a die fillet or edge sunk between contact nodes
 };
 
 struct ContactSpec {

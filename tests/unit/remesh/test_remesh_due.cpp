@@ -1,10 +1,11 @@
 // When the time loop remeshes a body (remesh::remesh_due): poor elements,
 // every N increments, a die vertex sunk into the body, a die edge the last
 // remesh could not fit that has not sunk further, and the body's overlap
-// with the dies, alike.
+// with the dies, alike; surface edges over a sunk die feature, and their split.
 #include "test_common.h"
 
 #include "anvil/core/Timers.h"
+#include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/Remesher.h"
 #include "anvil/remesh/die_feature_depth.h"
 #include "anvil/scene/Case.h"
@@ -132,4 +133,63 @@ TEST_CASE("A body overlapping the dies by more than remeshing.die_overlap of its
   CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
   r.state.inside_dies[0] = 1.65 * trigger;
   CHECK(remesh::remesh_due(r.scene, r.state, kStep).size() == 1);
+}
+
+TEST_CASE("Surface edges over a die fillet or edge sunk between the nodes are split, their midpoints put onto the "
+          "die; every other node and element keeps its place and fields",
+          "[unit][remesh]") {
+  // closed_die_flash's upper die lowered into the (undeformed) billet until
+  // the first boundary edges have their midpoint a tenth of an element inside
+  // it, the die vertices still short of their own trigger (a quarter element).
+  Run r("cases/closed_die_flash.yaml", {"remeshing.check_load=false", "remeshing.split_sunk_edges=true"});
+  const double h = r.scene.bodies[0].remesh_size;
+  r.state.increment = 1;
+  std::vector<remesh::RemeshDue> due;
+  double lowered = 0.0;
+  while (due.empty() && lowered < 20.0) {
+    lowered += 0.01;
+    r.state.dies[0].displacement.z() = -lowered;
+    r.state.inside_dies = scene::inside_dies(r.scene, r.state);
+    due = remesh::remesh_due(r.scene, r.state, kStep);
+  }
+  REQUIRE(due.size() == 1);
+  INFO(due[0].why);
+  REQUIRE_FALSE(due[0].sunk_edges.empty());
+  CHECK(due[0].local);
+  CHECK(due[0].why.find("boundary edges over a die fillet or edge") != std::string::npos);
+  CHECK(upper_die_depth(r) <= 0.25 * h);
+
+  // Distinct ε̄ per element, to follow each element's value.
+  const mesh::TetMesh before = r.state.mesh;
+  for (std::size_t e = 0; e < r.state.equivalent_strain.size(); ++e)
+    r.state.equivalent_strain[e] = 1.0 + 1e-3 * double(e);
+  const std::vector<double> strain_before = r.state.equivalent_strain;
+  const double inside_before = r.state.inside_dies[0];
+  double worst_before = 1.0;
+  for (int e = 0; e < before.tet_count(); ++e)
+    worst_before = std::min(worst_before, mesh::quality(before, e));
+  const std::vector<int> touching(before.nodes.size(), -1);
+  const std::vector<double> rate(before.tets.size(), 0.0);
+  remesh::remesh(r.scene, r.state, due, touching, rate, kStep, r.timers);
+
+  const mesh::TetMesh& after = r.state.mesh;
+  const int added = after.node_count() - before.node_count();
+  CHECK(added > 0);
+  CHECK(added <= int(due[0].sunk_edges.size()));
+  // The old nodes stay where they were, bit for bit.
+  for (int n = 0; n < before.node_count(); ++n)
+    REQUIRE(after.nodes[n] == before.nodes[n]);
+  // Every element's ε̄ is one of the old elements' (a half takes its parent's).
+  std::vector<double> sorted = strain_before;
+  std::sort(sorted.begin(), sorted.end());
+  for (double value : r.state.equivalent_strain)
+    REQUIRE(std::binary_search(sorted.begin(), sorted.end(), value));
+  // Less of the body inside the die; no element made or moved below twice the trigger.
+  CHECK(r.state.inside_dies[0] < inside_before);
+  double worst_after = 1.0;
+  for (int e = 0; e < after.tet_count(); ++e)
+    worst_after = std::min(worst_after, mesh::quality(after, e));
+  CHECK(worst_after >= std::min(worst_before, 2.0 * r.input.remeshing.quality));
+  REQUIRE(r.state.remeshes.size() == 1);
+  CHECK(r.state.remeshes[0].nodes_after == after.node_count());
 }
