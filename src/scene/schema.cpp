@@ -453,8 +453,8 @@ const std::vector<KeySpec>& case_schema() {
                          "after each increment, split the boundary edges whose midpoint lies over a tenth of an "
                          "element inside a die (a die fillet or edge sunk between contact nodes) and put their "
                          "midpoints onto the die, nothing else moved: less of the body inside the dies and a "
-                         "smaller volume change, for more remeshes and, in the closed-die cases, more whole "
-                         "remeshes with their load jumps (docs/remeshing.md)"),
+                         "smaller volume change, for more remeshes, and whole remeshes that then resample the "
+                         "refined surface with their load jumps (docs/remeshing.md)"),
                      "false"),
         with_default(key("remeshing.check_load", T::boolean,
                          "also solve the increment after each remesh on the old mesh, and log and record the press "
