@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
+#include <map>
 
 namespace anvil::remesh {
 
@@ -76,11 +76,10 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
   return done;
 }
 
-std::vector<std::array<int, 2>> edges_over_die_features(const mesh::TetMesh& mesh, const mesh::MeshRange& range,
-                                                        const scene::Scene& scene,
-                                                        std::span<const scene::DieState> dies_now, double depth,
-                                                        double shortest, double deepest) {
-  std::set<std::array<int, 2>> edges;
+std::vector<SunkEdge> edges_over_die_features(const mesh::TetMesh& mesh, const mesh::MeshRange& range,
+                                              const scene::Scene& scene, std::span<const scene::DieState> dies_now,
+                                              double depth, double shortest, double deepest) {
+  std::map<std::array<int, 2>, mesh::Point> edges; // a node pair once, from either of its faces
   for (int f = range.first_face; f < range.first_face + range.face_count; ++f) {
     const mesh::Triangle& face = mesh.boundary_faces[f];
     const Eigen::Vector3d area = mesh::area_vector(mesh, face);
@@ -92,15 +91,21 @@ std::vector<std::array<int, 2>> edges_over_die_features(const mesh::TetMesh& mes
       if ((xa - xc).norm() <= shortest) continue;
       const mesh::Point middle = 0.5 * (xa + xc);
       for (std::size_t d = 0; d < scene.dies.size(); ++d) {
-        const die::SurfaceProjection p = scene.dies[d].surface->project(middle - dies_now[d].displacement);
+        const Eigen::Vector3d& shift = dies_now[d].displacement;
+        const die::SurfaceProjection p = scene.dies[d].surface->project(middle - shift);
         if (p.distance < -depth && p.distance >= -deepest && -p.normal.dot(outward) >= 0.5) {
-          edges.insert({std::min(a, c) - range.first_node, std::max(a, c) - range.first_node});
+          edges.emplace(std::array<int, 2>{std::min(a, c) - range.first_node, std::max(a, c) - range.first_node},
+                        shift + p.point);
           break;
         }
       }
     }
   }
-  return {edges.begin(), edges.end()};
+  std::vector<SunkEdge> sunk;
+  sunk.reserve(edges.size());
+  for (const auto& [nodes, on_die] : edges)
+    sunk.push_back({nodes, on_die});
+  return sunk;
 }
 
 double keep_material(mesh::TetMesh& fresh, const scene::Scene& scene, int body,

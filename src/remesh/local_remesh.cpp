@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <map>
 #include <set>
 
 namespace anvil::remesh {
@@ -108,7 +109,7 @@ void keep_stored_heat(const mesh::TetMesh& old, const double* old_t, const mesh:
 /// (its halves take them). Nothing, with `why_not`, when no midpoint could
 /// be put onto a die without an element falling below remeshing.quality.
 std::optional<LocalRemesh> split_sunk_edges(const scene::Scene& scene, const scene::RunState& state, int b,
-                                            const std::vector<std::array<int, 2>>& sunk_edges, BodyFields fields,
+                                            const std::vector<SunkEdge>& sunk_edges, BodyFields fields,
                                             std::string& why_not) {
   const scene::Body& body = scene.bodies[b];
   const double floor = kSplitQuality * scene.input.remeshing.quality;
@@ -117,39 +118,34 @@ std::optional<LocalRemesh> split_sunk_edges(const scene::Scene& scene, const sce
   // where the split makes it or on the die, stays: the quality trigger
   // would take them next, with a remesh that resamples the surface the split
   // keeps, and a midpoint that cannot go onto the die is a node for nothing.
-  auto on_die = [&](const mesh::Point& x) {
-    for (std::size_t d = 0; d < scene.dies.size(); ++d) {
-      const Eigen::Vector3d& shift = state.dies[d].displacement;
-      const die::SurfaceProjection p = scene.dies[d].surface->project(x - shift);
-      if (p.distance < 0.0) return mesh::Point(shift + p.point);
-    }
-    return x;
-  };
-  std::set<std::array<int, 2>> edges(sunk_edges.begin(), sunk_edges.end()), poor;
+  std::map<std::array<int, 2>, mesh::Point> on_die;
+  for (const SunkEdge& e : sunk_edges)
+    on_die.emplace(e.nodes, e.on_die);
+  std::set<std::array<int, 2>> poor;
   for (const mesh::Tet& t : old.tets)
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) {
-        const std::array<int, 2> edge{std::min(t[i], t[j]), std::max(t[i], t[j])};
-        if (!edges.count(edge)) continue;
+        const auto edge = on_die.find({std::min(t[i], t[j]), std::max(t[i], t[j])});
+        if (edge == on_die.end()) continue;
         std::array<mesh::Point, 4> half{old.nodes[t[0]], old.nodes[t[1]], old.nodes[t[2]], old.nodes[t[3]]};
-        const mesh::Point middle = 0.5 * (half[i] + half[j]);
-        for (const mesh::Point& at : {middle, on_die(middle)})
+        for (const mesh::Point& at : {mesh::Point(0.5 * (half[i] + half[j])), edge->second})
           for (int k : {i, j}) {
             const mesh::Point end = half[k];
             half[k] = at;
-            if (mesh::quality(half[0], half[1], half[2], half[3]) < floor) poor.insert(edge);
+            if (mesh::quality(half[0], half[1], half[2], half[3]) < floor) poor.insert(edge->first);
             half[k] = end;
           }
       }
-  for (const std::array<int, 2>& edge : poor)
-    edges.erase(edge);
+  std::vector<std::array<int, 2>> edges;
+  for (const auto& [nodes, point] : on_die)
+    if (!poor.count(nodes)) edges.push_back(nodes);
   if (edges.empty()) {
     why_not = "splitting any of the edges would leave an element below remeshing.quality";
     return std::nullopt;
   }
   const std::vector<int> touching = fields.touching_die;
   const std::vector<double> old_temperature = fields.temperature;
-  const mesh::Bisection cut = bisect_carrying(fields, {edges.begin(), edges.end()}, nullptr);
+  const mesh::Bisection cut = bisect_carrying(fields, edges, nullptr);
   mesh::TetMesh& part = fields.mesh;
   std::vector<char> fresh(part.nodes.size(), 0);
   std::fill(fresh.begin() + old.node_count(), fresh.end(), 1);
@@ -164,8 +160,6 @@ std::optional<LocalRemesh> split_sunk_edges(const scene::Scene& scene, const sce
   out.volume_put_back = mesh::volume(part);
   const std::set<int> split(cut.parent.begin() + old.tet_count(), cut.parent.end());
   out.rebuilt = static_cast<int>(split.size());
-  for (int e = 0; e < part.tet_count(); ++e)
-    out.worst = std::min(out.worst, mesh::quality(part, e));
   out.nodal = std::move(fields.nodal);
   out.strain = std::move(fields.strain);
   out.damage = std::move(fields.damage);

@@ -67,7 +67,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     // region's surface rebuilt); a periodic remesh takes the whole body.
     bool local = spec.local && (q.worst < spec.quality || q.predicted_worst <= 0.0);
     std::vector<mesh::Point> corners;
-    std::vector<std::array<int, 2>> sunk_edges;
+    std::vector<SunkEdge> sunk_edges;
     if (q.worst < spec.quality)
       std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
     else if (q.predicted_worst <= 0.0)

@@ -33,17 +33,22 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
                       const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
                       double element_size, double quality_floor, std::span<const char> movable = {});
 
-/// The boundary edges of the body `range` of `mesh` (node pairs numbered
-/// from range.first_node) longer than `shortest` (mm) whose midpoint lies
+/// A boundary edge over a die fillet or edge: its nodes (numbered from the
+/// body's first node) and the point of the die its midpoint goes onto.
+struct SunkEdge {
+  std::array<int, 2> nodes;
+  mesh::Point on_die;
+};
+
+/// The boundary edges of the body `range` of `mesh` longer than `shortest` (mm) whose midpoint lies
 /// deeper than `depth` (mm) inside a die at `dies_now`, below the face:
 /// where a die fillet or edge has sunk between the contact nodes that
 /// nodal contact keeps out of the die. Deeper than `deepest` is the far side
 /// of an open die surface; a die wall more than 60° from facing the face is
 /// not below it (a face on a symmetry plane).
-std::vector<std::array<int, 2>> edges_over_die_features(const mesh::TetMesh& mesh, const mesh::MeshRange& range,
-                                                        const scene::Scene& scene,
-                                                        std::span<const scene::DieState> dies_now, double depth,
-                                                        double shortest, double deepest);
+std::vector<SunkEdge> edges_over_die_features(const mesh::TetMesh& mesh, const mesh::MeshRange& range,
+                                              const scene::Scene& scene, std::span<const scene::DieState> dies_now,
+                                              double depth, double shortest, double deepest);
 
 /// Gives `fresh`, the new mesh of body `body`, the material `material` (mm³:
 /// its volume less its overlap with the dies at `dies_now`) by moving its

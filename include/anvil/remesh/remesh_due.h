@@ -1,9 +1,9 @@
 // When the time loop remeshes a body: the triggers (docs/remeshing.md).
 #pragma once
+#include "anvil/remesh/fit_to_dies.h"
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -21,10 +21,10 @@ struct RemeshDue {
   /// The die vertex sunk into the body that asked for the remesh (mm);
   /// none for the other triggers.
   std::vector<mesh::Point> die_corners;
-  /// Boundary edges over a die fillet or edge sunk between contact nodes
-  /// (node pairs of the body, numbered from its first node): only they are
-  /// split, their midpoints put onto the die; none for the other triggers.
-  std::vector<std::array<int, 2>> sunk_edges;
+  /// Boundary edges over a die fillet or edge sunk between contact nodes:
+  /// only they are split, their midpoints put onto the die; none for the
+  /// other triggers.
+  std::vector<SunkEdge> sunk_edges;
 };
 
 /// The bodies of `state` to remesh after an increment of `dt` (s), by the
