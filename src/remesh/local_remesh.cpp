@@ -246,7 +246,10 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     return std::nullopt;
   }
   RemeshSettings settings;
-  settings.edge_length = body.remesh_size;
+  // A uniform field asks for the body's size everywhere; an adaptive one
+  // keeps the region as fine as it is (a fine flash is not coarsened by a
+  // local remesh of its poor elements).
+  settings.edge_length = spec.adaptive ? std::min(body.remesh_size, mean_edge_length(part, region)) : body.remesh_size;
   settings.feature_angle = spec.feature_angle;
   settings.iterations = spec.iterations;
   settings.quality_floor = spec.quality;

@@ -40,4 +40,15 @@ std::vector<char> grow_region(const mesh::TetMesh& part, std::vector<char> flagg
   return flagged;
 }
 
+double mean_edge_length(const mesh::TetMesh& part, const std::vector<char>& region) {
+  double sum = 0.0;
+  int count = 0;
+  for (int e = 0; e < part.tet_count(); ++e)
+    if (region[e])
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b)
+          sum += (part.nodes[part.tets[e][a]] - part.nodes[part.tets[e][b]]).norm(), ++count;
+  return count > 0 ? sum / count : 0.0;
+}
+
 } // namespace anvil::remesh

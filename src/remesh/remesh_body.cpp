@@ -7,8 +7,10 @@
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/mesh/QualityGuard.h"
+#include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/tet_geometry.h"
+#include "anvil/remesh/rebuild_region.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_3/tet_soup_to_c3t3.h>
@@ -22,6 +24,7 @@
 #include <chrono>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <unordered_map>
 #include <unordered_set>
@@ -38,6 +41,11 @@ using VertexHandle = Triangulation::Vertex_handle;
 /// border edge, so that CGAL (which splits edges beyond 4/3 of it) leaves the
 /// border whole.
 constexpr double kBorderMargin = 1.01;
+/// Tries of one level of the size field, each with the region grown over
+/// the border faces CGAL changed in the last.
+constexpr int kLevelAttempts = 4;
+/// After the size field's levels, cells below this quality are rebuilt.
+constexpr double kPoorAfterLevels = 0.25;
 
 /// Face key as build_triangulation looks it up: the smallest index first, the rest in order.
 std::array<int, 3> facet_key(const mesh::Triangle& f) {
@@ -96,14 +104,6 @@ std::vector<char> inside_curved_patches(const mesh::TetMesh& mesh, const std::se
   for (std::size_t v = 0; v < movable.size(); ++v)
     movable[v] = movable[v] && !fixed[v];
   return movable;
-}
-
-/// The four corners of a CGAL cell.
-std::array<mesh::Point, 4> corners(Triangulation::Cell_handle c) {
-  std::array<mesh::Point, 4> x;
-  for (int i = 0; i < 4; ++i)
-    x[i] = mesh::Point(c->vertex(i)->point().x(), c->vertex(i)->point().y(), c->vertex(i)->point().z());
-  return x;
 }
 
 /// One CGAL isotropic remeshing at `length` of the cells `selected` picks
@@ -186,7 +186,10 @@ void settle_on_old_surface(mesh::TetMesh& out, const mesh::TetMesh& body, const 
 
 } // namespace
 
-mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {
+namespace {
+
+/// remesh_body at settings.edge_length everywhere.
+mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& settings) {
   Triangulation tr;
   std::vector<VertexHandle> handles;
   std::vector<int> patch;
@@ -195,36 +198,6 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
 
   auto in_body = [](Triangulation::Cell_handle c) { return c->subdomain_index() != 0; }; // CGAL's own default
   remesh_pass(tr, settings.edge_length, settings.iterations, in_body);
-  // CGAL 5.5 asks a selector about each cell it may change, new cells
-  // included: a cell of the body is selected where the size wanted at its
-  // centroid is below the previous level.
-  double previous_level = settings.edge_length;
-  while (settings.size && previous_level > settings.smallest_edge_length * (1.0 + 1e-9)) {
-    if (std::chrono::steady_clock::now() > settings.deadline) {
-      log::info("    remeshing: the size field's finer levels stopped at %.3g mm (smallest asked %.3g mm): the "
-                "remesh ran out of remeshing.time_limit",
-                previous_level, settings.smallest_edge_length);
-      break;
-    }
-    const double level = std::max(0.75 * previous_level, settings.smallest_edge_length);
-    remesh_pass(tr, level, settings.iterations, [&](Triangulation::Cell_handle c) {
-      if (!in_body(c)) return false;
-      const std::array<mesh::Point, 4> x = corners(c);
-      return settings.size(0.25 * (x[0] + x[1] + x[2] + x[3])) < previous_level;
-    });
-    previous_level = level;
-  }
-  // The passes change cells on one side of a level's border only, and leave
-  // slivers on the other (q 0.05 in the 75 % upsetting). A last pass takes
-  // the poor cells (q < 0.25) at the coarse length: its collapses and flips
-  // remove them (worst 0.20 there, 0.26 on the unit test's billet).
-  if (settings.size)
-    remesh_pass(tr, settings.edge_length, settings.iterations, [&](Triangulation::Cell_handle c) {
-      if (!in_body(c)) return false;
-      const std::array<mesh::Point, 4> x = corners(c);
-      return mesh::quality(x[0], x[1], x[2], x[3]) < 0.25;
-    });
-
   // Back to our mesh: the cells of the body (subdomain ≠ 0). CGAL's cell
   // order has no locality; the nodes are numbered along a Hilbert curve and
   // the elements sorted by their first node, so that neighbours in space are
@@ -277,8 +250,11 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   return out;
 }
 
+} // namespace
+
 RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebuilt, const RemeshSettings& settings,
-                           RegionSurface surface, std::span<const char> pinned) {
+                           RegionSurface surface, std::span<const char> pinned,
+                           std::vector<std::array<int, 3>>* changed_border) {
   // The kept tets are outside for CGAL (subdomain 0): it changes the
   // region's inside only. With the surface kept every boundary is frozen,
   // the region's border with the kept tets included. With the surface
@@ -402,7 +378,7 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
         key = {out.old_node[pa], out.old_node[pb], out.old_node[pd]};
         std::sort(key.begin(), key.end());
       }
-      if (border.count(key) > 0) {
+      if (border.erase(key) > 0) {
         ++border_faces;
         continue;
       }
@@ -417,8 +393,12 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
       tagged.push_back({number.at(handles[f[0] + 1]), number.at(handles[f[1] + 1]), number.at(handles[f[2] + 1])});
     tags = body.boundary_tags;
   } else {
-    if (border_faces != border.size())
-      throw RunError("locally remeshed body: CGAL changed the region's border with the kept elements");
+    if (!border.empty()) {
+      if (changed_border) changed_border->assign(border.begin(), border.end());
+      throw RunError("locally remeshed body: CGAL changed " + std::to_string(border.size()) + " of the " +
+                     std::to_string(border.size() + border_faces) +
+                     " faces of the region's border with the kept elements");
+    }
     // The kept tets' faces on the body's surface keep their tags.
     std::map<std::array<int, 3>, int> tag_of;
     for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
@@ -447,6 +427,108 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
     settle_on_old_surface(out.mesh, body, patch, tag_of_patch, movable, mesh::volume(body), settings.quality_floor);
   }
   if (const std::string why = mesh::fault(out.mesh); !why.empty()) throw RunError("locally remeshed body: " + why);
+  return out;
+}
+
+mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {
+  mesh::TetMesh out = remesh_uniform(body, settings);
+  if (!settings.size) return out;
+  // CGAL 5.5 meets one length per call and remeshes unselected cells too
+  // (docs/libraries.md §2): the finer levels are regions of their own,
+  // each the cells whose centroid wants less than the geometric mean of the
+  // level before and this one, rebuilt at a length ¾ of the level before
+  // with their border to the rest frozen.
+  const double border_splits = 1.0 / (kBorderMargin * 0.75); // remesh_region's border limit over its length
+  double previous_level = settings.edge_length;
+  while (previous_level > settings.smallest_edge_length * (1.0 + 1e-9)) {
+    if (std::chrono::steady_clock::now() > settings.deadline) {
+      log::info("    remeshing: the size field's finer levels stopped at %.3g mm (smallest asked %.3g mm): the "
+                "remesh ran out of remeshing.time_limit",
+                previous_level, settings.smallest_edge_length);
+      break;
+    }
+    RemeshSettings at_level = settings;
+    at_level.edge_length = std::max(0.75 * previous_level, settings.smallest_edge_length);
+    // A cell goes to the level nearest (geometrically) the size it wants.
+    const double finer_than = std::sqrt(previous_level * at_level.edge_length);
+    std::vector<char> region(out.tets.size(), 0);
+    for (int e = 0; e < out.tet_count(); ++e)
+      region[e] = settings.size(mesh::centroid(out, e)) < finer_than;
+    if (std::find(region.begin(), region.end(), 1) == region.end()) break;
+    // CGAL would split the border's edges longer than its limit, which the
+    // region's remesh refuses: they are bisected first, on both sides.
+    for (int pass = 0; pass < 3; ++pass) {
+      std::vector<char> in_kept(out.nodes.size(), 0);
+      for (int e = 0; e < out.tet_count(); ++e)
+        if (!region[e])
+          for (int v : out.tets[e])
+            in_kept[v] = 1;
+      std::set<std::array<int, 2>> long_edges;
+      for (int e = 0; e < out.tet_count(); ++e)
+        if (region[e])
+          for (int a = 0; a < 4; ++a)
+            for (int c = a + 1; c < 4; ++c) {
+              const int i = out.tets[e][a], j = out.tets[e][c];
+              if (in_kept[i] && in_kept[j] &&
+                  (out.nodes[i] - out.nodes[j]).norm() > border_splits * at_level.edge_length)
+                long_edges.insert({std::min(i, j), std::max(i, j)});
+            }
+      if (long_edges.empty()) break;
+      const mesh::Bisection cut = mesh::bisect_edges(out, {long_edges.begin(), long_edges.end()});
+      std::vector<char> halves(cut.parent.size());
+      for (std::size_t e = 0; e < cut.parent.size(); ++e)
+        halves[e] = region[cut.parent[e]];
+      region.swap(halves);
+    }
+    // A border face CGAL changed anyway (a few in thousands) takes the kept
+    // tets on it into the region, and the level is tried again.
+    std::optional<RegionRemesh> level;
+    std::vector<std::array<int, 3>> changed;
+    for (int attempt = 0; attempt < kLevelAttempts && !level; ++attempt) {
+      try {
+        level = remesh_region(out, region, at_level, RegionSurface::rebuilt, {}, &changed);
+      } catch (const RunError& error) {
+        if (attempt + 1 == kLevelAttempts || changed.empty()) {
+          log::info("    remeshing: the size field's finer levels stopped at %.3g mm (smallest asked %.3g mm): %s",
+                    previous_level, settings.smallest_edge_length, error.what());
+          break;
+        }
+        const std::set<std::array<int, 3>> faces(changed.begin(), changed.end());
+        for (int e = 0; e < out.tet_count(); ++e)
+          for (const auto& fv : mesh::kFaceVertices) {
+            std::array<int, 3> key{out.tets[e][fv[0]], out.tets[e][fv[1]], out.tets[e][fv[2]]};
+            std::sort(key.begin(), key.end());
+            if (faces.count(key) > 0) region[e] = 1;
+          }
+      }
+    }
+    if (!level) break;
+    out = std::move(level->mesh);
+    previous_level = at_level.edge_length;
+  }
+  // Between two levels the cells on the coarse side keep the border the fine
+  // side was made on, and some are poor: they and a layer around them are
+  // rebuilt inside the surface at their own length, taken when that helps.
+  std::vector<char> poor(out.tets.size(), 0);
+  double worst = 1.0;
+  for (int e = 0; e < out.tet_count(); ++e) {
+    const double q = mesh::quality(out, e);
+    poor[e] = q < kPoorAfterLevels;
+    worst = std::min(worst, q);
+  }
+  if (worst >= kPoorAfterLevels) return out;
+  poor = grow_region(out, std::move(poor), 1);
+  RemeshSettings inside = settings;
+  inside.edge_length = mean_edge_length(out, poor);
+  try {
+    RegionRemesh mended = remesh_region(out, poor, inside, RegionSurface::kept);
+    double mended_worst = 1.0;
+    for (int e = 0; e < mended.mesh.tet_count(); ++e)
+      mended_worst = std::min(mended_worst, mesh::quality(mended.mesh, e));
+    if (mended_worst > worst) out = std::move(mended.mesh);
+  } catch (const RunError&) {
+    // The levels' mesh stands: its worst is what the caller's checks judge.
+  }
   return out;
 }
 

@@ -432,13 +432,16 @@ const std::vector<KeySpec>& case_schema() {
                            0, 180, true),
                      "40"),
         with_default(range(key("remeshing.iterations", T::integer, "CGAL remeshing passes"), 1, 20), "3"),
-        with_default(choices(key("remeshing.size", T::string,
-                                 "size field: 'uniform' (element_size everywhere) or 'adaptive' (down to smallest_size "
-                                 "near the dies and where the strain rate is high)"),
-                             {"uniform", "adaptive"}),
-                     "uniform"),
+        with_default(
+            choices(key("remeshing.size", T::string,
+                        "size field: 'uniform' (element_size everywhere) or 'adaptive' (down to smallest_size: "
+                        "3 elements across the gap between two dies, half a die fillet's radius, finer "
+                        "where the strain rate is high; neighbours within 1.5x)"),
+                    {"uniform", "adaptive"}),
+            "uniform"),
         range(key("remeshing.smallest_size", T::number,
-                  "adaptive size field: the edge length at a die and where the strain rate is 4x the body's mean; "
+                  "adaptive size field: the smallest edge it asks for (a strain rate 4x the body's mean asks "
+                  "for half the element size); "
                   "default half the element size; a remesh refuses a result that changes the body's volume by more "
                   "than 1 % or whose worst quality is below a third of remeshing.quality (the body keeps its mesh)",
                   "mm"),

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 using namespace anvil;
 
@@ -19,9 +21,10 @@ struct RemeshedRun {
   scene::RunState end;
 };
 
-RemeshedRun run_remeshed(const std::string& case_file, const std::string& name) {
+RemeshedRun run_remeshed(const std::string& case_file, const std::string& name,
+                         const std::vector<std::string>& overrides = {}) {
   log::set_quiet(true);
-  scene::Case c = scene::read_case(source_path(case_file));
+  scene::Case c = scene::read_case(source_path(case_file), overrides);
   RunOutputs out = run_case(c, name);
   scene::RunState end = out.final_state();
   return RemeshedRun{std::move(c), std::move(out), std::move(end)};
@@ -138,4 +141,15 @@ TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshe
   check_max_strain(run);
   check_load_jump(run, 0.10);
   check_load_trend(run, "upper", 0.07);
+}
+
+TEST_CASE("Closed-die forging with the adaptive size field reaches closure, remeshes keep volume and strain integral",
+          "[hard][remesh]") {
+  const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash_adaptive",
+                                       {"remeshing.size=adaptive", "remeshing.check_load=false"}); // 7 min
+  check_remeshes_keep_volume_and_strain(run);
+  // The uniform run's 1 % bound; the 0.3 % aimed at (#44) is not met yet
+  // (mesh +0.44 %, material +0.21 % measured).
+  check_run_volume(run);
+  check_max_strain(run);
 }

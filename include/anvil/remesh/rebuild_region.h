@@ -26,4 +26,8 @@ std::vector<char> region_around(const mesh::TetMesh& part, std::span<const mesh:
 /// around it (tets that share a node with a flagged one).
 std::vector<char> grow_region(const mesh::TetMesh& part, std::vector<char> flagged, int layers);
 
+/// The mean length of the edges of the tets of `part` that `region` flags
+/// (mm; each edge once per tet): the resolution a region has.
+double mean_edge_length(const mesh::TetMesh& part, const std::vector<char>& region);
+
 } // namespace anvil::remesh

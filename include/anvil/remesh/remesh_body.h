@@ -61,10 +61,12 @@ enum class RegionSurface {
 /// settings.edge_length. The region's border with the kept tets keeps its
 /// nodes and faces, so the kept tets fit the new ones; so does the body's
 /// surface in the region unless `surface` is RegionSurface::rebuilt. Throws
-/// RunError when CGAL cannot take the mesh, changes the border or its result
-/// has a fault.
+/// RunError when CGAL cannot take the mesh, changes the border (then the
+/// border faces it changed, as sorted node triples, into `changed_border`
+/// when given) or its result has a fault.
 RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebuilt, const RemeshSettings& settings,
-                           RegionSurface surface = RegionSurface::kept, std::span<const char> pinned = {});
+                           RegionSurface surface = RegionSurface::kept, std::span<const char> pinned = {},
+                           std::vector<std::array<int, 3>>* changed_border = nullptr);
 
 /// Patch number (from 1) of each boundary face of `body`, as remesh_body sets them.
 std::vector<int> boundary_patches(const mesh::TetMesh& body, double feature_angle);
