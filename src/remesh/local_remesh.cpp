@@ -178,23 +178,9 @@ std::optional<LocalRemesh> split_sunk_edges(const scene::Scene& scene, const sce
 /// tets `region` flags that kept tets share too (the region's border),
 /// carrying `fields` and `region` onto the halves. Returns whether any was.
 bool bisect_long_border_edges(BodyFields& fields, std::vector<char>& region, double longest) {
-  const mesh::TetMesh& m = fields.mesh;
-  std::vector<char> in_kept(m.nodes.size(), 0);
-  for (int e = 0; e < m.tet_count(); ++e)
-    if (!region[e])
-      for (int v : m.tets[e])
-        in_kept[v] = 1;
-  std::set<std::array<int, 2>> long_edges;
-  for (int e = 0; e < m.tet_count(); ++e) {
-    if (!region[e]) continue;
-    const mesh::Tet& t = m.tets[e];
-    for (int a = 0; a < 4; ++a)
-      for (int c = a + 1; c < 4; ++c)
-        if (in_kept[t[a]] && in_kept[t[c]] && (m.nodes[t[a]] - m.nodes[t[c]]).norm() > longest)
-          long_edges.insert({std::min(t[a], t[c]), std::max(t[a], t[c])});
-  }
-  if (long_edges.empty()) return false;
-  bisect_carrying(fields, {long_edges.begin(), long_edges.end()}, &region);
+  const std::vector<std::array<int, 2>> edges = long_border_edges(fields.mesh, region, longest);
+  if (edges.empty()) return false;
+  bisect_carrying(fields, edges, &region);
   return true;
 }
 

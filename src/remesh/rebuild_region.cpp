@@ -2,6 +2,8 @@
 
 #include "anvil/mesh/tet_geometry.h"
 
+#include <algorithm>
+
 namespace anvil::remesh {
 
 std::vector<char> rebuild_region(const mesh::TetMesh& part, const Eigen::Ref<const Eigen::VectorXd>& nodal,
@@ -38,6 +40,27 @@ std::vector<char> grow_region(const mesh::TetMesh& part, std::vector<char> flagg
         flagged[e] = flagged[e] || touched[v];
   }
   return flagged;
+}
+
+std::vector<std::array<int, 2>> long_border_edges(const mesh::TetMesh& part, const std::vector<char>& region,
+                                                  double longest) {
+  std::vector<char> in_kept(part.nodes.size(), 0);
+  for (int e = 0; e < part.tet_count(); ++e)
+    if (!region[e])
+      for (int v : part.tets[e])
+        in_kept[v] = 1;
+  std::vector<std::array<int, 2>> edges;
+  for (int e = 0; e < part.tet_count(); ++e) {
+    if (!region[e]) continue;
+    const mesh::Tet& t = part.tets[e];
+    for (int a = 0; a < 4; ++a)
+      for (int c = a + 1; c < 4; ++c)
+        if (in_kept[t[a]] && in_kept[t[c]] && (part.nodes[t[a]] - part.nodes[t[c]]).norm() > longest)
+          edges.push_back({std::min(t[a], t[c]), std::max(t[a], t[c])});
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
 }
 
 double mean_edge_length(const mesh::TetMesh& part, const std::vector<char>& region) {

@@ -44,6 +44,9 @@ constexpr double kBorderMargin = 1.01;
 /// Tries of one level of the size field, each with the region grown over
 /// the border faces CGAL changed in the last.
 constexpr int kLevelAttempts = 4;
+/// Passes of bisecting a level's long border edges (a bisection can leave
+/// another long edge).
+constexpr int kBorderPasses = 3;
 /// After the size field's levels, cells below this quality are rebuilt.
 constexpr double kPoorAfterLevels = 0.25;
 
@@ -457,24 +460,11 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
     if (std::find(region.begin(), region.end(), 1) == region.end()) break;
     // CGAL would split the border's edges longer than its limit, which the
     // region's remesh refuses: they are bisected first, on both sides.
-    for (int pass = 0; pass < 3; ++pass) {
-      std::vector<char> in_kept(out.nodes.size(), 0);
-      for (int e = 0; e < out.tet_count(); ++e)
-        if (!region[e])
-          for (int v : out.tets[e])
-            in_kept[v] = 1;
-      std::set<std::array<int, 2>> long_edges;
-      for (int e = 0; e < out.tet_count(); ++e)
-        if (region[e])
-          for (int a = 0; a < 4; ++a)
-            for (int c = a + 1; c < 4; ++c) {
-              const int i = out.tets[e][a], j = out.tets[e][c];
-              if (in_kept[i] && in_kept[j] &&
-                  (out.nodes[i] - out.nodes[j]).norm() > border_splits * at_level.edge_length)
-                long_edges.insert({std::min(i, j), std::max(i, j)});
-            }
+    for (int pass = 0; pass < kBorderPasses; ++pass) {
+      const std::vector<std::array<int, 2>> long_edges =
+          long_border_edges(out, region, border_splits * at_level.edge_length);
       if (long_edges.empty()) break;
-      const mesh::Bisection cut = mesh::bisect_edges(out, {long_edges.begin(), long_edges.end()});
+      const mesh::Bisection cut = mesh::bisect_edges(out, long_edges);
       std::vector<char> halves(cut.parent.size());
       for (std::size_t e = 0; e < cut.parent.size(); ++e)
         halves[e] = region[cut.parent[e]];

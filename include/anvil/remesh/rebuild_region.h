@@ -5,6 +5,7 @@
 #include "anvil/mesh/TetMesh.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <span>
 #include <vector>
 
@@ -25,6 +26,13 @@ std::vector<char> region_around(const mesh::TetMesh& part, std::span<const mesh:
 /// `flagged` (one flag per tet of `part`) with `layers` layers of tets
 /// around it (tets that share a node with a flagged one).
 std::vector<char> grow_region(const mesh::TetMesh& part, std::vector<char> flagged, int layers);
+
+/// The edges longer than `longest` (mm) between two nodes of the tets
+/// `region` flags that kept tets share too (the region's border), as node
+/// pairs, smaller first: CGAL would split them, and a region's remesh must
+/// keep its border.
+std::vector<std::array<int, 2>> long_border_edges(const mesh::TetMesh& part, const std::vector<char>& region,
+                                                  double longest);
 
 /// The mean length of the edges of the tets of `part` that `region` flags
 /// (mm; each edge once per tet): the resolution a region has.
