@@ -54,17 +54,10 @@ mesh::Bisection bisect_carrying(BodyFields& fields, const std::vector<std::array
   mesh::TetMesh& m = fields.mesh;
   const int nodes_before = m.node_count();
   const mesh::Bisection cut = mesh::bisect_edges(m, edges);
-  auto by_parent = [&](auto& values) {
-    auto halves = values;
-    halves.resize(cut.parent.size());
-    for (std::size_t e = 0; e < cut.parent.size(); ++e)
-      halves[e] = values[cut.parent[e]];
-    values = std::move(halves);
-  };
-  if (region) by_parent(*region);
-  by_parent(fields.strain);
+  if (region) mesh::carry_to_halves(cut, *region);
+  mesh::carry_to_halves(cut, fields.strain);
   for (std::vector<double>& d : fields.damage)
-    by_parent(d);
+    mesh::carry_to_halves(cut, d);
   auto at_midpoints = [&](auto& values, int stride) {
     values.conservativeResize(stride * m.node_count());
     for (std::size_t k = 0; k < cut.midpoint_of.size(); ++k) {

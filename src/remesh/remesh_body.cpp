@@ -10,6 +10,7 @@
 #include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/tet_geometry.h"
+#include "anvil/remesh/quality.h"
 #include "anvil/remesh/rebuild_region.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -464,11 +465,7 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
       const std::vector<std::array<int, 2>> long_edges =
           long_border_edges(out, region, border_splits * at_level.edge_length);
       if (long_edges.empty()) break;
-      const mesh::Bisection cut = mesh::bisect_edges(out, long_edges);
-      std::vector<char> halves(cut.parent.size());
-      for (std::size_t e = 0; e < cut.parent.size(); ++e)
-        halves[e] = region[cut.parent[e]];
-      region.swap(halves);
+      mesh::carry_to_halves(mesh::bisect_edges(out, long_edges), region);
     }
     // A border face CGAL changed anyway (a few in thousands) takes the kept
     // tets on it into the region, and the level is tried again.
@@ -499,23 +496,17 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   // Between two levels the cells on the coarse side keep the border the fine
   // side was made on, and some are poor: they and a layer around them are
   // rebuilt inside the surface at their own length, taken when that helps.
-  std::vector<char> poor(out.tets.size(), 0);
-  double worst = 1.0;
-  for (int e = 0; e < out.tet_count(); ++e) {
-    const double q = mesh::quality(out, e);
-    poor[e] = q < kPoorAfterLevels;
-    worst = std::min(worst, q);
-  }
+  const double worst = worst_quality(out);
   if (worst >= kPoorAfterLevels) return out;
+  std::vector<char> poor(out.tets.size(), 0);
+  for (int e = 0; e < out.tet_count(); ++e)
+    poor[e] = mesh::quality(out, e) < kPoorAfterLevels;
   poor = grow_region(out, std::move(poor), 1);
   RemeshSettings inside = settings;
   inside.edge_length = mean_edge_length(out, poor);
   try {
     RegionRemesh mended = remesh_region(out, poor, inside, RegionSurface::kept);
-    double mended_worst = 1.0;
-    for (int e = 0; e < mended.mesh.tet_count(); ++e)
-      mended_worst = std::min(mended_worst, mesh::quality(mended.mesh, e));
-    if (mended_worst > worst) out = std::move(mended.mesh);
+    if (worst_quality(mended.mesh) > worst) out = std::move(mended.mesh);
   } catch (const RunError&) {
     // The levels' mesh stands: its worst is what the caller's checks judge.
   }

@@ -14,31 +14,10 @@ namespace {
 
 constexpr double kInfinite = std::numeric_limits<double>::infinity();
 
-/// The six edges of each tet, each once (node pairs, smaller first).
-std::vector<std::array<int, 2>> mesh_edges(const mesh::TetMesh& mesh) {
-  std::vector<std::array<int, 2>> edges;
-  edges.reserve(6 * mesh.tets.size());
-  for (const auto& t : mesh.tets)
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b)
-        edges.push_back({std::min(t[a], t[b]), std::max(t[a], t[b])});
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  return edges;
-}
-
 /// `size` lowered so that it grows by at most (kGradation − 1)·L along each
 /// edge of length L: shortest paths from the smallest sizes (Dijkstra).
 void grade(const mesh::TetMesh& mesh, std::vector<double>& size) {
-  const std::vector<std::array<int, 2>> edges = mesh_edges(mesh);
-  std::vector<int> first(mesh.nodes.size() + 1, 0);
-  for (const auto& e : edges)
-    ++first[e[0] + 1], ++first[e[1] + 1];
-  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
-    first[n + 1] += first[n];
-  std::vector<int> neighbour(first.back()), next(first.begin(), first.end() - 1);
-  for (const auto& e : edges)
-    neighbour[next[e[0]]++] = e[1], neighbour[next[e[1]]++] = e[0];
+  const std::vector<std::vector<int>> tets_around = mesh::tets_around_nodes(mesh);
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
   for (std::size_t n = 0; n < size.size(); ++n)
@@ -47,11 +26,11 @@ void grade(const mesh::TetMesh& mesh, std::vector<double>& size) {
     const auto [h, i] = queue.top();
     queue.pop();
     if (h > size[i]) continue;
-    for (int k = first[i]; k < first[i + 1]; ++k) {
-      const int j = neighbour[k];
-      const double through = h + (kGradation - 1.0) * (mesh.nodes[i] - mesh.nodes[j]).norm();
-      if (through < size[j]) size[j] = through, queue.emplace(through, j);
-    }
+    for (int e : tets_around[i])
+      for (int j : mesh.tets[e]) {
+        const double through = h + (kGradation - 1.0) * (mesh.nodes[i] - mesh.nodes[j]).norm();
+        if (through < size[j]) size[j] = through, queue.emplace(through, j);
+      }
   }
 }
 
@@ -111,9 +90,8 @@ std::vector<double> wanted_sizes(const mesh::TetMesh& old, std::span<const doubl
     }
   // A die's fillets and edges: each curved die vertex near the body asks for
   // kEdgeOverRadius of its radius there, growing away from it by the gradation.
-  mesh::Point low = old.nodes.front(), high = low;
-  for (const mesh::Point& x : old.nodes)
-    low = low.cwiseMin(x), high = high.cwiseMax(x);
+  const Eigen::AlignedBox3d box = mesh::bounding_box(old);
+  const mesh::Point low = box.min(), high = box.max();
   const double reach = coarse / (kGradation - 1.0);
   for (std::size_t d = 0; d < scene.dies.size(); ++d) {
     const auto& vertices = scene.dies[d].surface->triangles().vertices;
@@ -152,9 +130,8 @@ adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<co
   // the field is sampled once on a grid of spacing `smallest` over the body
   // (a field that grows by at most half a millimetre per millimetre is
   // linear enough between the samples) and interpolated trilinearly.
-  mesh::Point low = old.nodes.front(), high = low;
-  for (const mesh::Point& x : old.nodes)
-    low = low.cwiseMin(x), high = high.cwiseMax(x);
+  const Eigen::AlignedBox3d box = mesh::bounding_box(old);
+  const mesh::Point low = box.min(), high = box.max();
   std::array<int, 3> cells{};
   for (int k = 0; k < 3; ++k)
     cells[k] = std::max(1, static_cast<int>(std::ceil((high[k] - low[k]) / smallest)));

@@ -7,6 +7,7 @@
 #include "anvil/mesh/TetMesh.h"
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace anvil::mesh {
@@ -22,5 +23,14 @@ struct Bisection {
 /// (the first half in its place, the second appended), boundary faces alike
 /// with their tags. An edge that is not one of `mesh` is skipped.
 Bisection bisect_edges(TetMesh& mesh, const std::vector<std::array<int, 2>>& edges);
+
+/// An element field (or flag) of the mesh before `cut`, onto the tets after
+/// it: each half takes its parent's value.
+template <class T> void carry_to_halves(const Bisection& cut, std::vector<T>& values) {
+  std::vector<T> halves(cut.parent.size());
+  for (std::size_t e = 0; e < cut.parent.size(); ++e)
+    halves[e] = values[cut.parent[e]];
+  values = std::move(halves);
+}
 
 } // namespace anvil::mesh
