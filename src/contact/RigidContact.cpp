@@ -1,5 +1,6 @@
 #include "anvil/contact/RigidContact.h"
 
+#include "anvil/core/processes.h"
 #include "anvil/fem/DofMap.h"
 
 #include <Eigen/Geometry>
@@ -27,18 +28,30 @@ void RigidContact::search(const mesh::TetMesh& mesh, const std::vector<DieView>&
   dies_ = dies;
   candidates_.clear();
   const std::vector<double> area = boundary_node_areas(mesh);
-  for (int node = 0; node < mesh.node_count(); ++node) {
-    if (area[node] == 0.0) continue; // interior node
-    ContactCandidate best{node, -1, Eigen::Vector3d::Zero(), std::numeric_limits<double>::infinity(), area[node]};
-    for (std::size_t d = 0; d < dies.size(); ++d) {
-      const die::SurfaceProjection p = dies[d].surface->project(mesh.nodes[node] - dies[d].displacement);
-      if (p.distance < search_distance && p.distance < best.gap) {
-        best.die = static_cast<int>(d);
-        best.gap = p.distance;
-        best.normal = p.normal;
-      }
-    }
-    if (best.die >= 0) candidates_.push_back(best);
+  std::vector<int> boundary;
+  for (int node = 0; node < mesh.node_count(); ++node)
+    if (area[node] != 0.0) boundary.push_back(node);
+  // Per boundary node: the nearest die within reach (-1: none), the gap and the die's normal.
+  constexpr int kWidth = 5;
+  const std::vector<double> nearest =
+      processes::share_out(static_cast<int>(boundary.size()), kWidth, [&](int k, double* out) {
+        const mesh::Point& x = mesh.nodes[boundary[k]];
+        out[0] = -1.0;
+        double gap = std::numeric_limits<double>::infinity();
+        for (std::size_t d = 0; d < dies.size(); ++d) {
+          const die::SurfaceProjection p = dies[d].surface->project(x - dies[d].displacement);
+          if (p.distance < search_distance && p.distance < gap) {
+            gap = p.distance;
+            out[0] = static_cast<double>(d), out[1] = gap;
+            Eigen::Map<Eigen::Vector3d>(out + 2) = p.normal;
+          }
+        }
+      });
+  for (std::size_t k = 0; k < boundary.size(); ++k) {
+    const double* at = &nearest[kWidth * k];
+    if (at[0] < 0.0) continue;
+    candidates_.push_back(
+        {boundary[k], static_cast<int>(at[0]), Eigen::Map<const Eigen::Vector3d>(at + 2), at[1], area[boundary[k]]});
   }
   active_.resize(candidates_.size());
   gap_.resize(candidates_.size());

@@ -1,6 +1,7 @@
 #include "anvil/contact/die_fill.h"
 
 #include "anvil/contact/SurfaceSearch.h"
+#include "anvil/core/processes.h"
 #include "anvil/mesh/triangle_geometry.h"
 
 #include <algorithm>
@@ -41,9 +42,12 @@ PartSurface::Nearest PartSurface::nearest(const mesh::Point& x, const std::vecto
 }
 
 double PartSurface::distance(const mesh::Point& x) const {
-  const double reach = (x - search_->closest(x).point).norm();
-  const double half = reach * (1.0 + 1e-9) + 1e-12;
-  search_->overlapping(Eigen::AlignedBox3d(x.array() - half, x.array() + half), around_);
+  // The faces nearest to x are those that hold its closest point: the faces
+  // around that point, not all those within the distance of x (hundreds, for
+  // a die vertex far from the part).
+  const mesh::Point closest = search_->closest(x).point;
+  const double half = 1e-9 * (1.0 + closest.norm());
+  search_->overlapping(Eigen::AlignedBox3d(closest.array() - half, closest.array() + half), around_);
   const Nearest n = nearest(x, around_);
   return n.inside ? 0.0 : n.distance;
 }
@@ -56,40 +60,42 @@ bool PartSurface::within(const mesh::Point& x, double tolerance, double reach) c
   return n.inside ? n.distance <= half : n.distance <= tolerance;
 }
 
-DieFill measure_die_fill(const die::SurfaceTriangles& die, const Eigen::Vector3d& displacement,
-                         const FillRegion& region, const Eigen::AlignedBox3d& model_side, const PartSurface& part,
-                         double tolerance, double spacing, bool with_underfill) {
+FillSamples fill_samples(const die::SurfaceTriangles& die, const FillRegion& region, double spacing) {
+  const die::SurfaceTriangles pieces = die::refine(die, spacing);
+  FillSamples samples;
+  for (const std::array<int, 3>& f : pieces.faces) {
+    const mesh::Point &a = pieces.vertices[f[0]], &b = pieces.vertices[f[1]], &c = pieces.vertices[f[2]];
+    const mesh::Point centroid = (a + b + c) / 3.0;
+    if (!region.contains(centroid)) continue;
+    samples.points.push_back(centroid);
+    samples.areas.push_back(0.5 * (b - a).cross(c - a).norm());
+  }
+  return samples;
+}
+
+DieFill measure_die_fill(const FillSamples& samples, const die::SurfaceTriangles& die,
+                         const Eigen::Vector3d& displacement, const Eigen::AlignedBox3d& model_side,
+                         const PartSurface& part, double tolerance, double reach, bool with_underfill) {
   DieFill fill;
-  for (const std::array<int, 3>& f : die.faces) {
-    const mesh::Point& a = die.vertices[f[0]];
-    const Eigen::Vector3d u = die.vertices[f[1]] - a, v = die.vertices[f[2]] - a;
-    const double longest = std::max({u.norm(), v.norm(), (v - u).norm()});
-    const int n = std::max(1, static_cast<int>(std::ceil(longest / spacing)));
-    // n² sub-triangles of area A/n²: (i, j) and, but on the last row, its
-    // flipped twin; each measured at its centroid.
-    const double piece = 0.5 * u.cross(v).norm() / (n * n);
-    auto measure = [&](double s, double t) {
-      const mesh::Point x = a + (s / n) * u + (t / n) * v;
-      if (!region.contains(x) || !model_side.contains(x + displacement)) return;
-      fill.region_area += piece;
-      if (part.within(x + displacement, tolerance, spacing)) fill.contact_area += piece;
-    };
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; i + j < n; ++j) {
-        measure(i + 1.0 / 3.0, j + 1.0 / 3.0);
-        if (i + j < n - 1) measure(i + 2.0 / 3.0, j + 2.0 / 3.0);
-      }
+  const int count = static_cast<int>(samples.points.size());
+  const std::vector<double> touching = processes::share_out(count, 1, [&](int k, double* area) {
+    const mesh::Point x = samples.points[k] + displacement;
+    *area = model_side.contains(x) && part.within(x, tolerance, reach) ? samples.areas[k] : 0.0;
+  });
+  for (int k = 0; k < count; ++k) {
+    if (model_side.contains(samples.points[k] + displacement)) fill.region_area += samples.areas[k];
+    fill.contact_area += touching[k];
   }
   if (with_underfill)
-    for (const mesh::Point& x : die.vertices) {
-      mesh::Point mirrored = x + displacement;
+    fill.underfill = processes::share_out(static_cast<int>(die.vertices.size()), 1, [&](int vertex, double* distance) {
+      mesh::Point mirrored = die.vertices[vertex] + displacement;
       for (int k = 0; k < 3; ++k)
         if (mirrored[k] < model_side.min()[k])
           mirrored[k] = 2.0 * model_side.min()[k] - mirrored[k];
         else if (mirrored[k] > model_side.max()[k])
           mirrored[k] = 2.0 * model_side.max()[k] - mirrored[k];
-      fill.underfill.push_back(part.distance(mirrored));
-    }
+      *distance = part.distance(mirrored);
+    });
   return fill;
 }
 

@@ -21,6 +21,9 @@ bool started() {
   MPI_Finalized(&finalised);
   return initialised && !finalised;
 }
+
+/// Rank 0 inside on_root's work: the other processes are not listening.
+bool working_alone = false;
 } // namespace
 
 int rank() {
@@ -46,6 +49,16 @@ void sum(std::span<double> values) {
     if (root()) std::copy_n(total.data(), n, values.data() + first);
     MPI_Bcast(values.data() + first, n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
   }
+}
+
+std::vector<double> share_out(int items, int width, const std::function<void(int, double*)>& compute) {
+  std::vector<double> values(static_cast<std::size_t>(items) * width, 0.0);
+  const bool together = count() > 1 && !working_alone;
+  const int first = together ? rank() : 0, stride = together ? count() : 1;
+  for (int i = first; i < items; i += stride)
+    compute(i, values.data() + static_cast<std::size_t>(i) * width);
+  if (together) sum(values); // each value plus exact zeros
+  return values;
 }
 
 int minimum(int value) {
@@ -89,6 +102,10 @@ bool on_root_answer(const std::function<bool()>& work) {
   // Outcome: 'y' or 'n' answered, 'i' InputError, 'r' RunError, then the message.
   std::string outcome = "n";
   if (root()) {
+    struct Alone {
+      Alone() { working_alone = true; }
+      ~Alone() { working_alone = false; }
+    } alone;
     try {
       outcome[0] = work() ? 'y' : 'n';
     } catch (const InputError& e) {

@@ -64,7 +64,23 @@ public:
   }
 
   SurfaceProjection project(const mesh::Point& x) const override {
-    const auto [closest, face] = tree_.closest_point_and_primitive(Point3(x.x(), x.y(), x.z()));
+    return projection(x, tree_.closest_point_and_primitive(Point3(x.x(), x.y(), x.z())));
+  }
+
+  SurfaceProjection project_near(const mesh::Point& x, const SurfaceProjection& near) const override {
+    if (near.facet < 0) return project(x);
+    const Tree::Point_and_primitive_id hint(Point3(near.point.x(), near.point.y(), near.point.z()),
+                                            Mesh::Face_index(near.facet));
+    return projection(x, tree_.closest_point_and_primitive(Point3(x.x(), x.y(), x.z()), hint));
+  }
+
+  const SurfaceTriangles& triangles() const override { return triangles_; }
+  std::string describe() const override { return description_; }
+
+private:
+  /// The projection of x whose closest point and facet the tree found.
+  SurfaceProjection projection(const mesh::Point& x, const Tree::Point_and_primitive_id& found) const {
+    const auto& [closest, face] = found;
     const mesh::Point point(closest.x(), closest.y(), closest.z());
     const Eigen::Vector3d& facet_normal = normals_[face.idx()];
     const Eigen::Vector3d offset = x - point;
@@ -73,15 +89,12 @@ public:
     // is not, and the offset direction is the normal of the surface there.
     // The side (sign) comes from the facet the closest point belongs to.
     const double side = offset.dot(facet_normal) >= 0.0 ? 1.0 : -1.0;
-    if (distance < 1e-12 * (1.0 + x.norm())) return {point, facet_normal, 0.0, true};
+    const int facet = static_cast<int>(face.idx());
+    if (distance < 1e-12 * (1.0 + x.norm())) return {point, facet_normal, 0.0, true, facet};
     const bool on_facet = std::abs(offset.dot(facet_normal)) >= (1.0 - 1e-9) * distance;
-    return {point, side * offset / distance, side * distance, on_facet};
+    return {point, side * offset / distance, side * distance, on_facet, facet};
   }
 
-  const SurfaceTriangles& triangles() const override { return triangles_; }
-  std::string describe() const override { return description_; }
-
-private:
   Mesh mesh_;
   Tree tree_;
   std::vector<Eigen::Vector3d> normals_;

@@ -1,5 +1,7 @@
 #include "anvil/die/overlap_volume.h"
 
+#include "anvil/core/processes.h"
+
 #include <algorithm>
 #include <array>
 
@@ -21,34 +23,43 @@ const std::array<Eigen::Vector2d, n* n> samples = [] {
   return at;
 }();
 
+/// overlap_volume's share of boundary face `f`.
+double overlap_under_face(const mesh::TetMesh& mesh, int f, const DieSurface& surface, const Eigen::Vector3d& shift,
+                          double deepest) {
+  const mesh::Triangle& face = mesh.boundary_faces[f];
+  const mesh::Point &a = mesh.nodes[face[0]], &b = mesh.nodes[face[1]], &c = mesh.nodes[face[2]];
+  const mesh::Point centroid = (a + b + c) / 3.0;
+  const double radius = std::max({(a - centroid).norm(), (b - centroid).norm(), (c - centroid).norm()});
+  const SurfaceProjection middle = surface.project(centroid - shift);
+  if (middle.distance > radius) return 0.0; // the die surface misses the face
+  const Eigen::Vector3d area = mesh::area_vector(mesh, face);
+  const double area_norm = area.norm();
+  if (area_norm == 0.0) return 0.0;
+  const Eigen::Vector3d outward = area / area_norm;
+  double depth_sum = 0.0;
+  for (const Eigen::Vector2d& s : samples) {
+    const mesh::Point x = a + s.x() * (b - a) + s.y() * (c - a);
+    const SurfaceProjection p = surface.project_near(x - shift, middle);
+    if (p.distance >= 0.0 || p.distance < -deepest) continue;
+    // Along the face's inward normal down to the die's tangent plane. A die
+    // wall more than 60° from facing the face is not below it: a face on a
+    // symmetry plane cuts the overlap another face already counts.
+    const double facing = -p.normal.dot(outward);
+    if (facing >= 0.5) depth_sum += -p.distance / facing;
+  }
+  return area_norm * depth_sum / (n * n);
+}
+
 } // namespace
 
 double overlap_volume(const mesh::TetMesh& mesh, const mesh::MeshRange& body, const DieSurface& surface,
                       const Eigen::Vector3d& shift, double deepest) {
+  const std::vector<double> under = processes::share_out(body.face_count, 1, [&](int k, double* volume) {
+    *volume = overlap_under_face(mesh, body.first_face + k, surface, shift, deepest);
+  });
   double volume = 0.0;
-  for (int f = body.first_face; f < body.first_face + body.face_count; ++f) {
-    const mesh::Triangle& face = mesh.boundary_faces[f];
-    const mesh::Point &a = mesh.nodes[face[0]], &b = mesh.nodes[face[1]], &c = mesh.nodes[face[2]];
-    const mesh::Point centroid = (a + b + c) / 3.0;
-    const double radius = std::max({(a - centroid).norm(), (b - centroid).norm(), (c - centroid).norm()});
-    if (surface.project(centroid - shift).distance > radius) continue; // the die surface misses the face
-    const Eigen::Vector3d area = mesh::area_vector(mesh, face);
-    const double area_norm = area.norm();
-    if (area_norm == 0.0) continue;
-    const Eigen::Vector3d outward = area / area_norm;
-    double depth_sum = 0.0;
-    for (const Eigen::Vector2d& s : samples) {
-      const mesh::Point x = a + s.x() * (b - a) + s.y() * (c - a);
-      const SurfaceProjection p = surface.project(x - shift);
-      if (p.distance >= 0.0 || p.distance < -deepest) continue;
-      // Along the face's inward normal down to the die's tangent plane. A die
-      // wall more than 60° from facing the face is not below it: a face on a
-      // symmetry plane cuts the overlap another face already counts.
-      const double facing = -p.normal.dot(outward);
-      if (facing >= 0.5) depth_sum += -p.distance / facing;
-    }
-    volume += area_norm * depth_sum / (n * n);
-  }
+  for (const double v : under) // in face order: the same sum on any number of processes
+    volume += v;
   return volume;
 }
 

@@ -1,6 +1,7 @@
 #include "anvil/remesh/die_feature_depth.h"
 
 #include "anvil/contact/SurfaceSearch.h"
+#include "anvil/core/processes.h"
 #include "anvil/remesh/field_transfer.h"
 
 #include <algorithm>
@@ -23,15 +24,19 @@ std::vector<SunkVertex> sunk_die_vertices(const mesh::TetMesh& mesh, const mesh:
         candidates.push_back(x), die_of.push_back(static_cast<int>(d));
   std::vector<SunkVertex> sunk;
   if (candidates.empty()) return sunk;
-  const std::vector<Location> located = PointLocator(mesh).locate(candidates);
+  const PointLocator in_mesh(mesh);
   const std::vector<mesh::Triangle> faces(mesh.boundary_faces.begin() + body.first_face,
                                           mesh.boundary_faces.begin() + body.first_face + body.face_count);
   const contact::SurfaceSearch surface(mesh.nodes, faces);
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    const Location& at = located[k];
-    if (!at.inside || at.tet < body.first_tet || at.tet >= body.first_tet + body.tet_count) continue;
-    sunk.push_back({die_of[k], {(candidates[k] - surface.closest(candidates[k]).point).norm(), candidates[k]}});
-  }
+  // Each candidate's depth below the body's surface, -1 outside the body.
+  const std::vector<double> depth =
+      processes::share_out(static_cast<int>(candidates.size()), 1, [&](int k, double* below) {
+        const std::optional<Location> at = in_mesh.containing(candidates[k]);
+        const bool inside = at && at->tet >= body.first_tet && at->tet < body.first_tet + body.tet_count;
+        *below = inside ? (candidates[k] - surface.closest(candidates[k]).point).norm() : -1.0;
+      });
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+    if (depth[k] >= 0.0) sunk.push_back({die_of[k], {depth[k], candidates[k]}});
   return sunk;
 }
 

@@ -72,12 +72,12 @@ PointLocator::PointLocator(const mesh::TetMesh& old_mesh) : mesh_(old_mesh), vtk
 
 PointLocator::~PointLocator() = default;
 
-Location PointLocator::locate(const mesh::Point& p) const {
+std::optional<Location> PointLocator::containing(const mesh::Point& p) const {
   // VTK's static locator lists a bin's cells in an order that changes with
   // its threads (its SMP sort), so which of the tets sharing a face FindCell
   // returns, or which of two equally close ones FindClosestPoint does, is not
   // reproducible. The tets are chosen here by one rule: the most inside one,
-  // else the nearest, ties to the lowest index.
+  // else (locate) the nearest, ties to the lowest index.
   std::vector<int>& candidates = vtk_->candidates;
   tets_in_box(p, p, candidates);
   int best = -1;
@@ -88,17 +88,24 @@ Location PointLocator::locate(const mesh::Point& p) const {
     const double lowest = *std::min_element(w.begin(), w.end());
     if (lowest > most_inside || (lowest == most_inside && e < best)) most_inside = lowest, best = e, linear = w;
   }
-  if (best >= 0 && most_inside >= -kOnFace) return {best, clamped(linear), true, linear};
+  if (best >= 0 && most_inside >= -kOnFace) return Location{best, clamped(linear), true, linear};
+  return std::nullopt;
+}
+
+Location PointLocator::locate(const mesh::Point& p) const {
+  if (const std::optional<Location> in = containing(p)) return *in;
   // Outside the mesh (a boundary node a hair off the old surface): the tets
   // within VTK's closest distance, and among them the nearest by the clamped
   // weights' point.
+  std::vector<int>& candidates = vtk_->candidates;
+  std::array<double, 4> linear{};
   double x[3] = {p.x(), p.y(), p.z()}, closest[3], distance2 = 0.0;
   vtkIdType tet = -1;
   int sub = 0;
   vtk_->locator->FindClosestPoint(x, closest, vtk_->cell.GetPointer(), tet, sub, distance2);
   const double reach = std::sqrt(distance2) * (1.0 + 1e-9) + 1e-12;
   tets_in_box(p - mesh::Point::Constant(reach), p + mesh::Point::Constant(reach), candidates);
-  best = -1;
+  int best = -1;
   double nearest = std::numeric_limits<double>::infinity();
   std::array<double, 4> weights{};
   for (const int e : candidates) {

@@ -292,8 +292,14 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
   die_sampling = drawn ? carried->die_sampling : reference_length; // a worn die: a sample per boundary edge
   {
     Timers::Scope scope(timers, "effect rigid_dies (setup)");
-    for (const DieSpec& spec : c.dies)
+    for (const DieSpec& spec : c.dies) {
       dies.push_back(build_die(spec, die_extent, die_sampling));
+      // Pieces of at most ¾ of an edge: each sample stands for points less
+      // than half an edge away, about the mesh's own resolution.
+      if (spec.fill)
+        dies.back().fill_samples =
+            contact::fill_samples(dies.back().shown(), spec.fill_region, 0.75 * reference_length);
+    }
   }
   for (std::size_t d = 0; d < dies.size(); ++d)
     surfaces.push_back({dies[d].name, int(d), -1});
@@ -503,13 +509,11 @@ std::vector<std::optional<contact::DieFill>> die_fills(const Scene& scene, const
     any = any || asks(d);
   if (!any) return fills;
   const contact::PartSurface part(mesh);
-  // Samples half an edge apart resolve the touching area to about the
-  // mesh's own resolution.
   for (std::size_t d = 0; d < scene.dies.size(); ++d)
     if (asks(d))
-      fills[d] = contact::measure_die_fill(scene.dies[d].shown(), dies_now[d].displacement,
-                                           scene.input.dies[d].fill_region, scene.model_side, part,
-                                           fill_tolerance(scene, int(d)), 0.5 * scene.reference_length, with_underfill);
+      fills[d] = contact::measure_die_fill(scene.dies[d].fill_samples, scene.dies[d].shown(), dies_now[d].displacement,
+                                           scene.model_side, part, fill_tolerance(scene, int(d)),
+                                           0.5 * scene.reference_length, with_underfill);
   return fills;
 }
 

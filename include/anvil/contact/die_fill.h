@@ -67,18 +67,29 @@ struct DieFill {
   std::vector<double> underfill;
 };
 
-/// The fill of the die whose surface is `die` (its own frame), moved by
-/// `displacement`, over a model of the part cut by symmetry planes to
-/// `model_side`: each triangle is cut into sub-triangles of edge at most
-/// `spacing` (mm); one whose centre lies in `region` (die frame at rest)
-/// and on the model's side counts towards
-/// region_area (a die drawn past a symmetry plane is the mirror image's
-/// there), and towards contact_area when its centre is within `tolerance`
-/// (mm) of the part or inside it by less than `spacing` (a die sunk deeper
-/// into the part is a run that has already gone wrong:
-/// remeshing.die_penetration remeshes at a quarter of an element).
-DieFill measure_die_fill(const die::SurfaceTriangles& die, const Eigen::Vector3d& displacement,
-                         const FillRegion& region, const Eigen::AlignedBox3d& model_side, const PartSurface& part,
-                         double tolerance, double spacing, bool with_underfill);
+/// Where a die's fill is measured: its surface (die frame, at rest) cut into
+/// pieces with no edge longer than a spacing (die::refine), the centroids of
+/// those in the fill region, each standing for its piece's area.
+struct FillSamples {
+  std::vector<mesh::Point> points; ///< mm
+  std::vector<double> areas;       ///< mm²
+};
+
+/// The samples of `die` in `region` at `spacing` (mm), made once per die.
+FillSamples fill_samples(const die::SurfaceTriangles& die, const FillRegion& region, double spacing);
+
+/// The fill of a die moved by `displacement`, over a model of the part cut
+/// by symmetry planes to `model_side`: each of the die's `samples` on the
+/// model's side counts towards region_area (a die drawn past a symmetry
+/// plane is the mirror image's there), and towards contact_area when it is
+/// within `tolerance` (mm) of the part or inside it by less than `reach`
+/// (a die sunk deeper into the part is a run that has already gone wrong:
+/// remeshing.die_penetration remeshes at a quarter of an element). The
+/// underfill, when asked for, at the vertices of `die` (its surface, die
+/// frame). The samples and vertices are shared out among the processes
+/// (processes::share_out).
+DieFill measure_die_fill(const FillSamples& samples, const die::SurfaceTriangles& die,
+                         const Eigen::Vector3d& displacement, const Eigen::AlignedBox3d& model_side,
+                         const PartSurface& part, double tolerance, double reach, bool with_underfill);
 
 } // namespace anvil::contact

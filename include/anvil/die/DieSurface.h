@@ -22,6 +22,7 @@ struct SurfaceProjection {
   /// normal), not on an edge or a corner; behind an open surface's border
   /// the side (sign) means little.
   bool on_facet = true;
+  int facet = -1; ///< the facet of a triangulated surface the closest point lies on (-1: analytic)
 };
 
 /// Triangles of a surface, for output.
@@ -40,6 +41,13 @@ class DieSurface {
 public:
   virtual ~DieSurface() = default;
   virtual SurfaceProjection project(const mesh::Point& x) const = 0;
+  /// project(x) for x close to a point already projected (`near`): a
+  /// triangulated surface's search starts from near's closest point instead
+  /// of finding a start of its own, which is most of a query's cost.
+  virtual SurfaceProjection project_near(const mesh::Point& x, const SurfaceProjection& near) const {
+    (void)near;
+    return project(x);
+  }
   /// The surface as triangles in the die frame (what the VTK series shows).
   virtual const SurfaceTriangles& triangles() const = 0;
   /// One line for the log.

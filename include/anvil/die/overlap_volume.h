@@ -20,7 +20,8 @@ namespace anvil::die {
 /// die edge crosses). Points deeper than `deepest` (mm) are the far side of
 /// an open die surface, not overlap; where the die's surface is more than 60°
 /// from facing the face, the face cuts across the overlap rather than
-/// bounding it (a symmetry plane), and adds nothing.
+/// bounding it (a symmetry plane), and adds nothing. The faces are shared out
+/// among the processes (processes::share_out).
 double overlap_volume(const mesh::TetMesh& mesh, const mesh::MeshRange& body, const DieSurface& surface,
                       const Eigen::Vector3d& shift, double deepest);
 

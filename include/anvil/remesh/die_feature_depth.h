@@ -22,7 +22,8 @@ struct SunkVertex {
   DieFeature feature; ///< its depth and place
 };
 
-/// The vertices of the dies (each die's, in place) inside the body `body` of `mesh`.
+/// The vertices of the dies (each die's, in place) inside the body `body` of `mesh`,
+/// shared out among the processes (processes::share_out).
 std::vector<SunkVertex> sunk_die_vertices(const mesh::TetMesh& mesh, const mesh::MeshRange& body,
                                           const std::vector<std::vector<mesh::Point>>& die_vertices);
 

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace anvil::remesh {
@@ -33,6 +34,10 @@ public:
   PointLocator& operator=(const PointLocator&) = delete;
 
   Location locate(const mesh::Point& point) const;
+  /// The tet `point` lies in (on a shared face the most inside one, ties to
+  /// the lowest index), or nullopt outside the mesh: locate without its
+  /// search for the closest tet, for points that are mostly outside.
+  std::optional<Location> containing(const mesh::Point& point) const;
   std::vector<Location> locate(const std::vector<mesh::Point>& points) const;
   /// The tets whose bounding boxes meet the box [low, high] (some may not meet it), into `tets`.
   void tets_in_box(const mesh::Point& low, const mesh::Point& high, std::vector<int>& tets) const;

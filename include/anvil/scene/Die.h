@@ -29,6 +29,8 @@ struct Die {
   /// The triangles the die is written and measured on (VTK series, die fill,
   /// die wear), in its start position: its surface's, or `refined`.
   const die::SurfaceTriangles& shown() const { return refined ? *refined : surface->triangles(); }
+  /// Where the die's fill is measured (its 'fill' key; none without it).
+  contact::FillSamples fill_samples;
   contact::FrictionLaw friction;
 
   /// Mean velocity over [t, t + Δt] from state `s` (mm/s).
