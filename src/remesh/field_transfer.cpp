@@ -2,6 +2,7 @@
 
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/mesh/tet_overlap.h"
+#include "anvil/remesh/overlap_candidates.h"
 
 #include <Eigen/Dense>
 #include <vtkCellArray.h>
@@ -220,17 +221,14 @@ std::vector<double> remap_element(const mesh::TetMesh& old_mesh, const std::vect
   // part (a linear function's: its value at the part's centroid times the
   // part's volume), summed and divided by the volume covered.
   std::vector<double> out(new_mesh.tets.size());
-  std::vector<int> candidates;
+  const OverlapCandidates candidates = overlap_candidates(new_mesh, old_mesh);
   mesh::TetCorners corners, old_corners;
   for (int n = 0; n < new_mesh.tet_count(); ++n) {
     for (int k = 0; k < 4; ++k)
       corners[k] = new_mesh.nodes[new_mesh.tets[n][k]];
-    mesh::Point box_low = corners[0], box_high = corners[0];
-    for (const mesh::Point& x : corners)
-      box_low = box_low.cwiseMin(x), box_high = box_high.cwiseMax(x);
-    in_old.tets_in_box(box_low, box_high, candidates);
     double covered = 0.0, sum = 0.0;
-    for (int e : candidates) {
+    for (int c = candidates.first[n]; c < candidates.first[n + 1]; ++c) {
+      const int e = candidates.tets[c];
       for (int k = 0; k < 4; ++k)
         old_corners[k] = old_mesh.nodes[old_mesh.tets[e][k]];
       const mesh::Overlap common = mesh::tet_overlap(corners, old_corners);
