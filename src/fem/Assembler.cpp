@@ -157,6 +157,15 @@ void Assembler::add_velocity_block(int row_node, int col_node, const Eigen::Matr
       values[first + i * row_length + j] += block(i, j);
 }
 
+void Assembler::keep_element_tangent() {
+  element_tangent_.assign(tangent_.valuePtr(), tangent_.valuePtr() + tangent_.nonZeros());
+}
+
+void Assembler::restore_element_tangent() {
+  ANVIL_ASSERT(element_tangent_.size() == static_cast<std::size_t>(tangent_.nonZeros()));
+  std::copy(element_tangent_.begin(), element_tangent_.end(), tangent_.valuePtr());
+}
+
 void Assembler::finish_tangent() {
   // Prescribed rows and columns out, then the mean free diagonal per kind on them.
   double* values = tangent_.valuePtr();

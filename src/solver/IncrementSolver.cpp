@@ -101,16 +101,26 @@ IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> pr
     owned_nodes_[node] = partition_.owns(node);
 }
 
-IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns) {
+IncrementSolver::Merit IncrementSolver::evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns,
+                                                 bool same_elements) {
   const fem::DofMap& dofs = assembler_.dofs();
   Merit m{0.0, 0.0, 0.0};
-  {
+  if (same_elements && !problem.nodal_terms.empty()) {
+    residual_ = element_residual_;
+    m.bubble_sq = element_bubble_sq_;
+    assembler_.restore_element_tangent();
+  } else {
     Timers::Scope scope(timers_, "assembly");
     fem::AssemblyResult r = assembler_.assemble(problem.mesh, problem.laws, problem.states, unknowns,
                                                 problem.nodal_forces, problem.body_force, true);
     residual_ = std::move(r.residual);
     bad_element_ = r.bad_element;
     m.bubble_sq = r.bubble_residual_sq;
+    if (!problem.nodal_terms.empty()) { // kept for an evaluation under another contact set
+      element_residual_ = residual_;
+      element_bubble_sq_ = m.bubble_sq;
+      assembler_.keep_element_tangent();
+    }
   }
   if (!problem.nodal_terms.empty()) {
     Timers::Scope scope(timers_, "contact");
@@ -251,7 +261,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   // After a change of the active set: residual, tangent, merit and force
   // scale of the current iterate under the new set.
   auto evaluate_with_new_set = [&] {
-    merit = evaluate(problem, unknowns);
+    merit = evaluate(problem, unknowns, true);
     scale = force_scale(problem);
   };
   Eigen::VectorXd rhs(n), delta(n), bubble_delta;

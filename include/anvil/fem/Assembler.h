@@ -87,6 +87,12 @@ public:
   /// tangent(velocity rows of `row_node`, velocity columns of `col_node`) += block;
   /// the pair must be in the pattern (same node, element neighbours or a coupling).
   void add_velocity_block(int row_node, int col_node, const Eigen::Matrix3d& block);
+  /// Keeps the tangent as the elements left it (call before the contact
+  /// blocks and finish_tangent()); restore_element_tangent() puts it back, so
+  /// that the blocks of another contact set can be added without assembling
+  /// the elements again.
+  void keep_element_tangent();
+  void restore_element_tangent();
   /// Decouples the prescribed dofs (after every contribution is added): their
   /// rows and columns are cleared and their diagonal is the mean free
   /// diagonal of the velocity rows, or of the pressure rows, so the rows are
@@ -113,6 +119,7 @@ private:
   const Partition& partition_;
   std::vector<mesh::Tet> tets_; ///< the elements the pattern is built on: partition_.elements
   SparseMatrix tangent_;
+  std::vector<double> element_tangent_; ///< keep_element_tangent()'s values
   Eigen::VectorXd pressure_mass_;
   std::vector<std::vector<ElementChunk>> colours_; ///< the chunks of each colour (positions in tets_)
   /// Per element of tets_: K_bb⁻¹ [K_bl G_b] (3×16) and K_bb⁻¹ r_b (3).

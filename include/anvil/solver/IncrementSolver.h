@@ -109,8 +109,11 @@ private:
   struct Merit {
     double force_sq, flux_sq, bubble_sq;
   };
-  /// Assembles residual and tangent at `unknowns`.
-  Merit evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns);
+  /// Assembles residual and tangent at `unknowns`. With `same_elements` the
+  /// unknowns and element tangents are those of the last evaluation and only
+  /// the nodal terms changed (a new contact set): the elements' part kept
+  /// from it is used again, the same bits as assembling it anew.
+  Merit evaluate(const IncrementProblem& problem, const fem::BodyUnknowns& unknowns, bool same_elements = false);
   /// Force scale (N): the largest of the reaction norm, the contact force
   /// norm and the applied load norm.
   double force_scale(const IncrementProblem& problem) const;
@@ -125,9 +128,10 @@ private:
   Timers& timers_;
   Eigen::VectorXd residual_;
   Eigen::VectorXd nodal_term_residual_; ///< the nodal terms' part of residual_
+  Eigen::VectorXd element_residual_;    ///< the elements' part of residual_ (with nodal terms only)
+  double element_bubble_sq_ = 0.0;      ///< and its bubble residual
   std::vector<NodeBlock> blocks_;
   int bad_element_ = -1;
-  double merit_bubble_sq_ = 0.0;
 };
 
 } // namespace anvil::solver
