@@ -2,10 +2,7 @@
 // no heap allocation, so a mesh with 8 times the elements costs the same
 // number of allocations (those of the returned vectors and the thread pool's
 // bookkeeping, made once per call).
-#include "anvil/fem/Assembler.h"
-#include "anvil/fem/DofMap.h"
-#include "anvil/material/Material.h"
-#include "anvil/mesh/generators.h"
+#include "box_assembly.h"
 
 #include <catch2/catch.hpp>
 
@@ -45,21 +42,10 @@ namespace {
 /// Heap allocations of one assemble() with tangent on a box of `cells`³ cubes
 /// (6 tets each), after a first call that may set up caches.
 long allocations_of_assembly(int cells) {
-  const mesh::TetMesh box = mesh::make_box({0, 0, 0}, {1, 1, 1}, std::array<int, 3>{cells, cells, cells});
-  const fem::DofMap dofs(std::vector<char>(fem::kDofsPerNode * box.node_count(), 0));
-  const fem::Partition whole = fem::partition_mesh(box, 1, 0);
-  fem::Assembler assembler(box, dofs, whole);
-  const material::NortonHoff law(50.0, 0.15, 1e-4);
-  const fem::ElementLaws laws(box.tets.size(), &law);
-  const std::vector<material::PointState> states(box.tets.size());
-  fem::BodyUnknowns u{Eigen::VectorXd::Zero(fem::kDofsPerNode * box.node_count()),
-                      Eigen::VectorXd::Zero(3 * box.tet_count())};
-  for (int i = 0; i < box.node_count(); ++i)
-    u.nodal.segment<3>(fem::kDofsPerNode * i) = -box.nodes[i];
-  const Eigen::VectorXd forces = Eigen::VectorXd::Zero(u.nodal.size());
-  assembler.assemble(box, laws, states, u, forces, {}, true);
+  BoxAssembly block(cells);
+  block.assemble();
   const long before = allocations.load();
-  const fem::AssemblyResult r = assembler.assemble(box, laws, states, u, forces, {}, true);
+  const fem::AssemblyResult r = block.assemble();
   const long made = allocations.load() - before;
   REQUIRE(r.bad_element < 0);
   return made;
