@@ -77,14 +77,17 @@ DieFill measure_die_fill(const FillSamples& samples, const die::SurfaceTriangles
                          const Eigen::Vector3d& displacement, const Eigen::AlignedBox3d& model_side,
                          const PartSurface& part, double tolerance, double reach, bool with_underfill) {
   DieFill fill;
+  // Per sample: its area on the model's side, and of that the area touching the part.
   const int count = static_cast<int>(samples.points.size());
-  const std::vector<double> touching = processes::share_out(count, 1, [&](int k, double* area) {
+  const std::vector<double> areas = processes::share_out(count, 2, [&](int k, double* area) {
     const mesh::Point x = samples.points[k] + displacement;
-    *area = model_side.contains(x) && part.within(x, tolerance, reach) ? samples.areas[k] : 0.0;
+    if (!model_side.contains(x)) return;
+    area[0] = samples.areas[k];
+    if (part.within(x, tolerance, reach)) area[1] = samples.areas[k];
   });
   for (int k = 0; k < count; ++k) {
-    if (model_side.contains(samples.points[k] + displacement)) fill.region_area += samples.areas[k];
-    fill.contact_area += touching[k];
+    fill.region_area += areas[2 * k];
+    fill.contact_area += areas[2 * k + 1];
   }
   if (with_underfill)
     fill.underfill = processes::share_out(static_cast<int>(die.vertices.size()), 1, [&](int vertex, double* distance) {

@@ -23,12 +23,13 @@ inline bool root() {
 /// process (reduced on rank 0, then broadcast: an all-reduce may round
 /// differently on different processes).
 void sum(std::span<double> values);
-/// compute(i, values + i × width) for every item i in [0, items), the items
-/// dealt out among the processes in turn; every process gets all the
-/// values, the same bits whatever the number of processes (each is computed
-/// once and the others add zeros). For work every process would otherwise
-/// repeat (a measurement of the replicated mesh). Every process calls it
-/// together, or rank 0 alone inside on_root's work, which computes them all.
+/// compute(i, values + i × width) for every item i in [0, items) (its
+/// values start at zero), the items dealt out among the processes in turn;
+/// every process gets all the values, the same bits whatever the number of
+/// processes (each is computed once and the others add zeros). For work
+/// every process would otherwise repeat (a measurement of the replicated
+/// mesh). Every process calls it together, or rank 0 alone inside on_root's
+/// work, which computes them all.
 std::vector<double> share_out(int items, int width, const std::function<void(int, double*)>& compute);
 /// The smallest of `value` over the processes.
 int minimum(int value);
