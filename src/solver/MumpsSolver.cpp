@@ -13,14 +13,37 @@ namespace anvil::solver {
 
 using petsc::check;
 
+namespace {
+
+/// Several processes: a system of at most this many unknowns is factorised
+/// whole by each process alone (sequential MUMPS on a copy of the matrix).
+/// MUMPS across processes picks the processes that share a front by their
+/// load as it goes, so its sums, and the run after them, change from one
+/// run to the next (upsetting_75 on 2 processes: four runs from one
+/// checkpoint, four different meshes at the next remesh); alone, the
+/// factorisation is the same every time. The copies cost each process the
+/// whole factor's memory, which the bound keeps small: the direct solver of
+/// `auto` stops at 5000 unknowns; above the bound (MUMPS taking over from a
+/// stagnating Krylov solve on a large mesh) the processes share the factor.
+constexpr PetscInt kWholeOnEachProcessUpTo = 50000;
+
+} // namespace
+
 struct MumpsSolver::Impl {
-  Impl(const fem::Partition& p, Timers& timers) : matrix(p, timers), rhs(p), solution(p) {}
+  Impl(const fem::Partition& p, Timers& timers) : partition(p), matrix(p, timers), rhs(p), solution(p) {}
+  const fem::Partition& partition;
   petsc::MatrixView matrix;
   petsc::VectorSlot rhs, solution;
+  Mat whole = nullptr;          ///< each process's copy of the whole matrix (kWholeOnEachProcessUpTo)
+  Vec whole_solution = nullptr; ///< and of the solution
   KSP ksp = nullptr;
   int symmetric = -1;     ///< of the factorisation in place: 1 LDLᵀ, 0 LU, −1 none
   PetscInt workspace = 0; ///< ICNTL(14), % added to MUMPS's workspace estimate; 0: MUMPS's default
-  ~Impl() { KSPDestroy(&ksp); }
+  ~Impl() {
+    KSPDestroy(&ksp);
+    MatDestroy(&whole);
+    VecDestroy(&whole_solution);
+  }
 };
 
 namespace {
@@ -32,9 +55,9 @@ bool workspace_too_small(PetscInt infog1) {
 }
 
 /// A new KSP of one factorisation by MUMPS (LDLᵀ or LU), options read.
-KSP new_direct_solver(bool symmetric) {
+KSP new_direct_solver(bool symmetric, MPI_Comm comm) {
   KSP ksp = nullptr;
-  check(KSPCreate(PETSC_COMM_WORLD, &ksp), "creating the direct solver");
+  check(KSPCreate(comm, &ksp), "creating the direct solver");
   check(KSPSetOptionsPrefix(ksp, "direct_"), "creating the direct solver");
   check(KSPSetType(ksp, KSPPREONLY), "creating the direct solver");
   PC pc = nullptr;
@@ -67,6 +90,18 @@ bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
   PetscBool symmetric = PETSC_FALSE;
   check(MatIsSymmetric(m, 1e-13 * largest, &symmetric), "checking the tangent's symmetry");
   check(MatSetOption(m, MAT_SYMMETRIC, symmetric), "checking the tangent's symmetry");
+  PetscInt rows = 0;
+  check(MatGetSize(m, &rows, nullptr), "copying the tangent");
+  if (s.partition.distributed() && rows <= kWholeOnEachProcessUpTo) {
+    if (fresh) MatDestroy(&s.whole);
+    check(MatCreateRedundantMatrix(m, s.partition.processes, MPI_COMM_NULL,
+                                   s.whole ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s.whole),
+          "copying the tangent to each process");
+    check(MatSetOption(s.whole, MAT_SYMMETRIC, symmetric), "copying the tangent to each process");
+    m = s.whole;
+  } else {
+    MatDestroy(&s.whole);
+  }
   bool renew = fresh || s.symmetric != static_cast<int>(symmetric);
   // MUMPS sizes its workspace from the analysis; the delayed pivots of an
   // indefinite saddle-point matrix, more of them across several processes,
@@ -77,7 +112,7 @@ bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
   for (int attempt = 0;; ++attempt) {
     if (renew) {
       KSPDestroy(&s.ksp);
-      s.ksp = new_direct_solver(symmetric);
+      s.ksp = new_direct_solver(symmetric, PetscObjectComm(reinterpret_cast<PetscObject>(m)));
       s.symmetric = static_cast<int>(symmetric);
       ++analyses_;
     }
@@ -111,8 +146,22 @@ bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
 void MumpsSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   Impl& s = *impl_;
   x.setZero(b.size());
-  check(KSPSolve(s.ksp, s.rhs.in(b), s.solution.in(x)), "solving with the MUMPS factors");
-  s.solution.out(x);
+  if (!s.whole) {
+    check(KSPSolve(s.ksp, s.rhs.in(b), s.solution.in(x)), "solving with the MUMPS factors");
+    s.solution.out(x);
+    return;
+  }
+  s.rhs.in(b);
+  const Vec whole_rhs = s.rhs.gathered();
+  PetscInt size = 0, had = -1;
+  check(VecGetSize(whole_rhs, &size), "solving with the MUMPS factors");
+  if (s.whole_solution) check(VecGetSize(s.whole_solution, &had), "solving with the MUMPS factors");
+  if (had != size) {
+    VecDestroy(&s.whole_solution);
+    check(VecDuplicate(whole_rhs, &s.whole_solution), "solving with the MUMPS factors");
+  }
+  check(KSPSolve(s.ksp, whole_rhs, s.whole_solution), "solving with the MUMPS factors");
+  s.solution.read_whole(s.whole_solution, x);
 }
 
 } // namespace anvil::solver

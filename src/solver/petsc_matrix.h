@@ -131,14 +131,24 @@ public:
   /// vector given to in().
   void out(Eigen::VectorXd& x) {
     if (!partition_.distributed()) return release();
+    read_whole(gathered(), x);
+  }
+  /// Several processes: the Vec's rows gathered, the whole system on each
+  /// process (a sequential Vec owned by the slot, valid until the next call).
+  Vec gathered() {
     if (!gather_) check(VecScatterCreateToAll(vec_, &gather_, &whole_), "creating a vector");
-    check(VecScatterBegin(gather_, vec_, whole_, INSERT_VALUES, SCATTER_FORWARD), "gathering the solution");
-    check(VecScatterEnd(gather_, vec_, whole_, INSERT_VALUES, SCATTER_FORWARD), "gathering the solution");
+    check(VecScatterBegin(gather_, vec_, whole_, INSERT_VALUES, SCATTER_FORWARD), "gathering a vector");
+    check(VecScatterEnd(gather_, vec_, whole_, INSERT_VALUES, SCATTER_FORWARD), "gathering a vector");
+    return whole_;
+  }
+  /// x ← `whole`, a sequential Vec of every row of the system (in the
+  /// partition's numbering), put back into the mesh's dof order.
+  void read_whole(Vec whole, Eigen::VectorXd& x) const {
     const PetscScalar* y = nullptr;
-    check(VecGetArrayRead(whole_, &y), "gathering the solution");
+    check(VecGetArrayRead(whole, &y), "reading a solution");
     for (long row = 0; row < x.size(); ++row)
       x[fem::kDofsPerNode * partition_.node[row / fem::kDofsPerNode] + row % fem::kDofsPerNode] = y[row];
-    check(VecRestoreArrayRead(whole_, &y), "gathering the solution");
+    check(VecRestoreArrayRead(whole, &y), "reading a solution");
   }
 
 private:

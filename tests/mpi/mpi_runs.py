@@ -14,6 +14,10 @@ CHECK is one of:
               interface table (interface.csv) as on 1
   resume      stopped after 6 increments on 2 processes, resumed to 2 mm on
               1 and on 3: loads.csv as the uninterrupted run on 1
+  repeat      cases/upsetting_75.yaml to 7.5 mm twice on 2 processes (its
+              direct solves, its first remesh at 6.9 mm and four increments
+              on the new mesh): the same loads.csv and last VTK file, bit
+              for bit
   input       an input error on 2 processes: said once, both exit 3
   disk        the disk fills up on rank 0 (its writes fail): one message,
               exit 4, every process stopped, no hang
@@ -29,6 +33,7 @@ Agreement: the Newton tolerance of the cases is 1e-6 of the relative
 residual; each run's loads carry that error, accumulated over the geometry
 updates of up to 20 increments, so two runs may differ by up to ten times
 it: 1e-5 of the peak load."""
+import filecmp
 import os
 import re
 import shutil
@@ -107,6 +112,17 @@ class Checks:
                      code=4)  # stopped before its stop criterion
             self.run(n, case, f"to_np{n}", "--set", "time.stop.stroke=2", "--resume", os.path.join(self.work, f"to_np{n}"))
             self.agree("whole", f"to_np{n}")
+
+    def repeat(self):
+        case = self.case("upsetting_75.yaml")
+        for out in ("first", "second"):
+            self.run(2, case, out, "--set", "time.stop.stroke=7.5", "--set", "output.vtk_every=50")
+        for name in ("loads.csv", "anvil_billet_000050.vtu"):
+            files = [os.path.join(self.work, out, name) for out in ("first", "second")]
+            if self.expect(all(os.path.exists(f) for f in files), f"{name} missing"):
+                same = filecmp.cmp(files[0], files[1], shallow=False)
+                print(f"{name}: {'the same bytes' if same else 'different'} in the two runs")
+                self.expect(same, f"{name} differs between two runs of the same input on 2 processes")
 
     def input(self):
         bad = os.path.join(self.work, "bad.yaml")
