@@ -90,7 +90,11 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
                                     std::string& refused) {
   const scene::RemeshSpec& spec = scene.input.remeshing;
   const scene::Body& body = scene.bodies[b];
-  const double smallest = spec.smallest_size > 0.0 ? spec.smallest_size : 0.5 * body.remesh_size;
+  // By default half the element size, or a smaller size box's size (a
+  // given smallest_size is at most the boxes' sizes: read_case checks it).
+  double smallest = spec.smallest_size > 0.0 ? spec.smallest_size : 0.5 * body.remesh_size;
+  for (const scene::SizeBox& box : spec.size_boxes)
+    smallest = std::min(smallest, box.size);
   const auto size_field =
       spec.adaptive ? adaptive_size(part, in_old, rate, scene, state.dies, body.remesh_size, smallest) : nullptr;
   // The node budget: sizes that would make more nodes than this machine can

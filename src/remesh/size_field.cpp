@@ -126,12 +126,20 @@ adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<co
   for (const scene::Die& die : scene.dies)
     die_radii.push_back(die_vertex_radii(die.surface->triangles().vertices, die.surface->triangles().faces));
   const std::vector<double> size = wanted_sizes(old, rate, scene, dies_now, die_radii, coarse, smallest);
+  // The user's size boxes, each where its die is now: their size inside,
+  // growing by the gradation with the distance outside (at the samples, not
+  // the old nodes: a box may be smaller than the old elements).
+  std::vector<std::pair<Eigen::AlignedBox3d, double>> boxes;
+  for (const scene::SizeBox& b : scene.input.remeshing.size_boxes) {
+    const mesh::Point shift = b.die >= 0 ? mesh::Point(dies_now[b.die].displacement) : mesh::Point::Zero();
+    boxes.emplace_back(Eigen::AlignedBox3d(b.box.min() + shift, b.box.max() + shift), b.size);
+  }
   // CGAL asks for the size at millions of cell centroids while it remeshes:
   // the field is sampled once on a grid of spacing `smallest` over the body
   // (a field that grows by at most half a millimetre per millimetre is
   // linear enough between the samples) and interpolated trilinearly.
-  const Eigen::AlignedBox3d box = mesh::bounding_box(old);
-  const mesh::Point low = box.min(), high = box.max();
+  const Eigen::AlignedBox3d extent = mesh::bounding_box(old);
+  const mesh::Point low = extent.min(), high = extent.max();
   std::array<int, 3> cells{};
   for (int k = 0; k < 3; ++k)
     cells[k] = std::max(1, static_cast<int>(std::ceil((high[k] - low[k]) / smallest)));
@@ -141,10 +149,13 @@ adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<co
   for (int k = 0; k <= cells[2]; ++k)
     for (int j = 0; j <= cells[1]; ++j)
       for (int i = 0; i <= cells[0]; ++i) {
-        const Location at = in_old.locate(low + mesh::Point(i, j, k).cwiseProduct(spacing));
+        const mesh::Point x = low + mesh::Point(i, j, k).cwiseProduct(spacing);
+        const Location at = in_old.locate(x);
         double h = 0.0;
         for (int a = 0; a < 4; ++a)
           h += at.weights[a] * size[old.tets[at.tet][a]];
+        for (const auto& [user_box, box_size] : boxes)
+          h = std::min(h, box_size + (kGradation - 1.0) * user_box.exteriorDistance(x));
         sample[next++] = h;
       }
   return [low, spacing, cells, sample = std::move(sample)](const mesh::Point& x, double scale) {

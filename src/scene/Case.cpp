@@ -7,6 +7,7 @@
 #include "checked_yaml.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <tuple>
 
@@ -273,6 +274,34 @@ void read_dies(const CheckedYaml& doc, Case& c) {
       if (fill["tolerance"]) d.fill_tolerance = doc.number(fill, "tolerance", "dies[].fill.tolerance");
     }
     c.dies.push_back(d);
+  });
+}
+
+/// remeshing.size_boxes of the remeshing section `r`: each box's corners,
+/// size and the die it follows (by name, among the dies read before).
+void read_size_boxes(const CheckedYaml& doc, const YAML::Node& r, Case& c) {
+  RemeshSpec& m = c.remeshing;
+  for_each_entry(r["size_boxes"], "remeshing.size_boxes", [&](const YAML::Node& n, const std::string& shown) {
+    if (!m.adaptive) doc.fail(n, shown, "a size box shapes the adaptive size field: set remeshing.size: adaptive");
+    SizeBox b;
+    const mesh::Point low = doc.vector(n, "min", "remeshing.size_boxes[].min");
+    const mesh::Point high = doc.vector(n, "max", "remeshing.size_boxes[].max");
+    if (!(low.array() < high.array()).all()) doc.fail(n, shown, "'min' must be below 'max' in x, y and z");
+    b.box = Eigen::AlignedBox3d(low, high);
+    b.size = doc.number(n, "size", "remeshing.size_boxes[].size");
+    if (m.smallest_size > 0.0 && b.size < m.smallest_size) {
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    "%g mm is below remeshing.smallest_size (%g mm), the smallest edge a remesh makes", b.size,
+                    m.smallest_size);
+      doc.fail(n["size"], shown + ".size", text);
+    }
+    if (const YAML::Node die = n["die"]) {
+      for (std::size_t d = 0; d < c.dies.size(); ++d)
+        if (c.dies[d].name == die.Scalar()) b.die = static_cast<int>(d);
+      if (b.die < 0) doc.fail(die, shown + ".die", "no die is named '" + die.Scalar() + "'");
+    }
+    m.size_boxes.push_back(b);
   });
 }
 
@@ -562,6 +591,7 @@ Case read_case_document(const CheckedYaml& doc, const std::vector<std::string>& 
     m.check_load = doc.boolean(r, "check_load", "remeshing.check_load");
     m.local = doc.boolean(r, "local", "remeshing.local");
     m.split_sunk_edges = doc.boolean(r, "split_sunk_edges", "remeshing.split_sunk_edges");
+    read_size_boxes(doc, r, c);
   }
   if (!c.dies.empty() && !c.time.enabled)
     doc.fail(root["dies"], "dies", "dies need a 'time' section (stroke increment and stop criteria)");

@@ -459,6 +459,18 @@ const std::vector<KeySpec>& case_schema() {
                          "smaller volume change, for more remeshes, and whole remeshes that then resample the "
                          "refined surface with their load jumps (docs/remeshing.md)"),
                      "false"),
+        key("remeshing.size_boxes", T::list,
+            "adaptive size field: boxes where the edge is at most their size (graded by 1.5 around them); a box "
+            "given with a die moves with it"),
+        required(
+            key("remeshing.size_boxes[].min", T::vector3, "lowest corner (with a die: where the die starts)", "mm")),
+        required(key("remeshing.size_boxes[].max", T::vector3, "highest corner", "mm")),
+        required(range(key("remeshing.size_boxes[].size", T::number,
+                           "the largest edge inside; not below remeshing.smallest_size (whose default is lowered "
+                           "to the smallest box's size)",
+                           "mm"),
+                       0, kInf, true)),
+        key("remeshing.size_boxes[].die", T::string, "the die whose motion the box follows; default: fixed in space"),
         with_default(key("remeshing.check_load", T::boolean,
                          "also solve the increment after each remesh on the old mesh, and log and record the press "
                          "load's jump across the remesh at equal geometry (three more solves per remesh; the next "

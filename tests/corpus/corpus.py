@@ -791,6 +791,21 @@ case_error("remesh-smallest-size-negative", swap("quality: 0.1}", "quality: 0.1,
            ["remeshing.smallest_size"])
 case_error("set-remesh-size-larger-than-body", REMESHING, ["remeshing.element_size", "a third"],
            "--set", "remeshing.element_size=50")
+BOX = "{min: [0, 0, 0], max: [2, 2, 2], size: 0.5}"
+case_error("remesh-size-box-uniform", swap("quality: 0.1}", "quality: 0.1, size_boxes: [" + BOX + "]}", REMESHING),
+           ["remeshing.size_boxes[0]", "size: adaptive"])
+case_error("remesh-size-box-unknown-die",
+           swap("quality: 0.1}", "quality: 0.1, size: adaptive, size_boxes: [" + BOX[:-1] + ", die: press}]}",
+                REMESHING), ["remeshing.size_boxes[0].die", "no die is named 'press'"])
+case_error("remesh-size-box-inverted",
+           swap("quality: 0.1}", "quality: 0.1, size: adaptive, size_boxes: [" + BOX.replace("[2, 2, 2]", "[2, -2, 2]")
+                + "]}", REMESHING), ["remeshing.size_boxes[0]", "'min' must be below 'max'"])
+case_error("remesh-size-box-below-smallest",
+           swap("quality: 0.1}", "quality: 0.1, size: adaptive, smallest_size: 0.8, size_boxes: [" + BOX + "]}",
+                REMESHING), ["remeshing.size_boxes[0].size", "0.5 mm", "smallest_size (0.8 mm)"])
+case_error("remesh-size-box-no-size",
+           swap("quality: 0.1}", "quality: 0.1, size: adaptive, size_boxes: [" + BOX.replace(", size: 0.5", "") + "]}",
+                REMESHING), ["remeshing.size_boxes[0]", "size"])
 
 # --- stops the geometry cannot reach ------------------------------------------------------------
 case_error("stop-stroke-past-the-other-die", swap("stop: {stroke: 1}", "stop: {stroke: 8}"),

@@ -43,7 +43,9 @@ std::vector<double> wanted_sizes(const mesh::TetMesh& old, std::span<const doubl
                                  const std::vector<std::vector<double>>& die_radii, double coarse, double smallest);
 
 /// wanted_sizes as a field: at a point, interpolated in the element of `old`
-/// that holds it (`in_old` locates it; sampled once, on a grid), times `scale`.
+/// that holds it (`in_old` locates it; sampled once, on a grid), lowered to
+/// each of the case's size boxes (remeshing.size_boxes, where their dies are
+/// in `dies_now`) plus the gradation times the distance to it, times `scale`.
 std::function<double(const mesh::Point&, double scale)>
 adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<const double> rate,
               const scene::Scene& scene, std::span<const scene::DieState> dies_now, double coarse, double smallest);

@@ -137,22 +137,31 @@ struct TimeSpec {
 
 /// Automatic remeshing. Flowing bodies only: an elastic die strains
 /// too little to need it and keeps its mesh.
+/// A box of the adaptive size field (remeshing.size_boxes): edges of at
+/// most `size` inside it, graded by 1.5 around it.
+struct SizeBox {
+  Eigen::AlignedBox3d box; ///< mm; with a die, where it is when the die is at its start
+  double size = 0.0;       ///< mm
+  int die = -1;            ///< the die whose motion it follows; −1: fixed in space
+};
+
 struct RemeshSpec {
   bool enabled = false;
-  double quality = 0.1;          ///< trigger: worst volume-edge ratio below this (or ≤ 0 predicted next increment)
-  int every = 0;                 ///< trigger: every N increments (0 = off)
-  double die_penetration = 0.25; ///< trigger: a die vertex this deep inside the body, × element size
-  double die_overlap = 0.01;     ///< trigger: this share of the body's initial volume inside the dies
-  double element_size = 0.0;     ///< mm, target edge length; 0 = the body's initial mean boundary edge
-  double feature_angle = 40.0;   ///< degrees
-  int iterations = 3;            ///< CGAL passes
-  bool adaptive = false;         ///< size field: finer near the dies and where ε̄̇ is high (else uniform)
-  double smallest_size = 0.0;    ///< mm, adaptive: edge length at a die surface; 0 = half the element size
-  int max_nodes = 0;             ///< node budget of one body's remesh; 0 = what the machine's memory allows
-  double time_limit = 120.0;     ///< s, work limit of one body's remesh (checked between CGAL passes)
-  bool check_load = false;       ///< solve the increment after a remesh on the old mesh too: the load jump it makes
-  bool local = true;             ///< a quality trigger rebuilds the poor elements' region only (remesh_region)
-  bool split_sunk_edges = false; ///< split surface edges over a die fillet or edge sunk between contact nodes
+  double quality = 0.1;            ///< trigger: worst volume-edge ratio below this (or ≤ 0 predicted next increment)
+  int every = 0;                   ///< trigger: every N increments (0 = off)
+  double die_penetration = 0.25;   ///< trigger: a die vertex this deep inside the body, × element size
+  double die_overlap = 0.01;       ///< trigger: this share of the body's initial volume inside the dies
+  double element_size = 0.0;       ///< mm, target edge length; 0 = the body's initial mean boundary edge
+  double feature_angle = 40.0;     ///< degrees
+  int iterations = 3;              ///< CGAL passes
+  bool adaptive = false;           ///< size field: finer near the dies and where ε̄̇ is high (else uniform)
+  double smallest_size = 0.0;      ///< mm, adaptive: edge length at a die surface; 0 = half the element size
+  int max_nodes = 0;               ///< node budget of one body's remesh; 0 = what the machine's memory allows
+  double time_limit = 120.0;       ///< s, work limit of one body's remesh (checked between CGAL passes)
+  bool check_load = false;         ///< solve the increment after a remesh on the old mesh too: the load jump it makes
+  bool local = true;               ///< a quality trigger rebuilds the poor elements' region only (remesh_region)
+  bool split_sunk_edges = false;   ///< split surface edges over a die fillet or edge sunk between contact nodes
+  std::vector<SizeBox> size_boxes; ///< adaptive: where the user asks for finer elements
 };
 
 struct ContactSpec {

@@ -73,3 +73,31 @@ TEST_CASE("The adaptive size field puts three elements across the gap between tw
         CHECK(size[t[b]] <=
               size[t[a]] + (remesh::kGradation - 1.0) * (body.nodes[t[a]] - body.nodes[t[b]]).norm() + 1e-12);
 }
+
+TEST_CASE("A size box asks for its size inside and grades by 1.5 around it; a die's box moves with the die",
+          "[unit][remesh]") {
+  // cases/upsetting.yaml's quarter cylinder (radius 10, height 15 mm) with
+  // the top die lowered by 5 mm: the gap (10 mm) asks for 3.3 mm, above the
+  // coarse 2 mm, so the field is 2 mm but for the boxes. A fixed box at the
+  // origin asks for 0.5 mm; a box of the top die, given at z 11-13 mm where
+  // the die starts, is at z 6-8 mm now and asks for 0.6 mm. The points
+  // checked are samples of the field's grid (spacing 0.25 mm) where the
+  // distance to a box is linear, so the interpolation is exact.
+  Timers timers;
+  scene::Case input = scene::read_case(source_path("cases/upsetting.yaml"), {"bodies[].mesh.element_size=2"});
+  input.remeshing.size_boxes = {{Eigen::AlignedBox3d(mesh::Point(0, 0, 0), mesh::Point(2, 2, 2)), 0.5, -1},
+                                {Eigen::AlignedBox3d(mesh::Point(4, 4, 11), mesh::Point(6, 6, 13)), 0.6, 0}};
+  const scene::Scene scene(input, timers);
+  scene::RunState state = scene::initial_state(scene);
+  state.dies[0].displacement = Eigen::Vector3d(0, 0, -5);
+  const mesh::TetMesh& body = state.mesh;
+  const remesh::PointLocator in_body(body);
+  const auto size =
+      remesh::adaptive_size(body, in_body, std::vector<double>(body.tets.size(), 0.0), scene, state.dies, 2.0, 0.25);
+  CHECK(size({1, 1, 1}, 1.0) == Approx(0.5).epsilon(1e-9));    // inside the fixed box
+  CHECK(size({3, 1, 1}, 1.0) == Approx(1.0).epsilon(1e-9));    // 1 mm beside it: 0.5 + 0.5 × 1
+  CHECK(size({5, 5, 7}, 1.0) == Approx(0.6).epsilon(1e-9));    // inside the die's box, where the die is now
+  CHECK(size({5, 5, 9.5}, 1.0) == Approx(1.35).epsilon(1e-9)); // 1.5 mm above it: 0.6 + 0.5 × 1.5
+  CHECK(size({5, 5, 12}, 1.0) == Approx(2.0).epsilon(1e-9));   // where the box was: the coarse size
+  CHECK(size({1, 1, 1}, 0.9) == Approx(0.45).epsilon(1e-9));   // a try's scale
+}
