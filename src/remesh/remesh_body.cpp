@@ -43,11 +43,15 @@ using VertexHandle = Triangulation::Vertex_handle;
 /// border whole.
 constexpr double kBorderMargin = 1.01;
 /// Tries of one level of the size field, each with the region grown over
-/// the border faces CGAL changed in the last.
+/// the border faces CGAL changed in the last (or, when it changed none,
+/// at a shorter length).
 constexpr int kLevelAttempts = 4;
 /// Passes of bisecting a level's long border edges (a bisection can leave
 /// another long edge).
 constexpr int kBorderPasses = 3;
+/// A level whose remesh failed without changing its border is tried again
+/// with edges this much shorter.
+constexpr double kLevelRetryScale = 0.95;
 /// After the size field's levels, cells below this quality are rebuilt.
 constexpr double kPoorAfterLevels = 0.25;
 
@@ -459,26 +463,35 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
     for (int e = 0; e < out.tet_count(); ++e)
       region[e] = settings.size(mesh::centroid(out, e)) < finer_than;
     if (std::find(region.begin(), region.end(), 1) == region.end()) break;
-    // CGAL would split the border's edges longer than its limit, which the
-    // region's remesh refuses: they are bisected first, on both sides.
-    for (int pass = 0; pass < kBorderPasses; ++pass) {
-      const std::vector<std::array<int, 2>> long_edges =
-          long_border_edges(out, region, border_splits * at_level.edge_length);
-      if (long_edges.empty()) break;
-      mesh::carry_to_halves(mesh::bisect_edges(out, long_edges), region);
-    }
     // A border face CGAL changed anyway (a few in thousands) takes the kept
     // tets on it into the region, and the level is tried again.
     std::optional<RegionRemesh> level;
     std::vector<std::array<int, 3>> changed;
     for (int attempt = 0; attempt < kLevelAttempts && !level; ++attempt) {
+      // CGAL would split the border's edges longer than its limit, which the
+      // region's remesh refuses: they are bisected first, on both sides.
+      for (int pass = 0; pass < kBorderPasses; ++pass) {
+        const std::vector<std::array<int, 2>> long_edges =
+            long_border_edges(out, region, border_splits * at_level.edge_length);
+        if (long_edges.empty()) break;
+        mesh::carry_to_halves(mesh::bisect_edges(out, long_edges), region);
+      }
+      changed.clear();
       try {
         level = remesh_region(out, region, at_level, RegionSurface::rebuilt, {}, &changed);
       } catch (const RunError& error) {
-        if (attempt + 1 == kLevelAttempts || changed.empty()) {
+        if (attempt + 1 == kLevelAttempts) {
           log::info("    remeshing: the size field's finer levels stopped at %.3g mm (smallest asked %.3g mm): %s",
                     previous_level, settings.smallest_edge_length, error.what());
           break;
+        }
+        if (changed.empty()) {
+          // A degenerate or inverted result: CGAL splits and collapses
+          // elsewhere at another length, as for the whole body's tries.
+          log::detail("    remeshing: the level at %.3g mm failed (%s); tried again at %.3g mm", at_level.edge_length,
+                      error.what(), kLevelRetryScale * at_level.edge_length);
+          at_level.edge_length *= kLevelRetryScale;
+          continue;
         }
         const std::set<std::array<int, 3>> faces(changed.begin(), changed.end());
         for (int e = 0; e < out.tet_count(); ++e)
