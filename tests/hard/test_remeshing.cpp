@@ -48,15 +48,15 @@ void check_remeshes_keep_volume_and_strain(const RemeshedRun& run) {
   }
 }
 
-/// The volume changes by less than 1 % over the run: the
+/// The volume changes by less than `bound` over the run: the
 /// material's (the mesh less its overlap with the dies), which the volume
 /// compensation holds, and the mesh's, which carries that overlap besides.
-void check_run_volume(const RemeshedRun& run) {
+void check_run_volume(const RemeshedRun& run, double bound = 0.01) {
   const double material = std::abs(run.out.summary_number("material_relative_change"));
   const double mesh_volume = std::abs(run.out.summary_number("relative_change"));
   INFO("volume change over the run: material " << 100.0 * material << " %, mesh " << 100.0 * mesh_volume << " %");
-  CHECK(material < 0.01);
-  CHECK(mesh_volume < 0.01);
+  CHECK(material < bound);
+  CHECK(mesh_volume < bound);
 }
 
 /// Max ε̄ within 2 % across each remesh. The transfer keeps old peaks in the
@@ -146,10 +146,15 @@ TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshe
 TEST_CASE("Closed-die forging with the adaptive size field reaches closure, remeshes keep volume and strain integral",
           "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash_adaptive",
-                                       {"remeshing.size=adaptive", "remeshing.check_load=false"}); // 7 min
+                                       {"remeshing.size=adaptive", "remeshing.check_load=false"}); // 8 min
   check_remeshes_keep_volume_and_strain(run);
-  // The uniform run's 1 % bound; the 0.3 % aimed at (#44) is not met yet
-  // (mesh +0.44 %, material +0.21 % measured).
-  check_run_volume(run);
+  // The 0.3 % aimed at for the volume over the run and for what lies inside
+  // the dies at closure: measured mesh +0.04 %, material -0.16 %, inside
+  // the dies 0.20 % of the volume (the uniform run: +0.48 %, -0.35 % and
+  // 0.83 %, bounded at 1 % above).
+  check_run_volume(run, 0.003);
+  const double inside = run.out.summary_number("inside_dies_end") / run.out.summary_number("start");
+  INFO("inside the dies at closure: " << 100.0 * inside << " % of the volume");
+  CHECK(inside < 0.003);
   check_max_strain(run);
 }
