@@ -135,7 +135,7 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
 // (ContactIncrement::closing_time), so a Δt cut can save its elements.
 TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshes keep volume and strain integral",
           "[hard][remesh]") {
-  const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash"); // 10 min
+  const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash"); // 1.5 min
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume(run);
   check_max_strain(run);
