@@ -83,6 +83,13 @@ private:
   std::vector<std::pair<YAML::Node, std::string>> overridden_;
 };
 
+/// Calls `read(entry, shown)` for each entry of the list `list` (absent: none),
+/// `shown` being "key[i]", the entry as error messages name it.
+template <class Read> void for_each_entry(const YAML::Node& list, const std::string& key, Read read) {
+  for (std::size_t i = 0; list && i < list.size(); ++i)
+    read(list[i], key + "[" + std::to_string(i) + "]");
+}
+
 /// A table `values_key` against `at_key` of `item` (both lists of numbers,
 /// `at_key` increasing, one value for each), or one value (a constant).
 thermal::PropertyTable read_table(const CheckedYaml& doc, const YAML::Node& item, const std::string& values_key,

@@ -93,7 +93,10 @@ bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
   PetscInt rows = 0;
   check(MatGetSize(m, &rows, nullptr), "copying the tangent");
   if (s.partition.distributed() && rows <= kWholeOnEachProcessUpTo) {
-    if (fresh) MatDestroy(&s.whole);
+    if (fresh) { // a new pattern: new copies, of its size
+      MatDestroy(&s.whole);
+      VecDestroy(&s.whole_solution);
+    }
     check(MatCreateRedundantMatrix(m, s.partition.processes, MPI_COMM_NULL,
                                    s.whole ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s.whole),
           "copying the tangent to each process");
@@ -101,6 +104,7 @@ bool MumpsSolver::factorize(const fem::SparseMatrix& a) {
     m = s.whole;
   } else {
     MatDestroy(&s.whole);
+    VecDestroy(&s.whole_solution);
   }
   bool renew = fresh || s.symmetric != static_cast<int>(symmetric);
   // MUMPS sizes its workspace from the analysis; the delayed pivots of an
@@ -153,13 +157,7 @@ void MumpsSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   }
   s.rhs.in(b);
   const Vec whole_rhs = s.rhs.gathered();
-  PetscInt size = 0, had = -1;
-  check(VecGetSize(whole_rhs, &size), "solving with the MUMPS factors");
-  if (s.whole_solution) check(VecGetSize(s.whole_solution, &had), "solving with the MUMPS factors");
-  if (had != size) {
-    VecDestroy(&s.whole_solution);
-    check(VecDuplicate(whole_rhs, &s.whole_solution), "solving with the MUMPS factors");
-  }
+  if (!s.whole_solution) check(VecDuplicate(whole_rhs, &s.whole_solution), "solving with the MUMPS factors");
   check(KSPSolve(s.ksp, whole_rhs, s.whole_solution), "solving with the MUMPS factors");
   s.solution.read_whole(s.whole_solution, x);
 }

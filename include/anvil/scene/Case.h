@@ -135,8 +135,6 @@ struct TimeSpec {
   double stop_temperature = -std::numeric_limits<double>::infinity();
 };
 
-/// Automatic remeshing. Flowing bodies only: an elastic die strains
-/// too little to need it and keeps its mesh.
 /// A box of the adaptive size field (remeshing.size_boxes): edges of at
 /// most `size` inside it, graded by 1.5 around it.
 struct SizeBox {
@@ -145,6 +143,8 @@ struct SizeBox {
   int die = -1;            ///< the die whose motion it follows; −1: fixed in space
 };
 
+/// Automatic remeshing. Flowing bodies only: an elastic die strains
+/// too little to need it and keeps its mesh.
 struct RemeshSpec {
   bool enabled = false;
   double quality = 0.1;            ///< trigger: worst volume-edge ratio below this (or ≤ 0 predicted next increment)
