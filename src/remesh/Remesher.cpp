@@ -220,6 +220,11 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     material_before[b] = mesh::volume(state.mesh, state.bodies[b]) - inside_before[b];
   const std::size_t first_record = state.remeshes.size();
+  // Per record from first_record: whether the remesh fitted the body's
+  // surface to the dies (a whole remesh, a local one that rebuilt its
+  // region's surface); one that kept the surface leaves the dies' triggers
+  // to the last fit (remesh_due).
+  std::vector<char> fitted;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const auto start = std::chrono::steady_clock::now();
     const mesh::MeshRange& range = state.bodies[b];
@@ -289,8 +294,11 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
           record.volume_change = relative(local->volume_remeshed, mesh::volume(part));
           state.volume.remeshing += local->volume_remeshed - mesh::volume(part) + volume_after - local->volume_put_back;
           state.volume.projection += local->volume_put_back - local->volume_remeshed;
+        } else {
+          state.volume.remeshing += mesh::volume(local->mesh) - mesh::volume(part); // the surface's flips
         }
         state.remeshes.push_back(record);
+        fitted.push_back(!kept_surface);
         if (!why->sunk_edges.empty())
           log::info("  remesh '%s' (%s): %d elements split, their new surface nodes put onto the dies, the rest "
                     "kept; %d -> %d nodes; worst quality %.3f -> %.3f; %.2f s",
@@ -300,9 +308,15 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
           log::info("  remesh '%s' (%s), local: %d of %d elements rebuilt, the rest and %s kept; %d -> %d nodes; "
                     "worst quality %.3f -> %.3f; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
                     scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, part.tet_count(),
-                    kept_surface ? "the surface" : "the surface outside the region", record.nodes_before,
-                    record.nodes_after, record.worst_quality_before, record.worst_quality_after,
+                    !kept_surface                          ? "the surface outside the region"
+                    : local->flips + local->collapses == 0 ? "the surface"
+                                                           : "the surface (mended in places)",
+                    record.nodes_before, record.nodes_after, record.worst_quality_before, record.worst_quality_after,
                     100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
+        if (local->flips + local->collapses > 0)
+          log::info("    surface mended where its elements were poor: %d edges flipped, %d short edges collapsed; "
+                    "volume %+.4f%%",
+                    local->flips, local->collapses, 100.0 * record.volume_change);
         if (!kept_surface)
           log_fit(local->put_back, local->volume_remeshed, local->volume_put_back, local->given_back,
                   mesh::volume(local->mesh));
@@ -417,6 +431,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     state.volume.projection += best.volume_put_back - volume_remeshed;
     record.rebuilt_share = 1.0;
     state.remeshes.push_back(record);
+    fitted.push_back(1);
     log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm; worst quality %.3f -> %.3f; "
               "volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
               scene.bodies[b].name.c_str(), why->why.c_str(), record.nodes_before, record.nodes_after, part.tet_count(),
@@ -447,7 +462,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     const int b = record.body;
     record.material_change =
         (mesh::volume(state.mesh, state.bodies[b]) - state.inside_dies[b]) / material_before[b] - 1.0;
-    if (scene.dies.empty()) continue;
+    if (scene.dies.empty() || !fitted[r - first_record]) continue;
     record.die_overlap_after = state.inside_dies[b];
     record.die_depth_after = 0.0;
     for (const DieFeature& f : die_feature_depths(state.mesh, state.bodies[b], die_vertices))

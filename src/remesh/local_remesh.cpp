@@ -5,6 +5,7 @@
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/field_transfer.h"
 #include "anvil/remesh/rebuild_region.h"
+#include "anvil/remesh/surface_mending.h"
 
 #include <algorithm>
 #include <array>
@@ -17,6 +18,9 @@ namespace {
 
 /// Layers of elements around the poor ones that a local remesh rebuilds too.
 constexpr int kRegionLayers = 2;
+/// The surface is mended where its triangles' normals differ by at most
+/// this (degrees): the surface's change is then a sliver of volume.
+constexpr double kFlatSurface = 20.0;
 /// A region larger than this share of a body is rebuilt whole.
 constexpr double kMostLocal = 0.5;
 /// CGAL splits edges longer than 4/3 of its length (with a margin): a region
@@ -44,6 +48,28 @@ mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
     out.tets.push_back(t);
   }
   return out;
+}
+
+/// The nodal fields of the nodes `old_node` names (in their order), the
+/// rest dropped: fields.mesh has lost nodes.
+void keep_nodes(BodyFields& fields, const std::vector<int>& old_node) {
+  auto keep = [&](auto& values, int stride) {
+    if (values.size() == 0) return;
+    std::vector<double> kept;
+    kept.reserve(stride * old_node.size());
+    for (int n : old_node)
+      for (int k = 0; k < stride; ++k)
+        kept.push_back(values[stride * n + k]);
+    values.resize(kept.size());
+    std::copy(kept.begin(), kept.end(), values.data());
+  };
+  keep(fields.nodal, 4);
+  keep(fields.temperature, 1);
+  keep(fields.material, 3);
+  std::vector<int> touching;
+  for (int n : old_node)
+    touching.push_back(fields.touching_die[n]);
+  fields.touching_die = std::move(touching);
 }
 
 /// Bisects the edges `edges` of fields.mesh, each tet's halves taking its
@@ -205,19 +231,53 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   const Eigen::VectorXd& part_nodal = fields.nodal;
   const std::vector<double>& part_strain = fields.strain;
   const std::vector<std::vector<double>>& part_damage = fields.damage;
+  LocalRemesh out;
+  // A poor element held by the surface (its poor face on it) is mended
+  // first by flipping surface edges, every node where it is: interior
+  // nodes alone cannot mend it, and a rebuilt surface moves contact nodes.
+  std::vector<std::vector<double>*> element_fields{&fields.strain};
+  for (std::vector<double>& d : fields.damage)
+    element_fields.push_back(&d);
+  const double strain_integral = integral(part, fields.strain);
+  const double strain_max = *std::max_element(fields.strain.begin(), fields.strain.end());
+  const SurfaceMending flipped = mend_surface(part, element_fields, spec.quality, kFlatSurface);
+  out.flips = flipped.flips;
+  out.collapses = flipped.collapses;
+  if (flipped.collapses > 0) keep_nodes(fields, flipped.old_node);
   std::vector<char> region = rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
   if (!due.die_corners.empty()) {
     const std::vector<char> around = region_around(part, due.die_corners, body.remesh_size, kRegionLayers);
     for (std::size_t e = 0; e < region.size(); ++e)
       region[e] = region[e] || around[e];
   }
-  LocalRemesh out;
   out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1));
   char text[200];
+  if (out.rebuilt == 0 && flipped.flips + flipped.collapses > 0) {
+    // The flips were enough: the fields stay on the nodes, the new elements
+    // have the shells' means.
+    out.rebuilt = static_cast<int>(std::count(flipped.changed.begin(), flipped.changed.end(), 1));
+    out.worst = flipped.worst_after;
+    out.strain_integral_change = relative(integral(part, fields.strain), strain_integral);
+    out.strain_max_change = relative(*std::max_element(fields.strain.begin(), fields.strain.end()), strain_max);
+    out.nodal = std::move(fields.nodal);
+    out.strain = std::move(fields.strain);
+    out.damage = std::move(fields.damage);
+    if (!fields.temperature.empty())
+      out.temperature =
+          Eigen::Map<const Eigen::VectorXd>(fields.temperature.data(), Eigen::Index(fields.temperature.size()));
+    if (!fields.material.empty())
+      out.material = Eigen::Map<const Eigen::VectorXd>(fields.material.data(), Eigen::Index(fields.material.size()));
+    out.mesh = std::move(part);
+    return out;
+  }
   if (out.rebuilt == 0) {
     why_not = "no element to rebuild locally";
     return std::nullopt;
   }
+  int flipped_outside = 0; // elements the flips made that the region does not rebuild
+  for (std::size_t e = 0; e < region.size(); ++e)
+    flipped_outside += flipped.changed[e] && !region[e];
+  out.rebuilt += flipped_outside;
   if (out.rebuilt > kMostLocal * part.tet_count()) {
     std::snprintf(text, sizeof text, "the region to rebuild holds %d of its %d elements", out.rebuilt,
                   part.tet_count());
@@ -284,7 +344,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     // nodes and shape, their fields exactly).
     for (int pass = 0; pass < kBorderPasses; ++pass)
       if (!bisect_long_border_edges(fields, region, kCgalSplits * settings.edge_length)) break;
-    out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1));
+    out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1)) + flipped_outside;
     if (!rebuild(RegionSurface::rebuilt)) return std::nullopt;
   }
   // The nodal fields, taken after the bisection may have moved them.
@@ -312,9 +372,8 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   out.strain = element_field(part_strain);
   for (const std::vector<double>& d : part_damage)
     out.damage.push_back(element_field(d));
-  out.strain_integral_change = relative(integral(local.mesh, out.strain), integral(part, part_strain));
-  out.strain_max_change = relative(*std::max_element(out.strain.begin(), out.strain.end()),
-                                   *std::max_element(part_strain.begin(), part_strain.end()));
+  out.strain_integral_change = relative(integral(local.mesh, out.strain), strain_integral);
+  out.strain_max_change = relative(*std::max_element(out.strain.begin(), out.strain.end()), strain_max);
   std::vector<mesh::Point> fresh;
   for (std::size_t n = 0; n < local.mesh.nodes.size(); ++n)
     if (local.old_node[n] < 0) fresh.push_back(local.mesh.nodes[n]);

@@ -37,6 +37,8 @@ struct LocalRemesh {
   Eigen::VectorXd temperature;             ///< a node; empty when isothermal
   Eigen::VectorXd material;                ///< 3 a node: where it started; empty without flow lines
   int rebuilt = 0;                         ///< tets of the old mesh rebuilt
+  int flips = 0;                           ///< surface edges flipped (surface_mending.h), nodes unmoved
+  int collapses = 0;                       ///< short surface edges collapsed, a node gone each
   RegionSurface surface = RegionSurface::kept;
   double worst = 1.0; ///< worst quality of the rebuilt region
   /// With the surface rebuilt: the volume (mm³) of CGAL's mesh and after the

@@ -83,11 +83,13 @@ struct RemeshRecord {
   /// the dies) by the remesh, put-back and give-back included; NaN from a
   /// checkpoint written before it was kept.
   double material_change = std::numeric_limits<double>::quiet_NaN();
-  /// mm, the deepest die vertex inside the body after the remesh (what the
-  /// remesh could not fit); NaN without dies or from an older checkpoint.
+  /// mm, the deepest die vertex inside the body after a remesh that fitted
+  /// its surface to the dies (what it could not fit); NaN when the remesh
+  /// kept the surface, without dies, or from an older checkpoint.
   double die_depth_after = std::numeric_limits<double>::quiet_NaN();
-  /// mm³, the body's overlap with the dies after the remesh (what its
-  /// put-back left); NaN without dies or from an older checkpoint.
+  /// mm³, the body's overlap with the dies after a remesh that fitted its
+  /// surface (what its put-back left); NaN when it kept the surface,
+  /// without dies, or from an older checkpoint.
   double die_overlap_after = std::numeric_limits<double>::quiet_NaN();
   /// Share of the body's elements the remesh rebuilt: 1 for a whole
   /// remesh, less for a local one; NaN from an older checkpoint.

@@ -97,6 +97,7 @@ TEST_CASE("A die vertex sunk into the body asks for a remesh, and once a remesh 
   scene::RemeshRecord record{};
   record.body = 0;
   record.die_depth_after = depth;
+  record.die_overlap_after = 0.0; // a remesh that fits the surface to the dies measures both
   r.state.remeshes.push_back(record);
   CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
   // … and due once it is half a trigger deeper than it was left.
@@ -129,6 +130,15 @@ TEST_CASE("A body overlapping the dies by more than remeshing.die_overlap of its
   record.die_overlap_after = 1.1 * trigger; // a remesh that could not reduce it
   r.state.remeshes.push_back(record);
   CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
+  r.state.inside_dies[0] = 1.55 * trigger;
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
+  r.state.inside_dies[0] = 1.65 * trigger;
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).size() == 1);
+  // A remesh that kept the surface since (no overlap measured) is no new
+  // start: the overlap is still due half a trigger beyond the last fit's.
+  scene::RemeshRecord kept{};
+  kept.body = 0;
+  r.state.remeshes.push_back(kept);
   r.state.inside_dies[0] = 1.55 * trigger;
   CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
   r.state.inside_dies[0] = 1.65 * trigger;
