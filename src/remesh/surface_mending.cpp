@@ -1,6 +1,7 @@
 #include "anvil/remesh/surface_mending.h"
 
 #include "anvil/mesh/tet_geometry.h"
+#include "anvil/remesh/field_transfer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,14 +32,40 @@ mesh::Triangle face_opposite(const mesh::Tet& t, int v) {
 /// One mending, not yet made: elements replaced by others, surface
 /// triangles by others.
 struct Change {
-  std::vector<int> shell;      ///< the tets replaced
-  std::vector<mesh::Tet> made; ///< those that replace them
-  std::vector<int> made_from;  ///< a made tet: the shell tet whose fields it keeps, or −1 for the shell's mean
-  std::vector<int> old_faces;  ///< the boundary faces replaced
+  std::vector<int> shell;                ///< the tets replaced
+  std::vector<mesh::Tet> made;           ///< those that replace them
+  std::vector<int> old_faces;            ///< the boundary faces replaced
   std::vector<mesh::Triangle> new_faces; ///< outward, with the tag of the first old face
   int gone = -1;                         ///< a node no tet uses any more (a collapse)
   double worst_shell = 1.0, worst_made = 1.0;
 };
+
+/// The values of `field` (one a tet of `body`) on the tets `change` makes,
+/// by Anvil's transfer from the tets it replaces (conservative, peaks kept:
+/// field_transfer.h).
+std::vector<double> transferred(const mesh::TetMesh& body, const Change& change, const std::vector<double>& field) {
+  if (change.made.empty()) return {};
+  mesh::TetMesh shell, made;
+  std::map<int, int> number;
+  auto node = [&](int v) {
+    const auto [it, added] = number.try_emplace(v, shell.node_count());
+    if (added) shell.nodes.push_back(body.nodes[v]);
+    return it->second;
+  };
+  std::vector<double> values;
+  for (int e : change.shell) {
+    const mesh::Tet& t = body.tets[e];
+    shell.tets.push_back({node(t[0]), node(t[1]), node(t[2]), node(t[3])});
+    values.push_back(field[e]);
+  }
+  for (const mesh::Tet& t : change.made)
+    made.tets.push_back({node(t[0]), node(t[1]), node(t[2]), node(t[3])});
+  made.nodes = shell.nodes;
+  mesh::build_boundary(shell);
+  mesh::build_boundary(made);
+  const PointLocator in_shell(shell);
+  return transfer_element(shell, values, in_shell, made);
+}
 
 /// The body with its adjacency for one pass: changes within a pass touch
 /// disjoint nodes, so what it holds stays true for the nodes not touched.
@@ -136,7 +163,6 @@ public:
     }
     out.worst_made = best;
     if (!(best > 0.0)) return std::nullopt;
-    out.made_from.assign(out.made.size(), -1);
     out.old_faces = {f, abd};
     out.new_faces.resize(2);
     if (out.made.empty()) {
@@ -236,7 +262,6 @@ public:
       if (std::find(t.begin(), t.end(), v) != t.end()) continue;
       std::replace(t.begin(), t.end(), u, v);
       out.made.push_back(t);
-      out.made_from.push_back(e);
       out.worst_made = std::min(out.worst_made, mesh::quality(x[t[0]], x[t[1]], x[t[2]], x[t[3]]));
     }
     if (!(out.worst_made > 0.0)) return std::nullopt;
@@ -306,16 +331,9 @@ SurfaceMending mend_surface(mesh::TetMesh& body, const std::vector<std::vector<d
         }
       }
       if (!best) continue;
-      // Flipped elements take the shell's mean of each field, reshaped ones keep theirs.
-      double shell_volume = 0.0;
-      for (int s : best->shell)
-        shell_volume += mesh::signed_volume(body, s);
       for (std::vector<double>* field : element_fields) {
-        double integral = 0.0;
-        for (int s : best->shell)
-          integral += (*field)[s] * mesh::signed_volume(body, s);
-        for (int from : best->made_from)
-          field->push_back(from >= 0 ? (*field)[from] : integral / shell_volume);
+        const std::vector<double> values = transferred(body, *best, *field);
+        field->insert(field->end(), values.begin(), values.end());
       }
       for (int s : best->shell) {
         dead_tet[s] = 1;

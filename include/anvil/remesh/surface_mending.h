@@ -32,10 +32,10 @@ struct SurfaceMending {
 ///   those holding both go (valid only when the edge's link condition holds).
 /// Only where the surface triangles involved have one boundary tag and
 /// normals within `most_angle` (degrees) of each other, and only when every
-/// new element is better than the worst it replaces. New flipped elements
-/// take the shell's volume-weighted mean of each of `element_fields` (one
-/// value a tet); reshaped ones keep theirs. body.boundary_faces and tags
-/// are kept up to date; nodes are renumbered when one goes (old_node).
+/// new element is better than the worst it replaces. The new elements take
+/// each of `element_fields` (one value a tet) by Anvil's transfer from
+/// those they replace (conservative, peaks kept). body.boundary_faces and
+/// tags are kept up to date; nodes are renumbered when one goes (old_node).
 SurfaceMending mend_surface(mesh::TetMesh& body, const std::vector<std::vector<double>*>& element_fields,
                             double threshold, double most_angle);
 
