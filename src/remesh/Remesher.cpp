@@ -295,7 +295,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
           state.volume.remeshing += local->volume_remeshed - mesh::volume(part) + volume_after - local->volume_put_back;
           state.volume.projection += local->volume_put_back - local->volume_remeshed;
         } else {
-          state.volume.remeshing += mesh::volume(local->mesh) - mesh::volume(part); // the surface's flips
+          state.volume.remeshing += mesh::volume(local->mesh) - mesh::volume(part); // the surface's mending
         }
         state.remeshes.push_back(record);
         fitted.push_back(!kept_surface);

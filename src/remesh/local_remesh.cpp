@@ -215,8 +215,9 @@ double relative(double after, double before) {
 
 /// Body `b`'s mesh `part` rebuilt where its elements are poor (rebuild_region)
 /// or around the die corners of `due`, the rest kept bit for bit with its
-/// fields; the fields transferred in the rebuilt region only. The region's
-/// surface is kept when that is enough; it is rebuilt around a die corner,
+/// fields; the fields transferred in the rebuilt region only. Poor elements
+/// held by the surface are first mended on it (surface_mending.h). The
+/// region's surface is kept when that is enough; it is rebuilt around a die corner,
 /// or when the poor elements are held by the surface, and then its new
 /// nodes are put onto the dies and the material `material` (mm³) kept on
 /// its new free surface. Nothing, with `why_not` saying why, when the
@@ -233,17 +234,18 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   const std::vector<std::vector<double>>& part_damage = fields.damage;
   LocalRemesh out;
   // A poor element held by the surface (its poor face on it) is mended
-  // first by flipping surface edges, every node where it is: interior
-  // nodes alone cannot mend it, and a rebuilt surface moves contact nodes.
+  // first on the surface (an edge mended or a short one collapsed), the
+  // other nodes where they are: interior nodes alone cannot mend it, and a
+  // rebuilt surface moves contact nodes.
   std::vector<std::vector<double>*> element_fields{&fields.strain};
   for (std::vector<double>& d : fields.damage)
     element_fields.push_back(&d);
   const double strain_integral = integral(part, fields.strain);
   const double strain_max = *std::max_element(fields.strain.begin(), fields.strain.end());
-  const SurfaceMending flipped = mend_surface(part, element_fields, spec.quality, kFlatSurface);
-  out.flips = flipped.flips;
-  out.collapses = flipped.collapses;
-  if (flipped.collapses > 0) keep_nodes(fields, flipped.old_node);
+  const SurfaceMending mended = mend_surface(part, element_fields, spec.quality, kFlatSurface);
+  out.flips = mended.flips;
+  out.collapses = mended.collapses;
+  if (mended.collapses > 0) keep_nodes(fields, mended.old_node);
   std::vector<char> region = rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
   if (!due.die_corners.empty()) {
     const std::vector<char> around = region_around(part, due.die_corners, body.remesh_size, kRegionLayers);
@@ -252,11 +254,11 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   }
   out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1));
   char text[200];
-  if (out.rebuilt == 0 && flipped.flips + flipped.collapses > 0) {
-    // The flips were enough: the fields stay on the nodes, the new elements
-    // have the shells' means.
-    out.rebuilt = static_cast<int>(std::count(flipped.changed.begin(), flipped.changed.end(), 1));
-    out.worst = flipped.worst_after;
+  if (out.rebuilt == 0 && mended.flips + mended.collapses > 0) {
+    // The mending was enough: the nodal fields stay on their nodes, the
+    // element fields came with the new elements.
+    out.rebuilt = static_cast<int>(std::count(mended.changed.begin(), mended.changed.end(), 1));
+    out.worst = mended.worst_after;
     out.strain_integral_change = relative(integral(part, fields.strain), strain_integral);
     out.strain_max_change = relative(*std::max_element(fields.strain.begin(), fields.strain.end()), strain_max);
     out.nodal = std::move(fields.nodal);
@@ -274,10 +276,10 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     why_not = "no element to rebuild locally";
     return std::nullopt;
   }
-  int flipped_outside = 0; // elements the flips made that the region does not rebuild
+  int mended_outside = 0; // elements the mending made that the region does not rebuild
   for (std::size_t e = 0; e < region.size(); ++e)
-    flipped_outside += flipped.changed[e] && !region[e];
-  out.rebuilt += flipped_outside;
+    mended_outside += mended.changed[e] && !region[e];
+  out.rebuilt += mended_outside;
   if (out.rebuilt > kMostLocal * part.tet_count()) {
     std::snprintf(text, sizeof text, "the region to rebuild holds %d of its %d elements", out.rebuilt,
                   part.tet_count());
@@ -344,7 +346,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     // nodes and shape, their fields exactly).
     for (int pass = 0; pass < kBorderPasses; ++pass)
       if (!bisect_long_border_edges(fields, region, kCgalSplits * settings.edge_length)) break;
-    out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1)) + flipped_outside;
+    out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1)) + mended_outside;
     if (!rebuild(RegionSurface::rebuilt)) return std::nullopt;
   }
   // The nodal fields, taken after the bisection may have moved them.

@@ -94,17 +94,7 @@ public:
   std::optional<Change> flip(int f, int a, int b) const {
     const mesh::Triangle& abc = body_.boundary_faces[f];
     const int c = abc[0] + abc[1] + abc[2] - a - b;
-    // The tets around ab, each with its two other vertices.
-    std::vector<std::pair<int, std::array<int, 2>>> shell;
-    for (int e : around_[a]) {
-      const mesh::Tet& t = body_.tets[e];
-      if (std::find(t.begin(), t.end(), b) == t.end()) continue;
-      std::array<int, 2> other{};
-      int k = 0;
-      for (int v : t)
-        if (v != a && v != b) other[k++] = v;
-      shell.emplace_back(e, other);
-    }
+    const std::vector<std::pair<int, std::array<int, 2>>> shell = shell_of(a, b);
     // The ring c = w0, w1, ..., wk = d, walked through the shell from abc.
     std::vector<int> ring{c};
     Change out;
@@ -229,13 +219,7 @@ public:
     std::set<int> edge_vertices;
     std::set<std::array<int, 2>> edge_edges;
     Change out;
-    for (int e : around_[u]) {
-      const mesh::Tet& t = body_.tets[e];
-      if (std::find(t.begin(), t.end(), v) == t.end()) continue;
-      std::array<int, 2> o{};
-      int k = 0;
-      for (int x : t)
-        if (x != u && x != v) o[k++] = x;
+    for (const auto& [e, o] : shell_of(u, v)) {
       edge_vertices.insert(o.begin(), o.end());
       edge_edges.insert({std::min(o[0], o[1]), std::max(o[0], o[1])});
     }
@@ -277,6 +261,21 @@ public:
   }
 
 private:
+  /// The tets around edge ab, each with its two other vertices.
+  std::vector<std::pair<int, std::array<int, 2>>> shell_of(int a, int b) const {
+    std::vector<std::pair<int, std::array<int, 2>>> shell;
+    for (int e : around_[a]) {
+      const mesh::Tet& t = body_.tets[e];
+      if (std::find(t.begin(), t.end(), b) == t.end()) continue;
+      std::array<int, 2> other{};
+      int k = 0;
+      for (int v : t)
+        if (v != a && v != b) other[k++] = v;
+      shell.emplace_back(e, other);
+    }
+    return shell;
+  }
+
   const mesh::TetMesh& body_;
   std::vector<std::vector<int>> around_;
   std::vector<std::vector<int>> faces_at_;

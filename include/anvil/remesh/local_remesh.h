@@ -50,8 +50,9 @@ struct LocalRemesh {
 
 /// Body `b`'s mesh `part` rebuilt where its elements are poor (rebuild_region)
 /// or around the die corners of `due`, the rest kept bit for bit with its
-/// fields; the fields transferred in the rebuilt region only. The region's
-/// surface is kept when that is enough; it is rebuilt around a die corner,
+/// fields; the fields transferred in the rebuilt region only. Poor elements
+/// held by the surface are first mended on it (surface_mending.h). The
+/// region's surface is kept when that is enough; it is rebuilt around a die corner,
 /// or when the poor elements are held by the surface, and then its new
 /// nodes are put onto the dies and the material `material` (mm³) kept on
 /// its new free surface. Nothing, with `why_not` saying why, when the
