@@ -8,14 +8,7 @@
 #include <map>
 
 namespace anvil::mesh {
-namespace {
-
-std::array<int, 3> sorted(Triangle f) {
-  std::sort(f.begin(), f.end());
-  return f;
-}
-
-} // namespace
+namespace {} // namespace
 
 void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged, const std::vector<int>& tags) {
   std::map<std::array<int, 3>, std::pair<Triangle, int>> once; // sorted key -> (oriented face, count)

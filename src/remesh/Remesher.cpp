@@ -275,13 +275,14 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
         for (std::size_t k = 0; k < damage.size(); ++k)
           append_values(damage[k], local->damage[k].data(), local->damage[k].size());
         if (carries_stress) stress.insert(stress.end(), 6 * local->mesh.tets.size(), 0.0);
+        const double volume_before = mesh::volume(part), volume_after = mesh::volume(local->mesh);
         scene::RemeshRecord record{state.increment,
                                    int(b),
                                    part.node_count(),
                                    local->mesh.node_count(),
                                    worst_quality(part),
                                    worst_quality(local->mesh),
-                                   relative(mesh::volume(local->mesh), mesh::volume(part)),
+                                   relative(volume_after, volume_before),
                                    local->strain_integral_change,
                                    local->strain_max_change,
                                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
@@ -290,12 +291,11 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
         if (!kept_surface) {
           // As for a whole remesh: CGAL's change and the material given
           // back, and apart the put-back's (a contact projection).
-          const double volume_after = mesh::volume(local->mesh);
-          record.volume_change = relative(local->volume_remeshed, mesh::volume(part));
-          state.volume.remeshing += local->volume_remeshed - mesh::volume(part) + volume_after - local->volume_put_back;
+          record.volume_change = relative(local->volume_remeshed, volume_before);
+          state.volume.remeshing += local->volume_remeshed - volume_before + volume_after - local->volume_put_back;
           state.volume.projection += local->volume_put_back - local->volume_remeshed;
         } else {
-          state.volume.remeshing += mesh::volume(local->mesh) - mesh::volume(part); // the surface's mending
+          state.volume.remeshing += volume_after - volume_before; // the surface's mending
         }
         state.remeshes.push_back(record);
         fitted.push_back(!kept_surface);
@@ -318,8 +318,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
                     "volume %+.4f%%",
                     local->flips, local->collapses, 100.0 * record.volume_change);
         if (!kept_surface)
-          log_fit(local->put_back, local->volume_remeshed, local->volume_put_back, local->given_back,
-                  mesh::volume(local->mesh));
+          log_fit(local->put_back, local->volume_remeshed, local->volume_put_back, local->given_back, volume_after);
         continue;
       }
       if (!why->sunk_edges.empty()) {

@@ -72,6 +72,19 @@ void keep_nodes(BodyFields& fields, const std::vector<int>& old_node) {
   fields.touching_die = std::move(touching);
 }
 
+/// `fields` (mesh, nodal and element fields as they are) moved into `out`.
+void take_fields(BodyFields& fields, LocalRemesh& out) {
+  out.mesh = std::move(fields.mesh);
+  out.nodal = std::move(fields.nodal);
+  out.strain = std::move(fields.strain);
+  out.damage = std::move(fields.damage);
+  if (!fields.temperature.empty())
+    out.temperature =
+        Eigen::Map<const Eigen::VectorXd>(fields.temperature.data(), Eigen::Index(fields.temperature.size()));
+  if (!fields.material.empty())
+    out.material = Eigen::Map<const Eigen::VectorXd>(fields.material.data(), Eigen::Index(fields.material.size()));
+}
+
 /// Bisects the edges `edges` of fields.mesh, each tet's halves taking its
 /// ε̄, D (and `region` flag, when given) and each midpoint the mean of its
 /// edge's nodal values (P1: exact), the die its ends both press on.
@@ -179,17 +192,9 @@ std::optional<LocalRemesh> split_sunk_edges(const scene::Scene& scene, const sce
   out.volume_put_back = mesh::volume(part);
   const std::set<int> split(cut.parent.begin() + old.tet_count(), cut.parent.end());
   out.rebuilt = static_cast<int>(split.size());
-  out.nodal = std::move(fields.nodal);
-  out.strain = std::move(fields.strain);
-  out.damage = std::move(fields.damage);
-  if (!fields.material.empty())
-    out.material = Eigen::Map<const Eigen::VectorXd>(fields.material.data(), Eigen::Index(fields.material.size()));
-  if (!fields.temperature.empty()) {
-    out.temperature =
-        Eigen::Map<const Eigen::VectorXd>(fields.temperature.data(), Eigen::Index(fields.temperature.size()));
-    if (body.thermal) keep_stored_heat(old, old_temperature.data(), part, out.temperature, fresh, *body.thermal);
-  }
-  out.mesh = std::move(part);
+  take_fields(fields, out);
+  if (out.temperature.size() > 0 && body.thermal)
+    keep_stored_heat(old, old_temperature.data(), out.mesh, out.temperature, fresh, *body.thermal);
   return out;
 }
 
@@ -234,7 +239,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   const std::vector<std::vector<double>>& part_damage = fields.damage;
   LocalRemesh out;
   // A poor element held by the surface (its poor face on it) is mended
-  // first on the surface (an edge mended or a short one collapsed), the
+  // first on the surface (an edge flipped or a short one collapsed), the
   // other nodes where they are: interior nodes alone cannot mend it, and a
   // rebuilt surface moves contact nodes.
   std::vector<std::vector<double>*> element_fields{&fields.strain};
@@ -261,15 +266,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     out.worst = mended.worst_after;
     out.strain_integral_change = relative(integral(part, fields.strain), strain_integral);
     out.strain_max_change = relative(*std::max_element(fields.strain.begin(), fields.strain.end()), strain_max);
-    out.nodal = std::move(fields.nodal);
-    out.strain = std::move(fields.strain);
-    out.damage = std::move(fields.damage);
-    if (!fields.temperature.empty())
-      out.temperature =
-          Eigen::Map<const Eigen::VectorXd>(fields.temperature.data(), Eigen::Index(fields.temperature.size()));
-    if (!fields.material.empty())
-      out.material = Eigen::Map<const Eigen::VectorXd>(fields.material.data(), Eigen::Index(fields.material.size()));
-    out.mesh = std::move(part);
+    take_fields(fields, out);
     return out;
   }
   if (out.rebuilt == 0) {

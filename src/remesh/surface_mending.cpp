@@ -17,12 +17,6 @@ namespace {
 /// and an element next to one flipped in a pass waits for the next.
 constexpr int kPasses = 4;
 
-std::array<int, 3> sorted_key(int a, int b, int c) {
-  std::array<int, 3> k{a, b, c};
-  std::sort(k.begin(), k.end());
-  return k;
-}
-
 /// The face of `t` opposite its vertex `v`, its normal pointing out of `t`.
 mesh::Triangle face_opposite(const mesh::Tet& t, int v) {
   const int k = static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
@@ -40,11 +34,11 @@ struct Change {
   double worst_shell = 1.0, worst_made = 1.0;
 };
 
-/// The values of `field` (one a tet of `body`) on the tets `change` makes,
-/// by Anvil's transfer from the tets it replaces (conservative, peaks kept:
-/// field_transfer.h).
-std::vector<double> transferred(const mesh::TetMesh& body, const Change& change, const std::vector<double>& field) {
-  if (change.made.empty()) return {};
+/// Appends to each of `fields` (one value a tet of `body`) its values on the
+/// tets `change` makes, by Anvil's transfer from the tets it replaces
+/// (conservative, peaks kept: field_transfer.h).
+void transfer_fields(const mesh::TetMesh& body, const Change& change, const std::vector<std::vector<double>*>& fields) {
+  if (change.made.empty() || fields.empty()) return;
   mesh::TetMesh shell, made;
   std::map<int, int> number;
   auto node = [&](int v) {
@@ -52,19 +46,21 @@ std::vector<double> transferred(const mesh::TetMesh& body, const Change& change,
     if (added) shell.nodes.push_back(body.nodes[v]);
     return it->second;
   };
-  std::vector<double> values;
   for (int e : change.shell) {
     const mesh::Tet& t = body.tets[e];
     shell.tets.push_back({node(t[0]), node(t[1]), node(t[2]), node(t[3])});
-    values.push_back(field[e]);
   }
   for (const mesh::Tet& t : change.made)
     made.tets.push_back({node(t[0]), node(t[1]), node(t[2]), node(t[3])});
   made.nodes = shell.nodes;
-  mesh::build_boundary(shell);
-  mesh::build_boundary(made);
   const PointLocator in_shell(shell);
-  return transfer_element(shell, values, in_shell, made);
+  for (std::vector<double>* field : fields) {
+    std::vector<double> values;
+    for (int e : change.shell)
+      values.push_back((*field)[e]);
+    const std::vector<double> on_made = transfer_element(shell, values, in_shell, made);
+    field->insert(field->end(), on_made.begin(), on_made.end());
+  }
 }
 
 /// The body with its adjacency for one pass: changes within a pass touch
@@ -76,7 +72,7 @@ public:
         min_cosine_(std::cos(most_angle * std::numbers::pi / 180.0)) {
     for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
       const mesh::Triangle& t = body.boundary_faces[f];
-      face_of_[sorted_key(t[0], t[1], t[2])] = static_cast<int>(f);
+      face_of_[mesh::sorted(t)] = static_cast<int>(f);
       for (int v : t)
         faces_at_[v].push_back(static_cast<int>(f));
     }
@@ -84,7 +80,7 @@ public:
 
   /// The boundary face number of triangle (a, b, c), or −1.
   int face(int a, int b, int c) const {
-    const auto it = face_of_.find(sorted_key(a, b, c));
+    const auto it = face_of_.find(mesh::sorted({a, b, c}));
     return it == face_of_.end() ? -1 : it->second;
   }
 
@@ -118,10 +114,11 @@ public:
                       n2 = mesh::area_vector(body_, body_.boundary_faces[abd]).normalized();
     if (n1.dot(n2) < min_cosine_) return std::nullopt;
     // cd must be a new edge (one shell element: not on the surface yet).
-    for (int e : around_[c]) {
-      const mesh::Tet& t = body_.tets[e];
-      if (out.shell.size() > 1 && std::find(t.begin(), t.end(), d) != t.end()) return std::nullopt;
-    }
+    if (out.shell.size() > 1)
+      for (int e : around_[c]) {
+        const mesh::Tet& t = body_.tets[e];
+        if (std::find(t.begin(), t.end(), d) != t.end()) return std::nullopt;
+      }
     for (int g : faces_at_[c]) {
       const mesh::Triangle& t = body_.boundary_faces[g];
       if (std::find(t.begin(), t.end(), d) != t.end()) return std::nullopt;
@@ -198,7 +195,7 @@ public:
       Link l;
       for (int e : around_[w]) {
         const mesh::Triangle o = face_opposite(body_.tets[e], w);
-        l.triangles.insert(sorted_key(o[0], o[1], o[2]));
+        l.triangles.insert(mesh::sorted(o));
         for (int k = 0; k < 3; ++k) {
           l.vertices.insert(o[k]);
           l.edges.insert({std::min(o[k], o[(k + 1) % 3]), std::max(o[k], o[(k + 1) % 3])});
@@ -330,10 +327,7 @@ SurfaceMending mend_surface(mesh::TetMesh& body, const std::vector<std::vector<d
         }
       }
       if (!best) continue;
-      for (std::vector<double>* field : element_fields) {
-        const std::vector<double> values = transferred(body, *best, *field);
-        field->insert(field->end(), values.begin(), values.end());
-      }
+      transfer_fields(body, *best, element_fields);
       for (int s : best->shell) {
         dead_tet[s] = 1;
         for (int v : body.tets[s])

@@ -2,6 +2,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products on Point
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -31,6 +32,13 @@ struct TetMesh {
 /// The faces of a positively oriented tet (local vertex numbers), each
 /// ordered with its normal pointing out; face k is opposite vertex k.
 inline constexpr int kFaceVertices[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+/// A face's vertices in increasing order: the same key for any order or
+/// orientation of its vertices.
+inline Triangle sorted(Triangle f) {
+  std::sort(f.begin(), f.end());
+  return f;
+}
 
 /// Area vector of a face: ½ (x1−x0)×(x2−x0), along the outward normal of a
 /// boundary face, of length its area (mm²).
