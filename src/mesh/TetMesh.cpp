@@ -8,7 +8,6 @@
 #include <map>
 
 namespace anvil::mesh {
-namespace {} // namespace
 
 void build_boundary(TetMesh& mesh, const std::vector<Triangle>& tagged, const std::vector<int>& tags) {
   std::map<std::array<int, 3>, std::pair<Triangle, int>> once; // sorted key -> (oriented face, count)
@@ -121,6 +120,19 @@ MeshRange append(TetMesh& mesh, const TetMesh& part) {
   }
   mesh.boundary_tags.insert(mesh.boundary_tags.end(), part.boundary_tags.begin(), part.boundary_tags.end());
   return range;
+}
+
+TetMesh tets_mesh(const std::vector<Point>& nodes, const std::vector<Tet>& tets) {
+  TetMesh out;
+  std::vector<int> number(nodes.size(), -1);
+  for (Tet t : tets) {
+    for (int& v : t) {
+      if (number[v] < 0) number[v] = static_cast<int>(out.nodes.size()), out.nodes.push_back(nodes[v]);
+      v = number[v];
+    }
+    out.tets.push_back(t);
+  }
+  return out;
 }
 
 TetMesh extract(const TetMesh& mesh, const MeshRange& range) {

@@ -36,18 +36,10 @@ constexpr double kSplitQuality = 2.0;
 
 /// The tets of `m` that `keep` flags, as a mesh of their own.
 mesh::TetMesh tets_of(const mesh::TetMesh& m, const std::vector<char>& keep) {
-  mesh::TetMesh out;
-  std::vector<int> number(m.nodes.size(), -1);
-  for (int e = 0; e < m.tet_count(); ++e) {
-    if (!keep[e]) continue;
-    mesh::Tet t = m.tets[e];
-    for (int& v : t) {
-      if (number[v] < 0) number[v] = static_cast<int>(out.nodes.size()), out.nodes.push_back(m.nodes[v]);
-      v = number[v];
-    }
-    out.tets.push_back(t);
-  }
-  return out;
+  std::vector<mesh::Tet> kept;
+  for (int e = 0; e < m.tet_count(); ++e)
+    if (keep[e]) kept.push_back(m.tets[e]);
+  return mesh::tets_mesh(m.nodes, kept);
 }
 
 /// The nodal fields of the nodes `old_node` names (in their order), the

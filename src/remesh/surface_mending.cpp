@@ -39,20 +39,10 @@ struct Change {
 /// (conservative, peaks kept: field_transfer.h).
 void transfer_fields(const mesh::TetMesh& body, const Change& change, const std::vector<std::vector<double>*>& fields) {
   if (change.made.empty() || fields.empty()) return;
-  mesh::TetMesh shell, made;
-  std::map<int, int> number;
-  auto node = [&](int v) {
-    const auto [it, added] = number.try_emplace(v, shell.node_count());
-    if (added) shell.nodes.push_back(body.nodes[v]);
-    return it->second;
-  };
-  for (int e : change.shell) {
-    const mesh::Tet& t = body.tets[e];
-    shell.tets.push_back({node(t[0]), node(t[1]), node(t[2]), node(t[3])});
-  }
-  for (const mesh::Tet& t : change.made)
-    made.tets.push_back({node(t[0]), node(t[1]), node(t[2]), node(t[3])});
-  made.nodes = shell.nodes;
+  std::vector<mesh::Tet> replaced;
+  for (int e : change.shell)
+    replaced.push_back(body.tets[e]);
+  const mesh::TetMesh shell = mesh::tets_mesh(body.nodes, replaced), made = mesh::tets_mesh(body.nodes, change.made);
   const PointLocator in_shell(shell);
   for (std::vector<double>* field : fields) {
     std::vector<double> values;

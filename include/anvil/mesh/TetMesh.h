@@ -90,6 +90,10 @@ MeshRange append(TetMesh& mesh, const TetMesh& part);
 /// The part of `mesh` that `range` names, renumbered from 0 (inverse of append).
 TetMesh extract(const TetMesh& mesh, const MeshRange& range);
 
+/// The mesh of `tets` (node indices into `nodes`) with only the nodes they
+/// use, numbered in their order of first use; no boundary.
+TetMesh tets_mesh(const std::vector<Point>& nodes, const std::vector<Tet>& tets);
+
 /// Sum of the volumes of the tets of `range` (mm³).
 double volume(const TetMesh& mesh, const MeshRange& range);
 
