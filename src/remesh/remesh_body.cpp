@@ -7,6 +7,7 @@
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/mesh/QualityGuard.h"
+#include "anvil/mesh/boundary_slivers.h"
 #include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/tet_geometry.h"
@@ -54,6 +55,10 @@ constexpr int kBorderPasses = 3;
 constexpr double kLevelRetryScale = 0.95;
 /// After the size field's levels, cells below this quality are rebuilt.
 constexpr double kPoorAfterLevels = 0.25;
+/// Flat tets on the surface below this share of settings.quality_floor are
+/// taken off the new mesh (mesh/boundary_slivers.h): a third, where the
+/// remesher refuses a result (remesh/Remesher.cpp).
+constexpr double kPeelShare = 1.0 / 3.0;
 
 /// Face key as build_triangulation looks it up: the smallest index first, the rest in order.
 std::array<int, 3> facet_key(const mesh::Triangle& f) {
@@ -254,6 +259,10 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
   mesh::build_boundary(out, tagged, tags);
   settle_on_old_surface(out, body, patch, tag_of_patch, std::vector<char>(out.nodes.size(), 1), mesh::volume(body),
                         settings.quality_floor);
+  const double volume = mesh::volume(out);
+  if (const int peeled = mesh::peel_boundary_slivers(out, kPeelShare * settings.quality_floor); peeled > 0)
+    log::info("    remeshing: %d flat tets on creases of the surface taken off (volume %+.2e %%)", peeled,
+              100.0 * (mesh::volume(out) / volume - 1.0));
   if (const std::string why = mesh::fault(out); !why.empty()) throw RunError("remeshed body: " + why);
   return out;
 }

@@ -1,0 +1,125 @@
+#include "anvil/mesh/boundary_slivers.h"
+
+#include "anvil/mesh/tet_geometry.h"
+
+#include <map>
+#include <set>
+
+namespace anvil::mesh {
+
+namespace {
+
+using Edge = std::array<int, 2>;
+
+Edge edge(int a, int b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+
+/// One pass over the tets: removes those that qualify and touch no node of
+/// another removed in the pass (each decision sees the surface as it is).
+/// Returns how many it removed.
+int peel_once(TetMesh& mesh, double below) {
+  std::map<Triangle, int> face_of; // sorted vertices -> boundary face
+  std::set<Edge> boundary_edges;
+  for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
+    const Triangle& t = mesh.boundary_faces[f];
+    face_of.emplace(sorted(t), static_cast<int>(f));
+    for (int k = 0; k < 3; ++k)
+      boundary_edges.insert(edge(t[k], t[(k + 1) % 3]));
+  }
+  std::vector<int> uses(mesh.nodes.size(), 0);
+  for (const Tet& t : mesh.tets)
+    for (int v : t)
+      ++uses[v];
+
+  std::vector<char> removed(mesh.tets.size(), 0), touched(mesh.nodes.size(), 0), dropped(mesh.nodes.size(), 0);
+  std::vector<Triangle> tagged = mesh.boundary_faces;
+  std::vector<int> tags = mesh.boundary_tags;
+  tags.resize(tagged.size(), 0);
+  int count = 0;
+  for (int e = 0; e < mesh.tet_count(); ++e) {
+    const Tet& t = mesh.tets[e];
+    if (touched[t[0]] || touched[t[1]] || touched[t[2]] || touched[t[3]] || quality(mesh, e) >= below) continue;
+    std::array<int, 4> boundary_face{-1, -1, -1, -1}; // per local face k (opposite vertex k)
+    int on_boundary = 0;
+    for (int k = 0; k < 4; ++k) {
+      const auto found = face_of.find(sorted({t[kFaceVertices[k][0]], t[kFaceVertices[k][1]], t[kFaceVertices[k][2]]}));
+      if (found != face_of.end()) boundary_face[k] = found->second, ++on_boundary;
+    }
+    if (on_boundary == 3) {
+      int apex = 0; // the node opposite the inner face is shared by the three boundary faces
+      while (boundary_face[apex] >= 0)
+        ++apex;
+      if (uses[t[apex]] != 1) continue;
+      dropped[t[apex]] = 1;
+    } else if (on_boundary == 2) {
+      // The inner faces share the edge of the two nodes the boundary faces are opposite to.
+      std::array<int, 2> ends{};
+      for (int k = 0, n = 0; k < 4; ++k)
+        if (boundary_face[k] >= 0) ends[n++] = t[k];
+      if (boundary_edges.count(edge(ends[0], ends[1])) > 0) continue;
+    } else {
+      continue;
+    }
+    removed[e] = 1;
+    for (int v : t)
+      touched[v] = 1;
+    ++count;
+    // The uncovered faces, tagged as the removed boundary face whose outward
+    // normal is nearest theirs (minus their normal out of this tet).
+    for (int k = 0; k < 4; ++k) {
+      if (boundary_face[k] >= 0) continue;
+      const Triangle inner{t[kFaceVertices[k][0]], t[kFaceVertices[k][1]], t[kFaceVertices[k][2]]};
+      const Point out = -area_vector(mesh, inner);
+      int tag = 0;
+      double best = -std::numeric_limits<double>::infinity();
+      for (int j = 0; j < 4; ++j) {
+        if (boundary_face[j] < 0) continue;
+        const double facing = area_vector(mesh, mesh.boundary_faces[boundary_face[j]]).normalized().dot(out);
+        if (facing > best) best = facing, tag = tags[boundary_face[j]];
+      }
+      tagged.push_back(inner);
+      tags.push_back(tag);
+    }
+  }
+  if (count == 0) return 0;
+
+  std::vector<int> number(mesh.nodes.size(), -1);
+  std::vector<Point> nodes;
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+    if (!dropped[n]) number[n] = static_cast<int>(nodes.size()), nodes.push_back(mesh.nodes[n]);
+  std::vector<Tet> tets;
+  for (int e = 0; e < mesh.tet_count(); ++e)
+    if (!removed[e])
+      tets.push_back(
+          {number[mesh.tets[e][0]], number[mesh.tets[e][1]], number[mesh.tets[e][2]], number[mesh.tets[e][3]]});
+  std::vector<Triangle> kept_tagged;
+  std::vector<int> kept_tags;
+  for (std::size_t f = 0; f < tagged.size(); ++f) {
+    const Triangle& face = tagged[f];
+    if (dropped[face[0]] || dropped[face[1]] || dropped[face[2]]) continue;
+    kept_tagged.push_back({number[face[0]], number[face[1]], number[face[2]]});
+    kept_tags.push_back(tags[f]);
+  }
+  mesh.nodes = std::move(nodes);
+  mesh.tets = std::move(tets);
+  build_boundary(mesh, kept_tagged, kept_tags);
+  return count;
+}
+
+} // namespace
+
+int peel_boundary_slivers(TetMesh& mesh, double below) {
+  int peeled = 0;
+  // A pass uncovers at most the tets under the ones it removed; a few passes
+  // reach every sliver stacked on a crease.
+  constexpr int kMostPasses = 8;
+  for (int pass = 0; pass < kMostPasses; ++pass) {
+    const int now = peel_once(mesh, below);
+    if (now == 0) break;
+    peeled += now;
+  }
+  return peeled;
+}
+
+} // namespace anvil::mesh

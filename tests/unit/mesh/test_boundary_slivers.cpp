@@ -1,0 +1,93 @@
+// peel_boundary_slivers: flat tets on the surface go where the surface stays
+// a manifold, and nothing else changes.
+#include "anvil/mesh/boundary_slivers.h"
+#include "anvil/mesh/generators.h"
+#include "anvil/mesh/tet_geometry.h"
+
+#include <catch2/catch.hpp>
+
+using namespace anvil;
+
+namespace {
+
+/// `t` with positive orientation (two vertices swapped when needed).
+mesh::Tet oriented(const mesh::TetMesh& m, mesh::Tet t) {
+  if (mesh::signed_volume(m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]], m.nodes[t[3]]) < 0.0) std::swap(t[2], t[3]);
+  return t;
+}
+
+} // namespace
+
+TEST_CASE("A flat tet with three faces on the surface goes with its apex node; the box is as before", "[unit][mesh]") {
+  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
+  const mesh::TetMesh before = box;
+  // A cap of height 1e-3 on a boundary face: its apex is in no other tet.
+  const mesh::Triangle f = box.boundary_faces.front();
+  const mesh::Point normal = mesh::area_vector(box, f).normalized();
+  box.nodes.push_back((box.nodes[f[0]] + box.nodes[f[1]] + box.nodes[f[2]]) / 3.0 + 1e-3 * normal);
+  box.tets.push_back(oriented(box, {f[0], f[1], f[2], box.node_count() - 1}));
+  mesh::build_boundary(box, before.boundary_faces, before.boundary_tags);
+  const double q = mesh::quality(box, box.tet_count() - 1);
+  REQUIRE(q < 0.01);
+
+  CHECK(mesh::peel_boundary_slivers(box, q) == 0); // not below the bound: kept
+  CHECK(mesh::peel_boundary_slivers(box, 2.0 * q) == 1);
+  CHECK(box.nodes == before.nodes);
+  CHECK(box.tets == before.tets);
+  CHECK(box.boundary_faces.size() == before.boundary_faces.size());
+  CHECK(mesh::volume(box) == Approx(mesh::volume(before)).epsilon(1e-14));
+  CHECK(mesh::fault(box).empty());
+}
+
+TEST_CASE("A flat tet with two faces on the surface uncovers its other two, tagged as the faces it lost",
+          "[unit][mesh]") {
+  // Two tets under a square of diagonal a-b, and a sliver on it whose
+  // corners c, d lie 1e-3 above a and b.
+  mesh::TetMesh m;
+  const double lift = 1e-3;
+  m.nodes = {{0, 0, 0}, {1, 1, 0}, {1, 0, lift}, {0, 1, lift}, {0.5, 0.5, -1}}; // a b c d e
+  m.tets = {oriented(m, {0, 2, 1, 4}), oriented(m, {0, 1, 3, 4}), oriented(m, {0, 1, 2, 3})};
+  mesh::build_boundary(m);
+  m.boundary_tags.assign(m.boundary_faces.size(), 0);
+  for (std::size_t f = 0; f < m.boundary_faces.size(); ++f)
+    if (mesh::area_vector(m, m.boundary_faces[f]).z() > 0.0) m.boundary_tags[f] = 7; // the top
+  REQUIRE(mesh::quality(m, 2) < 0.01);
+  const double volume = mesh::volume(m), sliver = mesh::signed_volume(m, 2);
+
+  CHECK(mesh::peel_boundary_slivers(m, 0.05) == 1);
+  REQUIRE(m.tet_count() == 2);
+  CHECK(m.node_count() == 5);
+  CHECK(mesh::fault(m).empty());
+  CHECK(mesh::volume(m) == Approx(volume - sliver).epsilon(1e-14));
+  REQUIRE(m.boundary_faces.size() == 6); // the four sides and the two uncovered top faces
+  int top = 0;
+  for (std::size_t f = 0; f < m.boundary_faces.size(); ++f) {
+    if (mesh::area_vector(m, m.boundary_faces[f]).z() <= 0.0) continue;
+    CHECK(m.boundary_tags[f] == 7);
+    ++top;
+  }
+  CHECK(top == 2);
+}
+
+TEST_CASE("A flat tet whose removal would pinch the surface stays", "[unit][mesh]") {
+  // The cap of the first test with a tall tet on its face f0 f1 p: the cap
+  // keeps two faces on the surface, and taking it off would put the edge
+  // f0 f1, already on the tall tet's surface, on four boundary faces.
+  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
+  const mesh::TetMesh before = box;
+  const mesh::Triangle f = box.boundary_faces.front();
+  const mesh::Point normal = mesh::area_vector(box, f).normalized();
+  const mesh::Point apex = (box.nodes[f[0]] + box.nodes[f[1]] + box.nodes[f[2]]) / 3.0 + 1e-3 * normal;
+  box.nodes.push_back(apex);
+  const int p = box.node_count() - 1;
+  box.tets.push_back(oriented(box, {f[0], f[1], f[2], p}));
+  // A second tet on the apex: a tall one above the cap (not flat).
+  box.nodes.push_back(apex + 0.5 * normal + 0.1 * (box.nodes[f[0]] - apex));
+  box.tets.push_back(oriented(box, {f[0], f[1], p, box.node_count() - 1}));
+  mesh::build_boundary(box, before.boundary_faces, before.boundary_tags);
+  REQUIRE(mesh::fault(box).empty());
+  const mesh::TetMesh capped = box;
+
+  CHECK(mesh::peel_boundary_slivers(box, 0.05) == 0);
+  CHECK(box.tets == capped.tets);
+}
