@@ -1,5 +1,6 @@
-// The 75 % upsetting and the closed-die forging with flash run to the end
-// with remeshing, and each remesh keeps the volume, ε̄ and the load curve.
+// The 75 % upsetting, the closed-die forging with flash and the connecting
+// rod run to their stroke with remeshing, and each remesh keeps the volume,
+// ε̄ and the load curve.
 #include "test_common.h"
 
 #include "anvil/core/log.h"
@@ -159,4 +160,23 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
   INFO("inside the dies at closure: " << 100.0 * inside << " % of the volume");
   CHECK(inside < 0.003);
   check_max_strain(run);
+}
+
+// The connecting rod (cases/conrod.yaml): dies with edges along its ribs and
+// bosses, not a body of revolution. To 3.6 mm, past 3.3 mm where those edges
+// had pressed creases into the surface that CGAL filled with flat tets at
+// every whole remesh (worst quality 0.001-0.007, increments cut to 0.0003
+// s) until they were taken off (mesh/boundary_slivers.h). Solved by MUMPS:
+// FGMRES needs about 70 Krylov iterations a Newton iteration on this part,
+// twice the time on one process; the run to closure (15 minutes) is beyond
+// the tier. The load jump at equal geometry is bounded above its measured
+// worst, 5.7 % (at a whole remesh), as for the closed-die forging above.
+TEST_CASE("The connecting rod to 3.6 mm: every remesh improves its worst element and keeps volume and strain integral",
+          "[hard][remesh]") {
+  const RemeshedRun run = run_remeshed("cases/conrod.yaml", "anvil_hard_conrod",
+                                       {"time.stop.stroke=3.6", "solver.linear_solver=mumps"}); // 3.5 min
+  check_remeshes_keep_volume_and_strain(run);
+  check_run_volume(run);
+  check_max_strain(run);
+  check_load_jump(run, 0.07);
 }
