@@ -2,8 +2,12 @@
 
 #include "anvil/mesh/tet_geometry.h"
 
+#include <algorithm>
+#include <array>
+#include <limits>
 #include <map>
 #include <set>
+#include <vector>
 
 namespace anvil::mesh {
 
