@@ -163,14 +163,15 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
 }
 
 // The connecting rod (cases/conrod.yaml): dies with edges along its ribs and
-// bosses, not a body of revolution. To 3.6 mm, past 3.3 mm where those edges
-// had pressed creases into the surface that CGAL filled with flat tets at
-// every whole remesh (worst quality 0.001-0.007, increments cut to 0.0003
-// s) until they were taken off (mesh/boundary_slivers.h). Solved by MUMPS:
-// FGMRES needs about 70 Krylov iterations a Newton iteration on this part,
-// twice the time on one process; the run to closure (15 minutes) is beyond
-// the tier. The load jump at equal geometry is bounded above its measured
-// worst, 5.7 % (at a whole remesh), as for the closed-die forging above.
+// bosses, not a body of revolution. To 3.6 mm: sunk die edges split from the
+// fifth increment, local and whole remeshes, creases pressed by the die
+// edges (a whole remesh takes off the flat tets CGAL leaves on them,
+// mesh/boundary_slivers.h). Solved by MUMPS: FGMRES needs about 70 Krylov
+// iterations a Newton iteration on this part, twice the time on one
+// process; the run to closure, over half an hour, is beyond the tier (on
+// one process it stops at 9.69 mm: cases/conrod.yaml). The load jump at
+// equal geometry is bounded above its measured worst, -5.7 % at a whole
+// remesh, as for the closed-die forging above.
 TEST_CASE("The connecting rod to 3.6 mm: every remesh improves its worst element and keeps volume and strain integral",
           "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/conrod.yaml", "anvil_hard_conrod",
