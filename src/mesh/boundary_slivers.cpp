@@ -1,5 +1,6 @@
 #include "anvil/mesh/boundary_slivers.h"
 
+#include "anvil/mesh/flat_tags.h"
 #include "anvil/mesh/tet_geometry.h"
 
 #include <algorithm>
@@ -40,6 +41,12 @@ int peel_once(TetMesh& mesh, double below) {
   std::vector<Triangle> tagged = mesh.boundary_faces;
   std::vector<int> tags = mesh.boundary_tags;
   tags.resize(tagged.size(), 0);
+  const std::map<int, std::pair<Point, double>> planes = flat_tags(mesh);
+  // `tag` fits `face` unless the tag is flat and the face is off its plane.
+  auto fits = [&](int tag, const Triangle& face) {
+    const auto plane = planes.find(tag);
+    return plane == planes.end() || in_plane(mesh, face, plane->second);
+  };
   int count = 0;
   for (int e = 0; e < mesh.tet_count(); ++e) {
     const Tet& t = mesh.tets[e];
@@ -50,12 +57,12 @@ int peel_once(TetMesh& mesh, double below) {
       const auto found = face_of.find(sorted({t[kFaceVertices[k][0]], t[kFaceVertices[k][1]], t[kFaceVertices[k][2]]}));
       if (found != face_of.end()) boundary_face[k] = found->second, ++on_boundary;
     }
+    int apex = -1; // with three boundary faces: the node they share, opposite the inner face
     if (on_boundary == 3) {
-      int apex = 0; // the node opposite the inner face is shared by the three boundary faces
+      apex = 0;
       while (boundary_face[apex] >= 0)
         ++apex;
       if (uses[t[apex]] != 1) continue;
-      dropped[t[apex]] = 1;
     } else if (on_boundary == 2) {
       // The inner faces share the edge of the two nodes the boundary faces are opposite to.
       std::array<int, 2> ends{};
@@ -65,25 +72,37 @@ int peel_once(TetMesh& mesh, double below) {
     } else {
       continue;
     }
-    removed[e] = 1;
-    for (int v : t)
-      touched[v] = 1;
-    ++count;
-    // The uncovered faces, tagged as the removed boundary face whose outward
-    // normal is nearest theirs (minus their normal out of this tet).
-    for (int k = 0; k < 4; ++k) {
+    // The uncovered faces, each tagged as the removed boundary face whose
+    // outward normal is nearest its own (minus its normal out of this tet)
+    // among those whose tag fits it; none fits: the tet stays.
+    std::array<Triangle, 2> uncovered{};
+    std::array<int, 2> uncovered_tag{};
+    int n_uncovered = 0;
+    bool all_fit = true;
+    for (int k = 0; k < 4 && all_fit; ++k) {
       if (boundary_face[k] >= 0) continue;
       const Triangle inner{t[kFaceVertices[k][0]], t[kFaceVertices[k][1]], t[kFaceVertices[k][2]]};
       const Point out = -area_vector(mesh, inner);
       int tag = 0;
       double best = -std::numeric_limits<double>::infinity();
       for (int j = 0; j < 4; ++j) {
-        if (boundary_face[j] < 0) continue;
+        if (boundary_face[j] < 0 || !fits(tags[boundary_face[j]], inner)) continue;
         const double facing = area_vector(mesh, mesh.boundary_faces[boundary_face[j]]).normalized().dot(out);
         if (facing > best) best = facing, tag = tags[boundary_face[j]];
       }
-      tagged.push_back(inner);
-      tags.push_back(tag);
+      all_fit = best > -std::numeric_limits<double>::infinity();
+      uncovered[n_uncovered] = inner;
+      uncovered_tag[n_uncovered++] = tag;
+    }
+    if (!all_fit) continue;
+    if (apex >= 0) dropped[t[apex]] = 1;
+    removed[e] = 1;
+    for (int v : t)
+      touched[v] = 1;
+    ++count;
+    for (int k = 0; k < n_uncovered; ++k) {
+      tagged.push_back(uncovered[k]);
+      tags.push_back(uncovered_tag[k]);
     }
   }
   if (count == 0) return 0;

@@ -9,6 +9,7 @@
 #include "anvil/mesh/QualityGuard.h"
 #include "anvil/mesh/boundary_slivers.h"
 #include "anvil/mesh/edge_bisection.h"
+#include "anvil/mesh/flat_tags.h"
 #include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/quality.h"
@@ -83,27 +84,6 @@ std::set<int> curved_tags(const mesh::TetMesh& body, const std::vector<int>& pat
       curved.insert(tag_of_patch[patch[f]]);
   }
   return curved;
-}
-
-/// Tags whose faces all lie in one plane (a symmetry plane, an undeformed
-/// end face): the plane's unit normal and offset n·x.
-std::map<int, std::pair<mesh::Point, double>> flat_tags(const mesh::TetMesh& body) {
-  std::map<int, std::pair<mesh::Point, double>> plane;
-  std::set<int> not_flat;
-  for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
-    const int tag = body.boundary_tags[f];
-    const mesh::Triangle& t = body.boundary_faces[f];
-    const mesh::Point n = mesh::area_vector(body, t).normalized();
-    const auto [it, first] = plane.try_emplace(tag, n, n.dot(body.nodes[t[0]]));
-    if (first) continue;
-    const auto& [normal, offset] = it->second;
-    for (int v : t)
-      if (normal.dot(n) < 1.0 - 1e-9 || std::abs(normal.dot(body.nodes[v]) - offset) > 1e-9 * (1.0 + std::abs(offset)))
-        not_flat.insert(tag);
-  }
-  for (int tag : not_flat)
-    plane.erase(tag);
-  return plane;
 }
 
 /// The nodes inside curved patches (every face around them on one): where
@@ -183,7 +163,7 @@ void settle_on_old_surface(mesh::TetMesh& out, const mesh::TetMesh& body, const 
   // A node on the border of a flat patch may land on the curved face next
   // to it (off a symmetry plane by a fraction of a µm, enough to make the
   // plane's faces no longer coplanar): flat patches keep their nodes.
-  const auto planes = flat_tags(body);
+  const auto planes = mesh::flat_tags(body);
   for (std::size_t f = 0; f < out.boundary_faces.size(); ++f) {
     const auto plane = planes.find(out.boundary_tags[f]);
     if (plane == planes.end()) continue;

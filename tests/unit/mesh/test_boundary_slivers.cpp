@@ -91,3 +91,31 @@ TEST_CASE("A flat tet whose removal would pinch the surface stays", "[unit][mesh
   CHECK(mesh::peel_boundary_slivers(box, 0.05) == 0);
   CHECK(box.tets == capped.tets);
 }
+
+TEST_CASE("An uncovered face takes no flat tag whose plane it is off", "[unit][mesh]") {
+  // The sliver of the second test with one top face on a tag of its own
+  // (one face: flat), the rest on a tag that is not: both uncovered faces,
+  // off that plane, take the other tag, so the flat tag stays flat (the
+  // remesher keeps a flat tag's nodes on its plane, a symmetry plane's
+  // among them). Were both tags flat, the sliver would stay.
+  mesh::TetMesh m;
+  const double lift = 1e-3;
+  m.nodes = {{0, 0, 0}, {1, 1, 0}, {1, 0, lift}, {0, 1, lift}, {0.5, 0.5, -1}};
+  m.tets = {oriented(m, {0, 2, 1, 4}), oriented(m, {0, 1, 3, 4}), oriented(m, {0, 1, 2, 3})};
+  mesh::build_boundary(m);
+  m.boundary_tags.assign(m.boundary_faces.size(), 7); // the sides too: 7 is not flat
+  for (std::size_t f = m.boundary_faces.size(); f-- > 0;)
+    if (mesh::area_vector(m, m.boundary_faces[f]).z() > 0.0) {
+      m.boundary_tags[f] = 9;
+      break;
+    }
+
+  CHECK(mesh::peel_boundary_slivers(m, 0.05) == 1);
+  int top = 0;
+  for (std::size_t f = 0; f < m.boundary_faces.size(); ++f) {
+    if (mesh::area_vector(m, m.boundary_faces[f]).z() <= 0.0) continue;
+    CHECK(m.boundary_tags[f] == 7);
+    ++top;
+  }
+  CHECK(top == 2);
+}
