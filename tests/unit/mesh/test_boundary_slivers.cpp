@@ -16,16 +16,46 @@ mesh::Tet oriented(const mesh::TetMesh& m, mesh::Tet t) {
   return t;
 }
 
+/// Two tets under a square of diagonal a-b (nodes 0, 1) and a sliver (tet
+/// 2) on it whose corners c, d (nodes 2, 3) lie 1e-3 above a and b; every
+/// boundary face tagged `tag`.
+mesh::TetMesh sliver_on_two_tets(int tag) {
+  mesh::TetMesh m;
+  const double lift = 1e-3;
+  m.nodes = {{0, 0, 0}, {1, 1, 0}, {1, 0, lift}, {0, 1, lift}, {0.5, 0.5, -1}}; // a b c d e
+  m.tets = {oriented(m, {0, 2, 1, 4}), oriented(m, {0, 1, 3, 4}), oriented(m, {0, 1, 2, 3})};
+  mesh::build_boundary(m);
+  m.boundary_tags.assign(m.boundary_faces.size(), tag);
+  return m;
+}
+
+/// Checks that every upward boundary face of `m` has tag `tag`; returns how many there are.
+int top_faces_tagged(const mesh::TetMesh& m, int tag) {
+  int top = 0;
+  for (std::size_t f = 0; f < m.boundary_faces.size(); ++f) {
+    if (mesh::area_vector(m, m.boundary_faces[f]).z() <= 0.0) continue;
+    CHECK(m.boundary_tags[f] == tag);
+    ++top;
+  }
+  return top;
+}
+
+/// Puts on the first boundary face of `box` a cap of height 1e-3 whose apex
+/// (the new last node) is in no other tet; returns the face.
+mesh::Triangle add_cap(mesh::TetMesh& box) {
+  const mesh::Triangle f = box.boundary_faces.front();
+  const mesh::Point normal = mesh::area_vector(box, f).normalized();
+  box.nodes.push_back((box.nodes[f[0]] + box.nodes[f[1]] + box.nodes[f[2]]) / 3.0 + 1e-3 * normal);
+  box.tets.push_back(oriented(box, {f[0], f[1], f[2], box.node_count() - 1}));
+  return f;
+}
+
 } // namespace
 
 TEST_CASE("A flat tet with three faces on the surface goes with its apex node; the box is as before", "[unit][mesh]") {
   mesh::TetMesh box = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
   const mesh::TetMesh before = box;
-  // A cap of height 1e-3 on a boundary face: its apex is in no other tet.
-  const mesh::Triangle f = box.boundary_faces.front();
-  const mesh::Point normal = mesh::area_vector(box, f).normalized();
-  box.nodes.push_back((box.nodes[f[0]] + box.nodes[f[1]] + box.nodes[f[2]]) / 3.0 + 1e-3 * normal);
-  box.tets.push_back(oriented(box, {f[0], f[1], f[2], box.node_count() - 1}));
+  add_cap(box);
   mesh::build_boundary(box, before.boundary_faces, before.boundary_tags);
   const double q = mesh::quality(box, box.tet_count() - 1);
   REQUIRE(q < 0.01);
@@ -41,14 +71,7 @@ TEST_CASE("A flat tet with three faces on the surface goes with its apex node; t
 
 TEST_CASE("A flat tet with two faces on the surface uncovers its other two, tagged as the faces it lost",
           "[unit][mesh]") {
-  // Two tets under a square of diagonal a-b, and a sliver on it whose
-  // corners c, d lie 1e-3 above a and b.
-  mesh::TetMesh m;
-  const double lift = 1e-3;
-  m.nodes = {{0, 0, 0}, {1, 1, 0}, {1, 0, lift}, {0, 1, lift}, {0.5, 0.5, -1}}; // a b c d e
-  m.tets = {oriented(m, {0, 2, 1, 4}), oriented(m, {0, 1, 3, 4}), oriented(m, {0, 1, 2, 3})};
-  mesh::build_boundary(m);
-  m.boundary_tags.assign(m.boundary_faces.size(), 0);
+  mesh::TetMesh m = sliver_on_two_tets(0);
   for (std::size_t f = 0; f < m.boundary_faces.size(); ++f)
     if (mesh::area_vector(m, m.boundary_faces[f]).z() > 0.0) m.boundary_tags[f] = 7; // the top
   REQUIRE(mesh::quality(m, 2) < 0.01);
@@ -60,13 +83,7 @@ TEST_CASE("A flat tet with two faces on the surface uncovers its other two, tagg
   CHECK(mesh::fault(m).empty());
   CHECK(mesh::volume(m) == Approx(volume - sliver).epsilon(1e-14));
   REQUIRE(m.boundary_faces.size() == 6); // the four sides and the two uncovered top faces
-  int top = 0;
-  for (std::size_t f = 0; f < m.boundary_faces.size(); ++f) {
-    if (mesh::area_vector(m, m.boundary_faces[f]).z() <= 0.0) continue;
-    CHECK(m.boundary_tags[f] == 7);
-    ++top;
-  }
-  CHECK(top == 2);
+  CHECK(top_faces_tagged(m, 7) == 2);
 }
 
 TEST_CASE("A flat tet whose removal would pinch the surface stays", "[unit][mesh]") {
@@ -75,12 +92,10 @@ TEST_CASE("A flat tet whose removal would pinch the surface stays", "[unit][mesh
   // f0 f1, already on the tall tet's surface, on four boundary faces.
   mesh::TetMesh box = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
   const mesh::TetMesh before = box;
-  const mesh::Triangle f = box.boundary_faces.front();
+  const mesh::Triangle f = add_cap(box);
   const mesh::Point normal = mesh::area_vector(box, f).normalized();
-  const mesh::Point apex = (box.nodes[f[0]] + box.nodes[f[1]] + box.nodes[f[2]]) / 3.0 + 1e-3 * normal;
-  box.nodes.push_back(apex);
   const int p = box.node_count() - 1;
-  box.tets.push_back(oriented(box, {f[0], f[1], f[2], p}));
+  const mesh::Point apex = box.nodes[p];
   // A second tet on the apex: a tall one above the cap (not flat).
   box.nodes.push_back(apex + 0.5 * normal + 0.1 * (box.nodes[f[0]] - apex));
   box.tets.push_back(oriented(box, {f[0], f[1], p, box.node_count() - 1}));
@@ -98,12 +113,7 @@ TEST_CASE("An uncovered face takes no flat tag whose plane it is off", "[unit][m
   // off that plane, take the other tag, so the flat tag stays flat (the
   // remesher keeps a flat tag's nodes on its plane, a symmetry plane's
   // among them). Were both tags flat, the sliver would stay.
-  mesh::TetMesh m;
-  const double lift = 1e-3;
-  m.nodes = {{0, 0, 0}, {1, 1, 0}, {1, 0, lift}, {0, 1, lift}, {0.5, 0.5, -1}};
-  m.tets = {oriented(m, {0, 2, 1, 4}), oriented(m, {0, 1, 3, 4}), oriented(m, {0, 1, 2, 3})};
-  mesh::build_boundary(m);
-  m.boundary_tags.assign(m.boundary_faces.size(), 7); // the sides too: 7 is not flat
+  mesh::TetMesh m = sliver_on_two_tets(7); // the sides too: 7 is not flat
   for (std::size_t f = m.boundary_faces.size(); f-- > 0;)
     if (mesh::area_vector(m, m.boundary_faces[f]).z() > 0.0) {
       m.boundary_tags[f] = 9;
@@ -111,11 +121,5 @@ TEST_CASE("An uncovered face takes no flat tag whose plane it is off", "[unit][m
     }
 
   CHECK(mesh::peel_boundary_slivers(m, 0.05) == 1);
-  int top = 0;
-  for (std::size_t f = 0; f < m.boundary_faces.size(); ++f) {
-    if (mesh::area_vector(m, m.boundary_faces[f]).z() <= 0.0) continue;
-    CHECK(m.boundary_tags[f] == 7);
-    ++top;
-  }
-  CHECK(top == 2);
+  CHECK(top_faces_tagged(m, 7) == 2);
 }
