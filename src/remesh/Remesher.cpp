@@ -5,6 +5,7 @@
 #include "anvil/core/processes.h"
 #include "anvil/io/Checkpoint.h"
 #include "anvil/mesh/TetMesh.h"
+#include "anvil/mesh/manifold.h"
 #include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/die_feature_depth.h"
@@ -158,6 +159,8 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
                     "its worst element has quality %.3f, below %.3g (a third of remeshing.quality, or the old mesh's "
                     "worst)",
                     t.worst, floor);
+    else if (const std::string pinch = mesh::manifold_fault(t.mesh); !pinch.empty())
+      return "the new mesh is not a manifold: " + pinch;
     return std::string(text);
   };
   // A result whose worst element is below the trigger would be due again at
@@ -266,6 +269,11 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       if (flow_lines) fields.material.assign(part_material, part_material + 3 * range.node_count);
       std::optional<LocalRemesh> local =
           remesh_locally(scene, state, int(b), *why, std::move(fields), material_before[b], time_step, whole);
+      if (local)
+        if (const std::string pinch = mesh::manifold_fault(local->mesh); !pinch.empty()) {
+          whole = "the local remesh left a body that is not a manifold: " + pinch;
+          local.reset();
+        }
       if (local) {
         ranges.push_back(mesh::append(next, local->mesh));
         append_values(nodal, local->nodal.data(), local->nodal.size());

@@ -10,6 +10,7 @@
 #include "anvil/mesh/boundary_slivers.h"
 #include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/flat_tags.h"
+#include "anvil/mesh/manifold.h"
 #include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/quality.h"
@@ -135,9 +136,12 @@ std::vector<int> build(const mesh::TetMesh& body, double feature_angle, Subdomai
     if (patch[f] >= static_cast<int>(tag_of_patch.size())) tag_of_patch.resize(patch[f] + 1, 0);
     tag_of_patch[patch[f]] = body.boundary_tags[f];
   }
-  if (!CGAL::build_triangulation<Triangulation, false>(tr, points, cells, patch_of_facet, handles))
-    throw RunError("remeshing: CGAL cannot build a triangulation from the body's tets (is the body one "
-                   "piece without holes?)");
+  if (!CGAL::build_triangulation<Triangulation, false>(tr, points, cells, patch_of_facet, handles)) {
+    std::string why = mesh::manifold_fault(body);
+    if (why.empty()) why = mesh::fault(body); // an inverted tet breaks the orientation CGAL checks
+    throw RunError("remeshing: CGAL cannot build a triangulation from the body's tets (" +
+                   (why.empty() ? std::string("is the body one piece without holes?") : why) + ")");
+  }
   return tag_of_patch;
 }
 
