@@ -18,4 +18,16 @@ namespace anvil::mesh {
 /// none.
 std::string manifold_fault(const TetMesh& mesh);
 
+/// Cuts the pinches of `mesh` where a remesher left two parts of the body
+/// touching (CGAL across a flash thinner than its elements): around a
+/// boundary edge on four or more boundary faces, or a node whose boundary
+/// faces form more than one fan, the tets there fall into groups joined
+/// through faces at the edge or node; all but the group of largest volume
+/// are removed (a few tets at a thin fin's edge), with the nodes no tet
+/// uses then. The faces they uncover are tagged as the removed boundary
+/// face facing most the same way whose tag fits them (a flat tag only on its
+/// plane), else 0. Repeated while it cuts; a face in three tets is left.
+/// Returns how many tets it removed.
+int cut_pinches(TetMesh& mesh);
+
 } // namespace anvil::mesh
