@@ -269,11 +269,12 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       if (flow_lines) fields.material.assign(part_material, part_material + 3 * range.node_count);
       std::optional<LocalRemesh> local =
           remesh_locally(scene, state, int(b), *why, std::move(fields), material_before[b], time_step, whole);
-      if (local)
+      if (local) {
         if (const std::string pinch = mesh::manifold_fault(local->mesh); !pinch.empty()) {
           whole = "the local remesh left a body that is not a manifold: " + pinch;
           local.reset();
         }
+      }
       if (local) {
         ranges.push_back(mesh::append(next, local->mesh));
         append_values(nodal, local->nodal.data(), local->nodal.size());
