@@ -62,6 +62,34 @@ std::string fault(const TetMesh& mesh) {
   return {};
 }
 
+void remove_tets(TetMesh& mesh, const std::vector<char>& removed, const std::vector<Triangle>& tagged,
+                 const std::vector<int>& tags) {
+  std::vector<Tet> tets;
+  for (int e = 0; e < mesh.tet_count(); ++e)
+    if (!removed[e]) tets.push_back(mesh.tets[e]);
+  std::vector<int> number(mesh.nodes.size(), -1);
+  for (const Tet& t : tets)
+    for (int v : t)
+      number[v] = 0;
+  std::vector<Point> nodes;
+  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
+    if (number[n] == 0) number[n] = static_cast<int>(nodes.size()), nodes.push_back(mesh.nodes[n]);
+  for (Tet& t : tets)
+    for (int& v : t)
+      v = number[v];
+  std::vector<Triangle> kept_tagged;
+  std::vector<int> kept_tags;
+  for (std::size_t f = 0; f < tagged.size(); ++f) {
+    const Triangle& face = tagged[f];
+    if (number[face[0]] < 0 || number[face[1]] < 0 || number[face[2]] < 0) continue;
+    kept_tagged.push_back({number[face[0]], number[face[1]], number[face[2]]});
+    kept_tags.push_back(tags[f]);
+  }
+  mesh.nodes = std::move(nodes);
+  mesh.tets = std::move(tets);
+  build_boundary(mesh, kept_tagged, kept_tags);
+}
+
 void validate(const TetMesh& mesh, const std::string& source) {
   if (const std::string why = fault(mesh); !why.empty()) throw InputError(source + ": " + why);
 }

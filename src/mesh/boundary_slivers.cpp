@@ -37,7 +37,7 @@ int peel_once(TetMesh& mesh, double below) {
     for (int v : t)
       ++uses[v];
 
-  std::vector<char> removed(mesh.tets.size(), 0), touched(mesh.nodes.size(), 0), dropped(mesh.nodes.size(), 0);
+  std::vector<char> removed(mesh.tets.size(), 0), touched(mesh.nodes.size(), 0);
   std::vector<Triangle> tagged = mesh.boundary_faces;
   std::vector<int> tags = mesh.boundary_tags;
   tags.resize(tagged.size(), 0);
@@ -95,7 +95,6 @@ int peel_once(TetMesh& mesh, double below) {
       uncovered_tag[n_uncovered++] = tag;
     }
     if (!all_fit) continue;
-    if (apex >= 0) dropped[t[apex]] = 1;
     removed[e] = 1;
     for (int v : t)
       touched[v] = 1;
@@ -107,26 +106,7 @@ int peel_once(TetMesh& mesh, double below) {
   }
   if (count == 0) return 0;
 
-  std::vector<int> number(mesh.nodes.size(), -1);
-  std::vector<Point> nodes;
-  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
-    if (!dropped[n]) number[n] = static_cast<int>(nodes.size()), nodes.push_back(mesh.nodes[n]);
-  std::vector<Tet> tets;
-  for (int e = 0; e < mesh.tet_count(); ++e)
-    if (!removed[e])
-      tets.push_back(
-          {number[mesh.tets[e][0]], number[mesh.tets[e][1]], number[mesh.tets[e][2]], number[mesh.tets[e][3]]});
-  std::vector<Triangle> kept_tagged;
-  std::vector<int> kept_tags;
-  for (std::size_t f = 0; f < tagged.size(); ++f) {
-    const Triangle& face = tagged[f];
-    if (dropped[face[0]] || dropped[face[1]] || dropped[face[2]]) continue;
-    kept_tagged.push_back({number[face[0]], number[face[1]], number[face[2]]});
-    kept_tags.push_back(tags[f]);
-  }
-  mesh.nodes = std::move(nodes);
-  mesh.tets = std::move(tets);
-  build_boundary(mesh, kept_tagged, kept_tags);
+  remove_tets(mesh, removed, tagged, tags);
   return count;
 }
 

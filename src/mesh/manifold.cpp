@@ -127,11 +127,11 @@ void keep_largest_group(const TetMesh& mesh, const std::vector<int>& star, std::
     if (root(int(i)) != keep) remove[star[i]] = 1;
 }
 
-/// Removes the tets `remove` flags and the nodes no tet uses then. A face
+/// Removes the tets `remove` flags (mesh::remove_tets). A face
 /// they uncover takes the tag of the removed tet's boundary face that faces
 /// most the same way among those whose tag fits it (a flat tag only on its
 /// plane), else 0.
-void remove_tets(TetMesh& mesh, const std::vector<char>& remove) {
+void remove_with_tags(TetMesh& mesh, const std::vector<char>& remove) {
   std::vector<Triangle> tagged = mesh.boundary_faces;
   std::vector<int> tags = mesh.boundary_tags;
   tags.resize(tagged.size(), 0);
@@ -170,30 +170,7 @@ void remove_tets(TetMesh& mesh, const std::vector<char>& remove) {
       tags.push_back(tag);
     }
   }
-  std::vector<Tet> tets;
-  for (int e = 0; e < mesh.tet_count(); ++e)
-    if (!remove[e]) tets.push_back(mesh.tets[e]);
-  std::vector<int> number(mesh.nodes.size(), -1);
-  for (const Tet& t : tets)
-    for (int v : t)
-      number[v] = 0;
-  std::vector<Point> nodes;
-  for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
-    if (number[n] == 0) number[n] = static_cast<int>(nodes.size()), nodes.push_back(mesh.nodes[n]);
-  for (Tet& t : tets)
-    for (int& v : t)
-      v = number[v];
-  std::vector<Triangle> kept_tagged;
-  std::vector<int> kept_tags;
-  for (std::size_t f = 0; f < tagged.size(); ++f) {
-    const Triangle& face = tagged[f];
-    if (number[face[0]] < 0 || number[face[1]] < 0 || number[face[2]] < 0) continue;
-    kept_tagged.push_back({number[face[0]], number[face[1]], number[face[2]]});
-    kept_tags.push_back(tags[f]);
-  }
-  mesh.nodes = std::move(nodes);
-  mesh.tets = std::move(tets);
-  build_boundary(mesh, kept_tagged, kept_tags);
+  remove_tets(mesh, remove, tagged, tags);
 }
 
 } // namespace
@@ -238,7 +215,7 @@ int cut_pinches(TetMesh& mesh) {
       keep_largest_group(mesh, around[v], remove);
     const int now = static_cast<int>(std::count(remove.begin(), remove.end(), 1));
     if (now == 0 || now == mesh.tet_count()) break;
-    remove_tets(mesh, remove);
+    remove_with_tags(mesh, remove);
     removed += now;
   }
   return removed;

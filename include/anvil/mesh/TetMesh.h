@@ -90,6 +90,12 @@ MeshRange append(TetMesh& mesh, const TetMesh& part);
 /// The part of `mesh` that `range` names, renumbered from 0 (inverse of append).
 TetMesh extract(const TetMesh& mesh, const MeshRange& range);
 
+/// Removes the tets `removed` flags and the nodes no tet uses then (the
+/// others keep their order), and rebuilds the boundary with the tags of
+/// `tagged` (build_boundary; triangles on a dropped node are left out).
+void remove_tets(TetMesh& mesh, const std::vector<char>& removed, const std::vector<Triangle>& tagged,
+                 const std::vector<int>& tags);
+
 /// The mesh of `tets` (node indices into `nodes`) with only the nodes they
 /// use, numbered in their order of first use; no boundary.
 TetMesh tets_mesh(const std::vector<Point>& nodes, const std::vector<Tet>& tets);
