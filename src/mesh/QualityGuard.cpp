@@ -19,7 +19,7 @@ bool QualityGuard::move(TetMesh& mesh, int node, const Point& to, double floor) 
   const double lowest = std::min(worst_around(mesh, node), floor);
   const Point was = mesh.nodes[node];
   mesh.nodes[node] = to;
-  if (worst_around(mesh, node) >= lowest) return true;
+  if (const double worst = worst_around(mesh, node); worst >= lowest && worst > 0.0) return true;
   mesh.nodes[node] = was;
   return false;
 }

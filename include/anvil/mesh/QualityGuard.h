@@ -19,7 +19,9 @@ public:
   double worst_around(const TetMesh& mesh, int node) const;
 
   /// Moves `node` of `mesh` to `to` unless an element around it would end
-  /// worse than `floor` or than it is now, whichever is lower. Returns whether it moved.
+  /// worse than `floor` or than it is now, whichever is lower, or flat (a
+  /// node put onto a die plane that three nodes of its element lie in:
+  /// quality exactly 0). Returns whether it moved.
   bool move(TetMesh& mesh, int node, const Point& to, double floor) const;
 
 private:

@@ -25,3 +25,21 @@ TEST_CASE("A guarded move keeps the elements around the node", "[unit][mesh]") {
   CHECK(box.nodes[centre] == mesh::Point(1.05, 1.0, 1.0));
   CHECK(guard.worst_around(box, centre) >= 0.1);
 }
+
+TEST_CASE("A guarded move with floor 0 never leaves an element flat", "[unit][mesh]") {
+  // A contact node put back onto a die plane that the three other nodes of
+  // one of its elements lie in (the hot connecting rod at 9.6 mm): the
+  // element's volume would be exactly 0, which the increment refuses as an
+  // inversion; the node stays where it is.
+  mesh::TetMesh tet;
+  tet.nodes = {{0, 0, -0.5}, {1, 0, -0.5}, {0, 1, -0.5}, {0.3, 0.3, -0.8}};
+  tet.tets = {{0, 1, 2, 3}};
+  if (mesh::signed_volume(tet, 0) < 0.0) std::swap(tet.tets[0][0], tet.tets[0][1]);
+  mesh::QualityGuard guard(tet);
+  REQUIRE(guard.worst_around(tet, 3) > 0.1);
+  CHECK_FALSE(guard.move(tet, 3, {0.3, 0.3, -0.5}, 0.0));
+  CHECK(tet.nodes[3] == mesh::Point(0.3, 0.3, -0.8));
+  // Part of the way is fine at floor 0.
+  CHECK(guard.move(tet, 3, {0.3, 0.3, -0.6}, 0.0));
+  CHECK(guard.worst_around(tet, 3) > 0.0);
+}
