@@ -18,9 +18,6 @@ namespace {
 
 /// Layers of elements around the poor ones that a local remesh rebuilds too.
 constexpr int kRegionLayers = 2;
-/// The surface is mended where its triangles' normals differ by at most
-/// this (degrees): the surface's change is then a sliver of volume.
-constexpr double kFlatSurface = 20.0;
 /// A region larger than this share of a body is rebuilt whole.
 constexpr double kMostLocal = 0.5;
 /// CGAL splits edges longer than 4/3 of its length (with a margin): a region

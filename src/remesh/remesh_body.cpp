@@ -15,6 +15,7 @@
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/rebuild_region.h"
+#include "anvil/remesh/surface_mending.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_3/tet_soup_to_c3t3.h>
@@ -247,6 +248,13 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
   if (const int peeled = mesh::peel_boundary_slivers(out, kPeelShare * settings.quality_floor); peeled > 0)
     log::info("    remeshing: %d flat tets on creases of the surface taken off (volume %+.2e %%)", peeled,
               100.0 * (mesh::volume(out) / volume - 1.0));
+  // A flat tet the peel cannot take (all six edges on the surface: three of
+  // its nodes nearly in a line on a patch border CGAL keeps, as on the hot
+  // connecting rod's symmetry plane) is mended by a flip on the surface.
+  if (const SurfaceMending mended = mend_surface(out, {}, kPeelShare * settings.quality_floor, kFlatSurface);
+      mended.flips + mended.collapses > 0)
+    log::info("    remeshing: flat tets on the surface mended (%d edges flipped, %d collapsed; quality %.3g -> %.3g)",
+              mended.flips, mended.collapses, mended.worst_before, mended.worst_after);
   // CGAL can join the two faces of a fin thinner than its elements at an
   // edge or a node (the connecting rod's flash near closure, at any size).
   if (const double before = mesh::volume(out); const int cut = mesh::cut_pinches(out))

@@ -11,6 +11,10 @@
 
 namespace anvil::remesh {
 
+/// The surface is mended where its triangles' normals differ by at most
+/// this (degrees): the surface's change is then a sliver of volume.
+constexpr double kFlatSurface = 20.0;
+
 /// What mend_surface did.
 struct SurfaceMending {
   int flips = 0;              ///< surface edges flipped
