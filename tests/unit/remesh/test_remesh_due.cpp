@@ -1,13 +1,14 @@
-// When the time loop remeshes a body (remesh::remesh_due): poor elements,
-// every N increments, a die vertex sunk into the body, a die edge the last
-// remesh could not fit that has not sunk further, and the body's overlap
-// with the dies, alike; surface edges over a sunk die feature, and their split.
+// When the time loop remeshes a body (remesh::remesh_due): poor elements
+// (once a remesh has left one, only when it gets worse), every N increments, a die vertex sunk into the body, a die
+// edge the last remesh could not fit that has not sunk further, and the body's overlap with the dies, alike; surface
+// edges over a sunk die feature, and their split.
 #include "test_common.h"
 
 #include "anvil/core/Timers.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/Remesher.h"
 #include "anvil/remesh/die_feature_depth.h"
+#include "anvil/remesh/quality.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Scene.h"
 
@@ -61,6 +62,41 @@ TEST_CASE("A body is remeshed when an element is poor, and every N increments wh
   REQUIRE(due.size() == 1);
   CHECK(due[0].body == 0);
   CHECK(due[0].why.find("worst quality") == 0);
+}
+
+TEST_CASE("An element a remesh left below the quality floor asks for a remesh again only once it is a fifth worse",
+          "[unit][remesh]") {
+  Run r("cases/upsetting_75.yaml", {"bodies[].mesh.element_size=2"});
+  r.state.increment = 4;
+  const mesh::Tet& t = r.state.mesh.tets[0];
+  const mesh::Point opposite = (r.state.mesh.nodes[t[1]] + r.state.mesh.nodes[t[2]] + r.state.mesh.nodes[t[3]]) / 3.0;
+  const mesh::Point apex = r.state.mesh.nodes[t[0]];
+  // Element 1 flattened towards its opposite face, to a quality below the floor (0.15).
+  auto flatten = [&](double share) { r.state.mesh.nodes[t[0]] = opposite + share * (apex - opposite); };
+  flatten(0.06);
+  const double left = remesh::worst_quality(r.state.mesh); // element 1 or a neighbour
+  REQUIRE(left < 0.15);
+  REQUIRE(remesh::remesh_due(r.scene, r.state, kStep).size() == 1);
+
+  // The last remesh could do no better than this element: not due again for it …
+  scene::RemeshRecord record{};
+  record.body = 0;
+  record.worst_quality_after = left;
+  r.state.remeshes.push_back(record);
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
+  flatten(0.055);
+  REQUIRE(remesh::worst_quality(r.state.mesh) > 0.8 * left);
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
+  // … until it is a fifth worse than it was left.
+  flatten(0.04);
+  REQUIRE(remesh::worst_quality(r.state.mesh) < 0.8 * left);
+  const auto due = remesh::remesh_due(r.scene, r.state, kStep);
+  REQUIRE(due.size() == 1);
+  CHECK(due[0].why.find("worst quality") == 0);
+  // A remesh that left every element above the floor: the floor decides.
+  r.state.remeshes.back().worst_quality_after = 0.3;
+  flatten(0.055);
+  CHECK(remesh::remesh_due(r.scene, r.state, kStep).size() == 1);
 }
 
 TEST_CASE("A die vertex sunk into the body asks for a remesh, and once a remesh has left it in, only half a trigger "
