@@ -36,12 +36,6 @@ double quality_left_by_last_remesh(const scene::RunState& state, int b) {
   return left;
 }
 
-/// A remesh that could not lift the worst element above the quality floor
-/// (a flat tet CGAL keeps on a crease of the surface) is not redone until
-/// that element is this share worse: the hot connecting rod was remeshed
-/// whole at every increment from 8.2 mm on, 7 s each, for the same 0.069.
-constexpr double kQualityAgain = 0.8;
-
 /// A die trigger on `value` (a die vertex's depth, the body's overlap with
 /// the dies): above `trigger`, and half a trigger beyond what the last remesh
 /// left. A die edge the remesh cannot fit sinks in again at once, and the
@@ -78,8 +72,8 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
                 body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
                 q.predicted_worst);
     char why[160] = "";
-    const double left = quality_left_by_last_remesh(state, int(b));
-    const bool poor = q.worst < (left < spec.quality ? kQualityAgain * left : spec.quality);
+    const double quality_left = quality_left_by_last_remesh(state, int(b));
+    const bool poor = q.worst < (quality_left < spec.quality ? kQualityAgain * quality_left : spec.quality);
     // A local remesh may do for poor elements and for a die corner (its
     // region's surface rebuilt); a periodic remesh takes the whole body.
     bool local = spec.local && (poor || q.predicted_worst <= 0.0);

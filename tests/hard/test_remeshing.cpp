@@ -5,6 +5,7 @@
 
 #include "anvil/core/log.h"
 #include "anvil/mesh/tet_geometry.h"
+#include "anvil/remesh/remesh_due.h"
 #include "run_outputs.h"
 
 #include <algorithm>
@@ -32,20 +33,27 @@ RemeshedRun run_remeshed(const std::string& case_file, const std::string& name,
 }
 
 /// To the final stroke without an inverted element; every remesh keeps the
-/// volume (below 0.1 % per remesh) and ∫ε̄ dV (within 2 %); a
-/// remesh for quality improves it.
+/// volume (below 0.1 % per remesh) and ∫ε̄ dV (within 2 %); a remesh for
+/// quality improves it (one below the floor, or below kQualityAgain × what
+/// the last remesh left when that was below the floor: remesh_due; another
+/// trigger may come first while an element the last remesh left waits).
 void check_remeshes_keep_volume_and_strain(const RemeshedRun& run) {
   CHECK(run.end.dies[0].stroke == Approx(run.c.time.final_stroke).epsilon(1e-9));
   for (int e = 0; e < run.end.mesh.tet_count(); ++e)
     REQUIRE(mesh::quality(run.end.mesh, e) > 0.0);
   REQUIRE(run.end.remeshes.size() >= 1);
+  const double floor = run.c.remeshing.quality;
+  double left = 1.0; // the worst quality the last remesh left
   for (const scene::RemeshRecord& r : run.end.remeshes) {
-    INFO("remesh after increment " << r.increment);
+    INFO("remesh after increment " << r.increment << ": worst quality " << r.worst_quality_before << " -> "
+                                   << r.worst_quality_after);
     CHECK(std::abs(r.volume_change) < 1e-3);
     REQUIRE(std::isfinite(r.material_change)); // the mesh less its overlap with the dies, put-back included
     CHECK(std::abs(r.material_change) < 1e-3);
     CHECK(std::abs(r.strain_integral_change) < 0.02);
-    if (r.worst_quality_before < run.c.remeshing.quality) CHECK(r.worst_quality_after > r.worst_quality_before);
+    if (r.worst_quality_before < (left < floor ? remesh::kQualityAgain * left : floor))
+      CHECK(r.worst_quality_after > r.worst_quality_before);
+    left = r.worst_quality_after;
   }
 }
 
@@ -124,13 +132,14 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
 }
 
 // The aim for a remesh's load jump at equal geometry is 3 %; this case is
-// bounded above its measured worst instead, so that a regression fails:
-// 7.2 % for the jump in this one-process run (8.2 % on two processes,
-// docs/remeshing.md's cases table), at the whole remesh that puts back onto
-// the dies the material their fillets had sunk into, 1 % of the volume; the
-// trend just after a remesh, 6.9 % when its bound was set (each remesh's
-// mesh, and so its jump, changes with any change to the flow's round-off; a
-// run is reproducible on a given number of processes). The jump is the
+// bounded above its measured worst instead, so that a regression fails.
+// The worst jump comes at a whole remesh that puts back onto the dies the
+// material their fillets had sunk into (0.3-1 % of the volume), and moves
+// with the flow's round-off (each remesh's mesh changes with it; a run is
+// reproducible on a given number of processes): 3.6 % in this one-process
+// run, 5.5 % on two processes, 6.8 % on one with MUMPS (Newton's answer
+// differs within its tolerance), bounded at 8 %; the trend just after a
+// remesh, 4.1 %, 5.8 % and 3.7 %, bounded at 7 %. The jump is the
 // difference between two meshes of one body at h 1 mm (two fresh meshes
 // differ by 1.5-4.9 % between themselves); finer meshes lower
 // it at a cost beyond the suite's (docs/remeshing.md). Full stroke is asserted: a node the
@@ -142,7 +151,7 @@ TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshe
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume(run);
   check_max_strain(run);
-  check_load_jump(run, 0.10);
+  check_load_jump(run, 0.08);
   check_load_trend(run, "upper", 0.07);
 }
 
@@ -168,10 +177,11 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
 // edges (a whole remesh takes off the flat tets CGAL leaves on them,
 // mesh/boundary_slivers.h). Solved by MUMPS: FGMRES needs about 70 Krylov
 // iterations a Newton iteration on this part, twice the time on one
-// process; the run to closure, over half an hour, is beyond the tier (on
-// one process it stops at 9.69 mm: cases/conrod.yaml). The load jump at
-// equal geometry is bounded above its measured worst, -5.7 % at a whole
-// remesh, as for the closed-die forging above.
+// process; the run to closure, 41 min on one process (cases/conrod.yaml),
+// is beyond the tier. The load jump at equal geometry is bounded above its
+// measured worst, at a whole remesh, as for the closed-die forging above:
+// 4.4 % in this run, 3.4 % on two processes, 4.4 % with FGMRES; bounded at
+// 6 %, as an earlier variant reached 5.7 %.
 TEST_CASE("The connecting rod to 3.6 mm: every remesh improves its worst element and keeps volume and strain integral",
           "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/conrod.yaml", "anvil_hard_conrod",
@@ -179,5 +189,5 @@ TEST_CASE("The connecting rod to 3.6 mm: every remesh improves its worst element
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume(run);
   check_max_strain(run);
-  check_load_jump(run, 0.07);
+  check_load_jump(run, 0.06);
 }

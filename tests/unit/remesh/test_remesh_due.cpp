@@ -9,6 +9,7 @@
 #include "anvil/remesh/Remesher.h"
 #include "anvil/remesh/die_feature_depth.h"
 #include "anvil/remesh/quality.h"
+#include "anvil/remesh/remesh_due.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Scene.h"
 
@@ -85,11 +86,11 @@ TEST_CASE("An element a remesh left below the quality floor asks for a remesh ag
   r.state.remeshes.push_back(record);
   CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
   flatten(0.055);
-  REQUIRE(remesh::worst_quality(r.state.mesh) > 0.8 * left);
+  REQUIRE(remesh::worst_quality(r.state.mesh) > remesh::kQualityAgain * left);
   CHECK(remesh::remesh_due(r.scene, r.state, kStep).empty());
   // … until it is a fifth worse than it was left.
   flatten(0.04);
-  REQUIRE(remesh::worst_quality(r.state.mesh) < 0.8 * left);
+  REQUIRE(remesh::worst_quality(r.state.mesh) < remesh::kQualityAgain * left);
   const auto due = remesh::remesh_due(r.scene, r.state, kStep);
   REQUIRE(due.size() == 1);
   CHECK(due[0].why.find("worst quality") == 0);
