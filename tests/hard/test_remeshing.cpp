@@ -177,8 +177,8 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
 // edges (a whole remesh takes off the flat tets CGAL leaves on them,
 // mesh/boundary_slivers.h). Solved by MUMPS: FGMRES needs about 70 Krylov
 // iterations a Newton iteration on this part, twice the time on one
-// process; the run to closure, 41 min on one process (cases/conrod.yaml),
-// is beyond the tier. The load jump at equal geometry is bounded above its
+// process; the run to closure, over half an hour on one process
+// (cases/conrod.yaml), is beyond the tier. The load jump at equal geometry is bounded above its
 // measured worst, at a whole remesh, as for the closed-die forging above:
 // 4.4 % in this run, 3.4 % on two processes, 4.4 % with FGMRES; bounded at
 // 6 %, as an earlier variant reached 5.7 %.
