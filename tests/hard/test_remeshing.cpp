@@ -178,10 +178,10 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
 // mesh/boundary_slivers.h). Solved by MUMPS: FGMRES needs about 70 Krylov
 // iterations a Newton iteration on this part, twice the time on one
 // process; the run to closure, over half an hour on one process
-// (cases/conrod.yaml), is beyond the tier. The load jump at equal geometry is bounded above its
-// measured worst, at a whole remesh, as for the closed-die forging above:
-// 4.4 % in this run, 3.4 % on two processes, 4.4 % with FGMRES; bounded at
-// 6 %, as an earlier variant reached 5.7 %.
+// (cases/conrod.yaml), is beyond the tier. The load jump at equal geometry
+// is bounded above its measured worst, at a whole remesh, as for the
+// closed-die forging above: 4.4 % in this run, 3.4 % on two processes,
+// 4.4 % with FGMRES; bounded at 6 %, as an earlier variant reached 5.7 %.
 TEST_CASE("The connecting rod to 3.6 mm: every remesh improves its worst element and keeps volume and strain integral",
           "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/conrod.yaml", "anvil_hard_conrod",
