@@ -250,7 +250,8 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
               100.0 * (mesh::volume(out) / volume - 1.0));
   // A flat tet the peel cannot take (all six edges on the surface: three of
   // its nodes nearly in a line on a patch border CGAL keeps, as on the hot
-  // connecting rod's symmetry plane) is mended by a flip on the surface.
+  // connecting rod's symmetry plane) is mended on the surface instead, by a
+  // flip or a collapse of a surface edge.
   if (const SurfaceMending mended = mend_surface(out, {}, kPeelShare * settings.quality_floor, kFlatSurface);
       mended.flips + mended.collapses > 0)
     log::info("    remeshing: flat tets on the surface mended (%d edges flipped, %d collapsed; quality %.3g -> %.3g)",

@@ -73,13 +73,17 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
                 q.predicted_worst);
     char why[160] = "";
     const double quality_left = quality_left_by_last_remesh(state, int(b));
-    const bool poor = q.worst < (quality_left < spec.quality ? kQualityAgain * quality_left : spec.quality);
+    const bool waits = quality_left < spec.quality; // the last remesh left an element below the floor
+    const bool poor = q.worst < (waits ? kQualityAgain * quality_left : spec.quality);
     // A local remesh may do for poor elements and for a die corner (its
     // region's surface rebuilt); a periodic remesh takes the whole body.
     bool local = spec.local && (poor || q.predicted_worst <= 0.0);
     std::vector<mesh::Point> corners;
     std::vector<SunkEdge> sunk_edges;
-    if (poor)
+    if (poor && waits)
+      std::snprintf(why, sizeof why, "worst quality %.3f below %.3g, %g of the %.3f the last remesh left", q.worst,
+                    kQualityAgain * quality_left, kQualityAgain, quality_left);
+    else if (poor)
       std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
     else if (q.predicted_worst <= 0.0)
       std::snprintf(why, sizeof why, "element %d would invert in the next increment", q.predicted_tet + 1);

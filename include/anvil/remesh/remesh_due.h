@@ -29,15 +29,15 @@ struct RemeshDue {
 
 /// A remesh that could not lift the worst element above remeshing.quality
 /// (a flat tet CGAL keeps on a crease of the surface) is not redone until
-/// that element is this share of what it left: the hot connecting rod was
-/// remeshed whole at nearly every increment from 8.2 mm on, 4-7 s each, for
-/// the same 0.06-0.09.
+/// the worst element is below this share of what it left: the hot
+/// connecting rod was remeshed whole at nearly every increment from 8.2 mm
+/// on, 4-7 s each, for the same 0.06-0.09.
 constexpr double kQualityAgain = 0.8;
 
 /// The bodies of `state` to remesh after an increment of `dt` (s), by the
-/// case's triggers: worst quality below remeshing.quality (or below
-/// kQualityAgain × what the last remesh left, when it left it below), an element that
-/// would invert in a next increment alike, every N increments, a die vertex
+/// case's triggers: worst quality below remeshing.quality (below
+/// kQualityAgain × what the last remesh left, when that was lower), an
+/// element that would invert in a next increment alike, every N increments, a die vertex
 /// deeper than die_penetration × the element size inside the body, more than
 /// die_overlap × its initial volume inside the dies (each of the last two
 /// again only once it has grown by half its trigger beyond what the body's
