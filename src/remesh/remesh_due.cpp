@@ -12,27 +12,28 @@
 namespace anvil::remesh {
 namespace {
 
-/// What the last remesh that fitted body `b`'s surface to the dies left of
-/// them inside it (0 before any, or where an older checkpoint did not keep
-/// it). A remesh that kept the surface is no new start: the overlap it
-/// leaves is what the flow pressed in since the last fit, and taking it as
-/// the new start let the overlap grow to 2.4 % of the body between fits.
+/// What the last remesh of body `b` left: its worst element (1 before
+/// any), and what the last remesh that fitted the surface to the dies left
+/// of them inside it (0 before any, or where an older checkpoint did not
+/// keep it). A remesh that kept the surface is no new start for the dies:
+/// the overlap it leaves is what the flow pressed in since the last fit,
+/// and taking it as the new start let the overlap grow to 2.4 % of the
+/// body between fits.
 struct LeftByRemesh {
-  double die_depth = 0.0;   ///< mm, its deepest die vertex
-  double die_overlap = 0.0; ///< mm³, its overlap with the dies
+  double worst_quality = 1.0; ///< of the last remesh, whatever it was
+  double die_depth = 0.0;     ///< mm, the deepest die vertex the last fit left
+  double die_overlap = 0.0;   ///< mm³, the overlap with the dies the last fit left
 };
 LeftByRemesh left_by_last_remesh(const scene::RunState& state, int b) {
   LeftByRemesh left;
-  for (const scene::RemeshRecord& r : state.remeshes)
-    if (r.body == b && !std::isnan(r.die_overlap_after)) left = {r.die_depth_after, r.die_overlap_after};
-  return left;
-}
-
-/// The worst element quality the last remesh of body `b` left (1 before any).
-double quality_left_by_last_remesh(const scene::RunState& state, int b) {
-  double left = 1.0;
-  for (const scene::RemeshRecord& r : state.remeshes)
-    if (r.body == b) left = r.worst_quality_after;
+  for (const scene::RemeshRecord& r : state.remeshes) {
+    if (r.body != b) continue;
+    left.worst_quality = r.worst_quality_after;
+    if (!std::isnan(r.die_overlap_after)) {
+      left.die_depth = r.die_depth_after;
+      left.die_overlap = r.die_overlap_after;
+    }
+  }
   return left;
 }
 
@@ -59,6 +60,10 @@ constexpr double kShortestSplit = 0.6;
 
 } // namespace
 
+double quality_due_below(double left, double floor) {
+  return left < floor ? kQualityAgain * left : floor;
+}
+
 std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt) {
   const scene::RemeshSpec& spec = scene.input.remeshing;
   std::vector<RemeshDue> due;
@@ -72,17 +77,17 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
                 body.name.c_str(), q.worst, q.worst_tet + 1, at.x(), at.y(), at.z(), q.below, spec.quality,
                 q.predicted_worst);
     char why[160] = "";
-    const double quality_left = quality_left_by_last_remesh(state, int(b));
-    const bool waits = quality_left < spec.quality; // the last remesh left an element below the floor
-    const bool poor = q.worst < (waits ? kQualityAgain * quality_left : spec.quality);
+    const LeftByRemesh left = left_by_last_remesh(state, int(b));
+    const double quality_trigger = quality_due_below(left.worst_quality, spec.quality);
+    const bool poor = q.worst < quality_trigger;
     // A local remesh may do for poor elements and for a die corner (its
     // region's surface rebuilt); a periodic remesh takes the whole body.
     bool local = spec.local && (poor || q.predicted_worst <= 0.0);
     std::vector<mesh::Point> corners;
     std::vector<SunkEdge> sunk_edges;
-    if (poor && waits)
+    if (poor && quality_trigger < spec.quality)
       std::snprintf(why, sizeof why, "worst quality %.3f below %.3g, %g of the %.3f the last remesh left", q.worst,
-                    kQualityAgain * quality_left, kQualityAgain, quality_left);
+                    quality_trigger, kQualityAgain, left.worst_quality);
     else if (poor)
       std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
     else if (q.predicted_worst <= 0.0)
@@ -93,7 +98,6 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
       if (die_vertices.empty()) die_vertices = dies_in_place(scene, state); // the scene has dies here
       const std::vector<SunkVertex> sunk = sunk_die_vertices(state.mesh, state.bodies[b], die_vertices);
       const std::vector<DieFeature> inside = deepest_per_die(sunk, scene.dies.size());
-      const LeftByRemesh left = left_by_last_remesh(state, int(b));
       const double depth_trigger = spec.die_penetration * body.remesh_size;
       for (std::size_t d = 0; d < scene.dies.size() && !why[0]; ++d)
         if (due_again(inside[d].depth, depth_trigger, left.die_depth)) {

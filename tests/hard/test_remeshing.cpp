@@ -34,15 +34,13 @@ RemeshedRun run_remeshed(const std::string& case_file, const std::string& name,
 
 /// To the final stroke without an inverted element; every remesh keeps the
 /// volume (below 0.1 % per remesh) and ∫ε̄ dV (within 2 %); a remesh for
-/// quality improves it (one below the floor, or below kQualityAgain × what
-/// the last remesh left when that was below the floor: remesh_due; another
-/// trigger may come first while an element the last remesh left waits).
+/// quality improves it (remesh::quality_due_below: another trigger may come
+/// first while an element the last remesh left below the floor waits).
 void check_remeshes_keep_volume_and_strain(const RemeshedRun& run) {
   CHECK(run.end.dies[0].stroke == Approx(run.c.time.final_stroke).epsilon(1e-9));
   for (int e = 0; e < run.end.mesh.tet_count(); ++e)
     REQUIRE(mesh::quality(run.end.mesh, e) > 0.0);
   REQUIRE(run.end.remeshes.size() >= 1);
-  const double floor = run.c.remeshing.quality;
   double left = 1.0; // the worst quality the last remesh left
   for (const scene::RemeshRecord& r : run.end.remeshes) {
     INFO("remesh after increment " << r.increment << ": worst quality " << r.worst_quality_before << " -> "
@@ -51,7 +49,7 @@ void check_remeshes_keep_volume_and_strain(const RemeshedRun& run) {
     REQUIRE(std::isfinite(r.material_change)); // the mesh less its overlap with the dies, put-back included
     CHECK(std::abs(r.material_change) < 1e-3);
     CHECK(std::abs(r.strain_integral_change) < 0.02);
-    if (r.worst_quality_before < (left < floor ? remesh::kQualityAgain * left : floor))
+    if (r.worst_quality_before < remesh::quality_due_below(left, run.c.remeshing.quality))
       CHECK(r.worst_quality_after > r.worst_quality_before);
     left = r.worst_quality_after;
   }

@@ -34,6 +34,11 @@ struct RemeshDue {
 /// on, 4-7 s each, for the same 0.06-0.09.
 constexpr double kQualityAgain = 0.8;
 
+/// The worst quality below which a body is due for a remesh for quality:
+/// `floor` (remeshing.quality), or kQualityAgain × `left`, the worst the
+/// body's last remesh left, when that is below the floor.
+double quality_due_below(double left, double floor);
+
 /// The bodies of `state` to remesh after an increment of `dt` (s), by the
 /// case's triggers: worst quality below remeshing.quality (below
 /// kQualityAgain × what the last remesh left, when that was lower), an
