@@ -224,9 +224,9 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     material_before[b] = mesh::volume(state.mesh, state.bodies[b]) - inside_before[b];
   const std::size_t first_record = state.remeshes.size();
   // Per record from first_record: whether the remesh fitted the body's
-  // surface to the dies (a whole remesh, a local one that rebuilt its
-  // region's surface); one that kept the surface leaves the dies' triggers
-  // to the last fit (remesh_due).
+  // surface to the dies (a whole remesh, a local one around sunk die
+  // corners or edges); another leaves the dies' triggers to the last fit
+  // (remesh_due).
   std::vector<char> fitted;
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const auto start = std::chrono::steady_clock::now();
@@ -307,7 +307,10 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
           state.volume.remeshing += volume_after - volume_before; // the surface's mending
         }
         state.remeshes.push_back(record);
-        fitted.push_back(!kept_surface);
+        // A region rebuilt for its poor elements fits its own surface, not
+        // the overlap elsewhere: counted as a fit, it would put off the
+        // whole remesh that puts that overlap back.
+        fitted.push_back(!kept_surface && (!why->die_corners.empty() || !why->sunk_edges.empty()));
         if (!why->sunk_edges.empty())
           log::info("  remesh '%s' (%s): %d elements split, their new surface nodes put onto the dies, the rest "
                     "kept; %d -> %d nodes; worst quality %.3f -> %.3f; %.2f s",

@@ -448,9 +448,12 @@ const std::vector<KeySpec>& case_schema() {
               0, kInf, true),
         with_default(key("remeshing.local", T::boolean,
                          "a quality trigger rebuilds only the poor elements and two layers around them, the rest of "
-                         "the body and its whole surface kept (the contact surface stays on the dies); the whole body "
-                         "is remeshed when that region is over half of it, when the rebuilt elements stay below "
-                         "remeshing.quality (the surface holds them), and for the periodic and die-corner triggers"),
+                         "the body and its whole surface kept (the contact surface stays on the dies); when the "
+                         "rebuilt elements stay below remeshing.quality (the surface holds them), the region is "
+                         "rebuilt again with its part of the surface, its contact nodes held (not with "
+                         "remeshing.split_sunk_edges); the whole body is "
+                         "remeshed when that region is over half of it, when that too stays below, and for the "
+                         "periodic and overlap triggers"),
                      "true"),
         with_default(key("remeshing.split_sunk_edges", T::boolean,
                          "after each increment, split the boundary edges whose midpoint lies over a tenth of an "
