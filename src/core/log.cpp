@@ -9,11 +9,11 @@ namespace {
 std::FILE* mirror = nullptr;
 bool quiet_terminal = false;
 bool verbose_terminal = false;
+/// This thread's Holding target, if any.
+thread_local std::vector<HeldLine>* held = nullptr;
 
-void write(bool to_terminal, const char* format, va_list args) {
+void write_line(bool to_terminal, const char* line) {
   if (!processes::root()) return; // one log per run: rank 0's
-  char line[2048];
-  std::vsnprintf(line, sizeof line, format, args);
   if (to_terminal && !quiet_terminal) {
     std::fputs(line, stdout);
     std::fputc('\n', stdout);
@@ -23,6 +23,15 @@ void write(bool to_terminal, const char* format, va_list args) {
     std::fputs(line, mirror);
     std::fputc('\n', mirror);
   }
+}
+
+void write(bool to_terminal, const char* format, va_list args) {
+  char line[2048];
+  std::vsnprintf(line, sizeof line, format, args);
+  if (held)
+    held->push_back({to_terminal, line});
+  else
+    write_line(to_terminal, line);
 }
 
 } // namespace
@@ -58,6 +67,19 @@ void detail(const char* format, ...) {
   va_start(args, format);
   write(verbose_terminal, format, args);
   va_end(args);
+}
+
+Holding::Holding(std::vector<HeldLine>& into) : before_(held) {
+  held = &into;
+}
+
+Holding::~Holding() {
+  held = before_;
+}
+
+void write_held(const std::vector<HeldLine>& lines) {
+  for (const HeldLine& line : lines)
+    write_line(line.terminal, line.text.c_str());
 }
 
 } // namespace anvil::log

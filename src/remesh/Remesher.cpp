@@ -22,6 +22,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdio>
+#include <future>
 #include <mutex>
 #include <optional>
 #include <stop_token>
@@ -37,9 +38,10 @@ struct Remeshed {
   double edge_length = 0.0; ///< mm
   double worst = 0.0;       ///< worst quality of `mesh`
   PutBack put_back;
-  double volume_put_back = 0.0; ///< mm³, of `mesh` after the put-back, before keep_material
-  double given_back = 0.0;      ///< mm, keep_material's move of the free surface
-  std::string failed;           ///< why CGAL's mesh could not be made or used; empty when it was
+  double volume_put_back = 0.0;   ///< mm³, of `mesh` after the put-back, before keep_material
+  double given_back = 0.0;        ///< mm, keep_material's move of the free surface
+  std::string failed;             ///< why CGAL's mesh could not be made or used; empty when it was
+  std::vector<log::HeldLine> log; ///< what making it logged, written when the try is taken up
 };
 
 /// A remesh may not change the body's volume by more than this before the
@@ -128,6 +130,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
       settings.size = [&size_field, s = coarsen * scale](const mesh::Point& x) { return size_field(x, s); };
     }
     Remeshed t;
+    const log::Holding holding(t.log);
     t.edge_length = settings.edge_length;
     try {
       t.remeshed = remesh_body(part, settings);
@@ -174,18 +177,33 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
       {1.0, spec.feature_angle}, {0.95, spec.feature_angle}, {0.9, spec.feature_angle}};
   if (const double wider = std::min(2.0 * spec.feature_angle, kWidestFeatureAngle); wider > spec.feature_angle)
     tries.emplace_back(1.0, wider);
+  // The tries do not depend on each other: as many run at once as this
+  // process has cores, and they are taken up one after the other as if made
+  // so, which gives the same mesh on any number of cores.
+  const std::size_t at_once = std::max(1, processes::available_cores());
   std::optional<Remeshed> best;
-  for (const auto& [scale, angle] : tries) {
-    if (best && (best->worst >= spec.quality || std::chrono::steady_clock::now() > deadline)) break;
-    Remeshed again = make(scale, angle);
-    const std::string why = fault(again);
-    if (scale != 1.0 || angle != spec.feature_angle || !why.empty())
-      log::info("    remesh of '%s' with h %.3g mm, feature angle %.0f deg: worst quality %.3f%s%s", body.name.c_str(),
-                again.edge_length, angle, again.worst, why.empty() ? "" : "; not taken: ", why.c_str());
-    if (why.empty() && (!best || again.worst > best->worst))
-      best = std::move(again);
-    else if (!best)
-      refused = why;
+  auto done = [&] { return best && (best->worst >= spec.quality || std::chrono::steady_clock::now() > deadline); };
+  for (std::size_t first = 0; first < tries.size() && !done(); first += at_once) {
+    const std::size_t end = std::min(tries.size(), first + at_once);
+    std::vector<std::future<Remeshed>> beside;
+    for (std::size_t k = first + 1; k < end; ++k)
+      beside.push_back(
+          std::async(std::launch::async, [&make, &tries, k] { return make(tries[k].first, tries[k].second); }));
+    Remeshed own = make(tries[first].first, tries[first].second);
+    for (std::size_t k = first; k < end && !(k > first && done()); ++k) {
+      const auto& [scale, angle] = tries[k];
+      Remeshed again = k == first ? std::move(own) : beside[k - first - 1].get();
+      log::write_held(again.log);
+      const std::string why = fault(again);
+      if (scale != 1.0 || angle != spec.feature_angle || !why.empty())
+        log::info("    remesh of '%s' with h %.3g mm, feature angle %.0f deg: worst quality %.3f%s%s",
+                  body.name.c_str(), again.edge_length, angle, again.worst,
+                  why.empty() ? "" : "; not taken: ", why.c_str());
+      if (why.empty() && (!best || again.worst > best->worst))
+        best = std::move(again);
+      else if (!best)
+        refused = why;
+    }
   }
   return best;
 }

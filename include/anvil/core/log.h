@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace anvil::log {
 
@@ -20,5 +21,29 @@ void info(const char* format, ...) __attribute__((format(printf, 1, 2)));
 /// A line for the file, and for the terminal only when verbose (Newton
 /// iterations, per-increment mesh quality).
 void detail(const char* format, ...) __attribute__((format(printf, 1, 2)));
+
+/// A line held back (Holding) and whether it goes to the terminal.
+struct HeldLine {
+  bool terminal = true;
+  std::string text;
+};
+
+/// While alive, the lines the constructing thread logs go into `into`
+/// instead of out: tasks run side by side write their lines afterwards, one
+/// task after the other (write_held), in the same order on any number of
+/// threads.
+class Holding {
+public:
+  explicit Holding(std::vector<HeldLine>& into);
+  ~Holding();
+  Holding(const Holding&) = delete;
+  Holding& operator=(const Holding&) = delete;
+
+private:
+  std::vector<HeldLine>* before_;
+};
+
+/// Writes lines a Holding held.
+void write_held(const std::vector<HeldLine>& lines);
 
 } // namespace anvil::log
