@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <tbb/global_control.h>
 #include <unistd.h>
 #include <vector>
 
@@ -188,7 +189,10 @@ int processes_wanted(const std::string& option) {
 int run_on_processes(int processes, int argc, char** argv) {
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  std::vector<std::string> command = {"mpirun", "-q", "-n", std::to_string(processes)};
+  // Not bound to a core each: rank 0 remeshes alone while the others wait
+  // asleep, and runs its remesh's tries on their cores too (each process's
+  // own threads are limited to its share: processes::threads_per_process).
+  std::vector<std::string> command = {"mpirun", "-q", "-n", std::to_string(processes), "--bind-to", "none"};
   // More processes than cores share them (mpirun refuses otherwise).
   if (processes > anvil::processes::available_cores()) command.emplace_back("--oversubscribe");
   command.push_back(error ? std::string(argv[0]) : self.string());
@@ -304,6 +308,8 @@ int main(int argc, char** argv) {
     return report(e, true);
   }
   anvil::interrupt::install(); // after PETSc, whose own handlers it replaces
+  const tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                                    static_cast<std::size_t>(anvil::processes::threads_per_process()));
   int code = 0;
   std::string picture_directory;
   bool picture_mirror = false;

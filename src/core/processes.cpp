@@ -97,6 +97,20 @@ void on_root(const std::function<void()>& work) {
   });
 }
 
+namespace {
+/// Waits for `request`, asleep between tests: an MPI wait polls and keeps
+/// its core busy. False when `deadline` passes first.
+bool wait_asleep(MPI_Request& request, std::chrono::steady_clock::time_point deadline, std::chrono::milliseconds nap) {
+  for (;;) {
+    int done = 0;
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return true;
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(nap);
+  }
+}
+} // namespace
+
 bool on_root_answer(const std::function<bool()>& work) {
   if (count() == 1) return work();
   // Outcome: 'y' or 'n' answered, 'i' InputError, 'r' RunError, then the message.
@@ -114,6 +128,11 @@ bool on_root_answer(const std::function<bool()>& work) {
       outcome = std::string("r") + e.what();
     }
   }
+  // The others wait asleep, leaving their cores to rank 0's work (a
+  // remesh's tries run side by side on the cores rank 0 may use).
+  MPI_Request arrived;
+  MPI_Ibarrier(MPI_COMM_WORLD, &arrived);
+  wait_asleep(arrived, std::chrono::steady_clock::time_point::max(), std::chrono::milliseconds(1));
   broadcast(outcome);
   if (outcome[0] == 'i') throw InputError(outcome.substr(1));
   if (outcome[0] == 'r') throw RunError(outcome.substr(1));
@@ -124,14 +143,10 @@ bool all_ended(double seconds) {
   if (count() == 1) return true;
   MPI_Request request;
   MPI_Ibarrier(MPI_COMM_WORLD, &request);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  for (;;) {
-    int done = 0;
-    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-    if (done) return true;
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+  const auto deadline =
+      std::chrono::steady_clock::now() +
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+  return wait_asleep(request, deadline, std::chrono::milliseconds(5));
 }
 
 void abort_all(int code) {
@@ -151,6 +166,16 @@ int available_cores() {
   CPU_ZERO(&set);
   if (sched_getaffinity(0, sizeof set, &set) != 0) return 1;
   return std::max(1, CPU_COUNT(&set));
+}
+
+int threads_per_process() {
+  if (count() == 1) return available_cores();
+  MPI_Comm here;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &here);
+  int sharing = 1;
+  MPI_Comm_size(here, &sharing);
+  MPI_Comm_free(&here);
+  return std::max(1, available_cores() / sharing);
 }
 
 } // namespace anvil::processes

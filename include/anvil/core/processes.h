@@ -61,5 +61,8 @@ bool under_launcher();
 /// The cores this process may run on (its CPU affinity): the processes a
 /// run uses when the command line and ANVIL_PROCESSES say nothing.
 int available_cores();
+/// Threads each process may run at once (TBB's assembly): the cores it
+/// may run on shared among the run's processes on its machine, at least one.
+int threads_per_process();
 
 } // namespace anvil::processes
