@@ -318,31 +318,34 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     why_not = text;
     return false;
   };
-  // Poor elements are rebuilt inside the surface (the contact surface
-  // stays where it is); a die corner needs new surface nodes around it,
-  // and so does a region whose surface holds its poor elements: there the
-  // region's surface is rebuilt with its contact nodes pinned (in the 75 %
-  // upsetting, a per mille of load where a whole remesh moved it 3 %).
-  // Not where sunk edges are split: the nodes the splits add stay until a
-  // whole remesh resamples the surface at the body's size, and each whole
-  // remesh put off lets more of them gather for the next one to drop (the
-  // connecting rod's worst jump went from 4.4 to 6.7 %).
-  const bool for_die_corners = !due.die_corners.empty();
-  const bool done = !for_die_corners && rebuild(RegionSurface::kept);
-  if (!done && !for_die_corners && spec.split_sunk_edges) return std::nullopt;
-  if (!done) {
-    // CGAL would split the border's edges longer than 4/3 of its length:
-    // they are bisected first, on both sides (the kept tets keep their
-    // nodes and shape, their fields exactly). A kept tet the bisection
-    // leaves below the trigger joins the region.
+  // The region rebuilt with its part of the surface, its contact nodes
+  // pinned. CGAL would split the border's edges longer than 4/3 of its
+  // length: they are bisected first, on both sides (the kept tets keep
+  // their nodes and shape, their fields exactly); a kept tet the bisection
+  // leaves below the trigger joins the region.
+  auto rebuild_with_surface = [&] {
     for (int pass = 0; pass < kBorderPasses; ++pass) {
       if (!bisect_long_border_edges(fields, region, kCgalSplits * settings.edge_length)) break;
       for (int e = 0; e < part.tet_count(); ++e)
         region[e] = region[e] || mesh::quality(part, e) < spec.quality;
     }
     out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1)) + mended_outside;
-    if (!rebuild(RegionSurface::rebuilt)) return std::nullopt;
-  }
+    return rebuild(RegionSurface::rebuilt);
+  };
+  // Poor elements are rebuilt inside the surface (the contact surface
+  // stays where it is); a die corner needs new surface nodes around it,
+  // and so does a region whose surface holds its poor elements (in the 75 %
+  // upsetting, a per mille of load where a whole remesh moved it 3 %).
+  // Not where sunk edges are split: the nodes the splits add stay until a
+  // whole remesh resamples the surface at the body's size, and each whole
+  // remesh put off lets more of them gather for the next one to drop (the
+  // connecting rod's worst jump went from 4.4 to 6.7 %).
+  bool rebuilt;
+  if (!due.die_corners.empty())
+    rebuilt = rebuild_with_surface();
+  else
+    rebuilt = rebuild(RegionSurface::kept) || (!spec.split_sunk_edges && rebuild_with_surface());
+  if (!rebuilt) return std::nullopt;
   // The nodal fields, taken after the bisection may have moved them.
   const double* part_temperature = fields.temperature.empty() ? nullptr : fields.temperature.data();
   const double* part_material = fields.material.empty() ? nullptr : fields.material.data();

@@ -5,9 +5,7 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -29,10 +27,7 @@ TEST_CASE("The source folders include one way: cli and render, run, remesh, io, 
           std::filesystem::relative(entry.path(), source_path(top)).begin()->string(); // its first component
       INFO(entry.path().string() << " (folder " << folder << ")");
       REQUIRE(rank(folder) < static_cast<int>(order.size())); // a new folder takes its place in the order
-      std::ifstream in(entry.path());
-      std::stringstream text;
-      text << in.rdbuf();
-      const std::string source = text.str();
+      const std::string source = file_text(entry.path());
       for (std::sregex_iterator m(source.begin(), source.end(), include), end; m != end; ++m) {
         const std::string used = (*m)[1];
         INFO("includes anvil/" << used << "/");

@@ -6,24 +6,11 @@
 #include "anvil/core/log.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 using namespace anvil;
-
-namespace {
-
-std::string file_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-} // namespace
 
 TEST_CASE("log::Holding keeps a thread's lines until write_held, each thread its own", "[unit][log]") {
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "anvil_unit_log_holding.log";

@@ -6,8 +6,6 @@
 #include "anvil/core/subprocess.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 TEST_CASE("A program gets a hostile argument as one argument and no shell runs it", "[unit][core]") {
   const auto folder = std::filesystem::temp_directory_path() / "anvil_subprocess_test";
@@ -19,10 +17,7 @@ TEST_CASE("A program gets a hostile argument as one argument and no shell runs i
   // cp copies its standard input (/dev/stdin) to a file named by the argument.
   options.input = "fed through standard input\n";
   REQUIRE(anvil::subprocess::run({"cp", "/dev/stdin", hostile}, options) == 0);
-  std::ifstream copied(folder / hostile);
-  std::stringstream text;
-  text << copied.rdbuf();
-  CHECK(text.str() == options.input);
+  CHECK(file_text(folder / hostile) == options.input);
   CHECK_FALSE(std::filesystem::exists(folder / "INJECTED"));
   CHECK(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator()) == 1);
   std::filesystem::remove_all(folder);

@@ -10,19 +10,7 @@
 #include <fstream>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <string>
-
-namespace {
-
-std::string text_of(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-} // namespace
 
 TEST_CASE("README and docs/ name only files that exist, and the cases they name are valid", "[unit][scene]") {
   const std::filesystem::path root = source_path("");
@@ -37,7 +25,7 @@ TEST_CASE("README and docs/ name only files that exist, and the cases they name 
   std::set<std::string> cases;
   int named_count = 0;
   for (const auto& page : pages) {
-    const std::string text = text_of(page);
+    const std::string text = file_text(page);
     for (std::sregex_iterator m(text.begin(), text.end(), named), end; m != end; ++m) {
       const std::string path = (*m)[1];
       if (path.find("out/") != std::string::npos) continue; // a run's output, made by the run

@@ -9,9 +9,6 @@
 
 #include <petscsys.h>
 
-#include <fstream>
-#include <sstream>
-
 using namespace anvil;
 
 namespace {
@@ -65,10 +62,8 @@ TEST_CASE("FGMRES that stagnates hands over to MUMPS, and the case's PETSc optio
   const double load = fallback.loads("top").back().force.z(), expected = reference.loads("top").back().force.z();
   INFO("after the fallback " << load << " N, MUMPS " << expected << " N");
   CHECK(std::abs(load - expected) <= 1e-8 * std::abs(expected));
-  std::ifstream summary(fallback.directory + "/summary.json");
-  std::stringstream text;
-  text << summary.rdbuf();
-  CHECK(text.str().find("\"linear_solver\": \"mumps\"") != std::string::npos); // the solver in use at the end
+  CHECK(file_text(fallback.directory + "/summary.json").find("\"linear_solver\": \"mumps\"") !=
+        std::string::npos); // the solver in use at the end
   PetscBool left = PETSC_TRUE;
   PetscOptionsHasName(nullptr, nullptr, "-ksp_max_it", &left);
   CHECK(!left);
