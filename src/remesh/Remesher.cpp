@@ -273,8 +273,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       keep_mesh();
       continue;
     }
-    if (why->local) {
-      std::string whole;
+    auto body_fields = [&] {
       BodyFields fields{
           part,
           Eigen::Map<const Eigen::VectorXd>(part_nodal, 4 * range.node_count),
@@ -285,81 +284,108 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
           {touching_die.begin() + range.first_node, touching_die.begin() + range.first_node + range.node_count}};
       if (thermal) fields.temperature.assign(part_temperature, part_temperature + range.node_count);
       if (flow_lines) fields.material.assign(part_material, part_material + 3 * range.node_count);
-      std::optional<LocalRemesh> local =
-          remesh_locally(scene, state, int(b), *why, std::move(fields), material_before[b], time_step, whole);
-      if (local) {
+      return fields;
+    };
+    // Region::due for a local trigger; a periodic remesh rebuilds the whole
+    // body with its contact surface kept (at a uniform size: an adaptive
+    // field takes CGAL's levels below); short of those, the whole body is
+    // remeshed freely. A trigger that fits the dies (a die corner, the
+    // overlap, poor elements the region could not mend) goes on remeshing
+    // freely: there the fit of the sunk die features moves the load most,
+    // and keeping the contact surface did not lower it (docs/remeshing.md).
+    std::optional<LocalRemesh> local;
+    std::string whole;
+    Region region = Region::due;
+    auto try_region = [&](Region choice) {
+      region = choice;
+      local = remesh_locally(scene, state, int(b), *why, body_fields(), material_before[b], time_step, choice, whole);
+      if (local)
         if (const std::string pinch = mesh::manifold_fault(local->mesh); !pinch.empty()) {
           whole = "the local remesh left a body that is not a manifold: " + pinch;
           local.reset();
         }
+    };
+    if (why->local) try_region(Region::due);
+    if (why->periodic && !scene.input.remeshing.adaptive) try_region(Region::whole_body);
+    if (local) {
+      ranges.push_back(mesh::append(next, local->mesh));
+      append_values(nodal, local->nodal.data(), local->nodal.size());
+      if (thermal) append_values(temperature, local->temperature.data(), local->temperature.size());
+      if (flow_lines) append_values(material, local->material.data(), local->material.size());
+      append_values(strain, local->strain.data(), local->strain.size());
+      for (std::size_t k = 0; k < damage.size(); ++k)
+        append_values(damage[k], local->damage[k].data(), local->damage[k].size());
+      if (carries_stress) stress.insert(stress.end(), 6 * local->mesh.tets.size(), 0.0);
+      const double volume_before = mesh::volume(part), volume_after = mesh::volume(local->mesh);
+      scene::RemeshRecord record{state.increment,
+                                 int(b),
+                                 part.node_count(),
+                                 local->mesh.node_count(),
+                                 worst_quality(part),
+                                 worst_quality(local->mesh),
+                                 relative(volume_after, volume_before),
+                                 local->strain_integral_change,
+                                 local->strain_max_change,
+                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+      record.rebuilt_share = region == Region::whole_body ? 1.0 : double(local->rebuilt) / part.tet_count();
+      const bool kept_surface = local->surface == RegionSurface::kept;
+      if (!kept_surface) {
+        // As for a whole remesh: CGAL's change and the material given
+        // back, and apart the put-back's (a contact projection).
+        record.volume_change = relative(local->volume_remeshed, volume_before);
+        state.volume.remeshing += local->volume_remeshed - volume_before + volume_after - local->volume_put_back;
+        state.volume.projection += local->volume_put_back - local->volume_remeshed;
+      } else {
+        state.volume.remeshing += volume_after - volume_before; // the surface's mending
       }
-      if (local) {
-        ranges.push_back(mesh::append(next, local->mesh));
-        append_values(nodal, local->nodal.data(), local->nodal.size());
-        if (thermal) append_values(temperature, local->temperature.data(), local->temperature.size());
-        if (flow_lines) append_values(material, local->material.data(), local->material.size());
-        append_values(strain, local->strain.data(), local->strain.size());
-        for (std::size_t k = 0; k < damage.size(); ++k)
-          append_values(damage[k], local->damage[k].data(), local->damage[k].size());
-        if (carries_stress) stress.insert(stress.end(), 6 * local->mesh.tets.size(), 0.0);
-        const double volume_before = mesh::volume(part), volume_after = mesh::volume(local->mesh);
-        scene::RemeshRecord record{state.increment,
-                                   int(b),
-                                   part.node_count(),
-                                   local->mesh.node_count(),
-                                   worst_quality(part),
-                                   worst_quality(local->mesh),
-                                   relative(volume_after, volume_before),
-                                   local->strain_integral_change,
-                                   local->strain_max_change,
-                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
-        record.rebuilt_share = double(local->rebuilt) / part.tet_count();
-        const bool kept_surface = local->surface == RegionSurface::kept;
-        if (!kept_surface) {
-          // As for a whole remesh: CGAL's change and the material given
-          // back, and apart the put-back's (a contact projection).
-          record.volume_change = relative(local->volume_remeshed, volume_before);
-          state.volume.remeshing += local->volume_remeshed - volume_before + volume_after - local->volume_put_back;
-          state.volume.projection += local->volume_put_back - local->volume_remeshed;
-        } else {
-          state.volume.remeshing += volume_after - volume_before; // the surface's mending
-        }
-        state.remeshes.push_back(record);
-        // A region rebuilt for its poor elements fits its own surface, not
-        // the overlap elsewhere: counted as a fit, it would put off the
-        // whole remesh that puts that overlap back.
-        fitted.push_back(!kept_surface && (!why->die_corners.empty() || !why->sunk_edges.empty()));
-        if (!why->sunk_edges.empty())
-          log::info("  remesh '%s' (%s): %d elements split, their new surface nodes put onto the dies, the rest "
-                    "kept; %d -> %d nodes; worst quality %.3f -> %.3f; %.2f s",
-                    scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, record.nodes_before,
-                    record.nodes_after, record.worst_quality_before, record.worst_quality_after, record.seconds);
-        else
-          log::info("  remesh '%s' (%s), local: %d of %d elements rebuilt, the rest and %s kept; %d -> %d nodes; "
-                    "worst quality %.3f -> %.3f; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
-                    scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, part.tet_count(),
-                    !kept_surface                          ? "the surface outside the region"
-                    : local->flips + local->collapses == 0 ? "the surface"
-                                                           : "the surface (mended in places)",
-                    record.nodes_before, record.nodes_after, record.worst_quality_before, record.worst_quality_after,
-                    100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
-        if (local->flips + local->collapses > 0)
-          log::info("    surface mended where its elements were poor: %d edges flipped, %d short edges collapsed; "
-                    "volume %+.4f%%",
-                    local->flips, local->collapses, 100.0 * record.volume_change);
-        if (!kept_surface)
-          log_fit(local->put_back, local->volume_remeshed, local->volume_put_back, local->given_back, volume_after);
-        continue;
-      }
-      if (!why->sunk_edges.empty()) {
-        // Not worth a whole remesh: the overlap's own trigger takes that.
-        log::info("  remesh '%s' (%s) not made: %s; the body keeps its mesh", scene.bodies[b].name.c_str(),
-                  why->why.c_str(), whole.c_str());
-        keep_mesh();
-        continue;
-      }
-      log::info("  remesh '%s': the whole body, as %s", scene.bodies[b].name.c_str(), whole.c_str());
+      state.remeshes.push_back(record);
+      // A region rebuilt for its poor elements fits its own surface, not
+      // the overlap elsewhere: counted as a fit, it would put off the
+      // whole remesh that puts that overlap back.
+      fitted.push_back(!kept_surface &&
+                       (region == Region::whole_body || !why->die_corners.empty() || !why->sunk_edges.empty()));
+      if (region == Region::whole_body)
+        log::info("  remesh '%s' (%s): the whole body rebuilt, its contact surface kept; %d -> %d nodes, %d -> %d "
+                  "elements; worst quality %.3f -> %.3f; transfer: integral of strain %+.3f%%, max strain %+.3f%%; "
+                  "%.2f s",
+                  scene.bodies[b].name.c_str(), why->why.c_str(), record.nodes_before, record.nodes_after,
+                  part.tet_count(), local->mesh.tet_count(), record.worst_quality_before, record.worst_quality_after,
+                  100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
+      else if (!why->sunk_edges.empty())
+        log::info("  remesh '%s' (%s): %d elements split, their new surface nodes put onto the dies, the rest "
+                  "kept; %d -> %d nodes; worst quality %.3f -> %.3f; %.2f s",
+                  scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, record.nodes_before,
+                  record.nodes_after, record.worst_quality_before, record.worst_quality_after, record.seconds);
+      else
+        log::info("  remesh '%s' (%s), local: %d of %d elements rebuilt, the rest and %s kept; %d -> %d nodes; "
+                  "worst quality %.3f -> %.3f; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
+                  scene.bodies[b].name.c_str(), why->why.c_str(), local->rebuilt, part.tet_count(),
+                  !kept_surface                          ? "the surface outside the region"
+                  : local->flips + local->collapses == 0 ? "the surface"
+                                                         : "the surface (mended in places)",
+                  record.nodes_before, record.nodes_after, record.worst_quality_before, record.worst_quality_after,
+                  100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
+      if (local->flips + local->collapses > 0)
+        log::info("    surface mended where its elements were poor: %d edges flipped, %d short edges collapsed; "
+                  "volume %+.4f%%",
+                  local->flips, local->collapses, 100.0 * record.volume_change);
+      if (!kept_surface)
+        log_fit(local->put_back, local->volume_remeshed, local->volume_put_back, local->given_back, volume_after);
+      continue;
     }
+    if (!why->sunk_edges.empty()) {
+      // Not worth a whole remesh: the overlap's own trigger takes that.
+      log::info("  remesh '%s' (%s) not made: %s; the body keeps its mesh", scene.bodies[b].name.c_str(),
+                why->why.c_str(), whole.c_str());
+      keep_mesh();
+      continue;
+    }
+    if (region == Region::whole_body)
+      log::info("  remesh '%s': the whole body remeshed freely, as its rebuild with the contact surface kept "
+                "failed: %s",
+                scene.bodies[b].name.c_str(), whole.c_str());
+    else if (why->local)
+      log::info("  remesh '%s': the whole body, as %s", scene.bodies[b].name.c_str(), whole.c_str());
     const PointLocator in_old(part);
     std::string refused;
     const std::optional<Remeshed> tried =

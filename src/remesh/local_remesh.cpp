@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <span>
 
 namespace anvil::remesh {
 namespace {
@@ -26,6 +27,9 @@ constexpr double kMostLocal = 0.5;
 /// up to kBorderPasses passes (a bisection can leave another long edge).
 constexpr double kCgalSplits = 4.0 / 3.0 / 1.01;
 constexpr int kBorderPasses = 3;
+/// Rebuilds of a region whose kept contact nodes hold a poor element, each
+/// letting go of those nodes.
+constexpr int kLetGoPasses = 2;
 /// A split over a sunk die feature keeps every element it makes or moves at
 /// this many times remeshing.quality: one just above the trigger falls below
 /// it in an increment or two, and a poor element on the surface takes a
@@ -208,6 +212,23 @@ double relative(double after, double before) {
   return before != 0.0 ? after / before - 1.0 : after - before;
 }
 
+std::vector<char> contact_surface(const mesh::TetMesh& part, std::span<const int> touching_die,
+                                  const scene::Scene& scene, int b, std::span<const scene::DieState> dies_now) {
+  const double size = scene.bodies[b].remesh_size;
+  const std::vector<char> on_boundary = mesh::boundary_node_flags(part);
+  std::vector<char> kept(part.nodes.size(), 0);
+  for (std::size_t n = 0; n < kept.size(); ++n) {
+    kept[n] = touching_die[n] >= 0;
+    for (std::size_t d = 0; d < scene.dies.size() && on_boundary[n] && !kept[n]; ++d) {
+      // Inside by less than an element: a node in this body's contact (deeper
+      // is the far side of an open die surface, as for put_onto_dies).
+      const double distance = scene.dies[d].surface->project(part.nodes[n] - dies_now[d].displacement).distance;
+      kept[n] = distance > -size && distance < kAboutToTouch * size;
+    }
+  }
+  return kept;
+}
+
 /// Body `b`'s mesh `part` rebuilt where its elements are poor (rebuild_region)
 /// or around the die corners of `due`, the rest kept bit for bit with its
 /// fields; the fields transferred in the rebuilt region only. Poor elements
@@ -219,7 +240,7 @@ double relative(double after, double before) {
 /// region is most of the body or its result is still below the trigger.
 std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene::RunState& state, int b,
                                           const RemeshDue& due, BodyFields fields, double material, double time_step,
-                                          std::string& why_not) {
+                                          Region choice, std::string& why_not) {
   if (!due.sunk_edges.empty()) return split_sunk_edges(scene, state, b, due.sunk_edges, std::move(fields), why_not);
   const scene::RemeshSpec& spec = scene.input.remeshing;
   const scene::Body& body = scene.bodies[b];
@@ -241,7 +262,9 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   out.flips = mended.flips;
   out.collapses = mended.collapses;
   if (mended.collapses > 0) keep_nodes(fields, mended.old_node);
-  std::vector<char> region = rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
+  std::vector<char> region = choice == Region::whole_body
+                                 ? std::vector<char>(part.tets.size(), 1)
+                                 : rebuild_region(part, part_nodal, time_step, spec.quality, kRegionLayers);
   if (!due.die_corners.empty()) {
     const std::vector<char> around = region_around(part, due.die_corners, body.remesh_size, kRegionLayers);
     for (std::size_t e = 0; e < region.size(); ++e)
@@ -267,7 +290,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   for (std::size_t e = 0; e < region.size(); ++e)
     mended_outside += mended.changed[e] && !region[e];
   out.rebuilt += mended_outside;
-  if (out.rebuilt > kMostLocal * part.tet_count()) {
+  if (choice == Region::due && out.rebuilt > kMostLocal * part.tet_count()) {
     std::snprintf(text, sizeof text, "the region to rebuild holds %d of its %d elements", out.rebuilt,
                   part.tet_count());
     why_not = text;
@@ -285,14 +308,12 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   mesh::TetMesh before_fit; // CGAL's mesh of the old region, before the fit to the dies: ε̄ is remapped on it
   // One try: the region remeshed with its surface kept or rebuilt; false,
   // with why_not, when it failed or left an element below the trigger.
-  auto rebuild = [&](RegionSurface surface) {
+  auto rebuild = [&](RegionSurface surface, std::span<const char> pinned) {
     out.surface = surface;
     try {
-      std::vector<char> pinned(part.nodes.size(), 0);
-      for (std::size_t n = 0; n < pinned.size(); ++n)
-        pinned[n] = fields.touching_die[n] >= 0;
       local = remesh_region(part, region, settings, surface, pinned);
     } catch (const RunError& error) {
+      local = {};
       why_not = error.what();
       return false;
     }
@@ -318,11 +339,15 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     why_not = text;
     return false;
   };
-  // The region rebuilt with its part of the surface, its contact nodes
-  // pinned. CGAL would split the border's edges longer than 4/3 of its
-  // length: they are bisected first, on both sides (the kept tets keep
-  // their nodes and shape, their fields exactly); a kept tet the bisection
-  // leaves below the trigger joins the region.
+  // The region rebuilt with its part of the surface, the nodes pressing on
+  // a die kept. CGAL would split the border's edges longer than 4/3 of its
+  // length: they are bisected first, on both sides (the kept tets keep their
+  // nodes and shape, their fields exactly); a kept tet the bisection leaves
+  // below the trigger joins the region. The whole body keeps its contact
+  // surface (contact_surface: the nodes about to touch too); where those
+  // nodes hold an element below the trigger, they are let go and the body
+  // rebuilt again (up to kLetGoPasses times). In a local region, keeping the
+  // nodes about to touch made no measured difference (docs/remeshing.md).
   auto rebuild_with_surface = [&] {
     for (int pass = 0; pass < kBorderPasses; ++pass) {
       if (!bisect_long_border_edges(fields, region, kCgalSplits * settings.edge_length)) break;
@@ -330,7 +355,23 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
         region[e] = region[e] || mesh::quality(part, e) < spec.quality;
     }
     out.rebuilt = static_cast<int>(std::count(region.begin(), region.end(), 1)) + mended_outside;
-    return rebuild(RegionSurface::rebuilt);
+    std::vector<char> pinned(part.nodes.size(), 0);
+    if (choice == Region::whole_body)
+      pinned = contact_surface(part, fields.touching_die, scene, b, state.dies);
+    else
+      for (std::size_t n = 0; n < pinned.size(); ++n)
+        pinned[n] = fields.touching_die[n] >= 0;
+    for (int pass = 0;; ++pass) {
+      if (rebuild(RegionSurface::rebuilt, pinned)) return true;
+      if (choice == Region::due || pass == kLetGoPasses || local.mesh.tets.empty()) return false;
+      int let_go = 0;
+      for (int e = 0; e < local.mesh.tet_count(); ++e)
+        if (mesh::quality(local.mesh, e) < spec.quality)
+          for (int node : local.mesh.tets[e])
+            if (const int old_node = local.old_node[node]; old_node >= 0 && pinned[old_node])
+              pinned[old_node] = 0, ++let_go;
+      if (let_go == 0) return false;
+    }
   };
   // Poor elements are rebuilt inside the surface (the contact surface
   // stays where it is); a die corner needs new surface nodes around it,
@@ -341,10 +382,10 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   // remesh put off lets more of them gather for the next one to drop (the
   // connecting rod's worst jump went from 4.4 to 6.7 %).
   bool rebuilt;
-  if (!due.die_corners.empty())
+  if (!due.die_corners.empty() || choice == Region::whole_body)
     rebuilt = rebuild_with_surface();
   else
-    rebuilt = rebuild(RegionSurface::kept) || (!spec.split_sunk_edges && rebuild_with_surface());
+    rebuilt = rebuild(RegionSurface::kept, {}) || (!spec.split_sunk_edges && rebuild_with_surface());
   if (!rebuilt) return std::nullopt;
   // The nodal fields, taken after the bisection may have moved them.
   const double* part_temperature = fields.temperature.empty() ? nullptr : fields.temperature.data();

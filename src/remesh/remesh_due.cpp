@@ -85,6 +85,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     bool local = spec.local && (poor || q.predicted_worst <= 0.0);
     std::vector<mesh::Point> corners;
     std::vector<SunkEdge> sunk_edges;
+    bool periodic = false;
     if (poor && quality_trigger < spec.quality)
       std::snprintf(why, sizeof why, "worst quality %.3f below %.3g, %g of the %.3f the last remesh left", q.worst,
                     quality_trigger, kQualityAgain, left.worst_quality);
@@ -92,9 +93,10 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
       std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
     else if (q.predicted_worst <= 0.0)
       std::snprintf(why, sizeof why, "element %d would invert in the next increment", q.predicted_tet + 1);
-    else if (spec.every > 0 && state.increment % spec.every == 0)
+    else if (spec.every > 0 && state.increment % spec.every == 0) {
       std::snprintf(why, sizeof why, "every %d increments", spec.every);
-    else if (!scene.dies.empty()) {
+      periodic = true;
+    } else if (!scene.dies.empty()) {
       if (die_vertices.empty()) die_vertices = dies_in_place(scene, state); // the scene has dies here
       const std::vector<SunkVertex> sunk = sunk_die_vertices(state.mesh, state.bodies[b], die_vertices);
       const std::vector<DieFeature> inside = deepest_per_die(sunk, scene.dies.size());
@@ -128,7 +130,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
         }
       }
     }
-    if (why[0]) due.push_back({int(b), why, local, std::move(corners), std::move(sunk_edges)});
+    if (why[0]) due.push_back({int(b), why, local, periodic, std::move(corners), std::move(sunk_edges)});
   }
   return due;
 }

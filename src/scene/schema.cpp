@@ -398,7 +398,9 @@ const std::vector<KeySpec>& case_schema() {
                                "or would reach 0 in the next increment"),
                            0, 1),
                      "0.1"),
-        with_default(range(key("remeshing.every", T::integer, "also remesh every N increments; 0 = off"), 0, kInf),
+        with_default(range(key("remeshing.every", T::integer,
+                               "also remesh every N increments (the whole body, its contact surface kept); 0 = off"),
+                           0, kInf),
                      "0"),
         with_default(
             range(key("remeshing.die_penetration", T::number,

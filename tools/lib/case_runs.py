@@ -1,7 +1,8 @@
 """One case run by build/anvil for a study tool, and what it wrote.
 
-run_case(tool, case, out, settings) runs cases/<case>.yaml into `out` with
-the --set `settings` (no picture), quietly, and returns its summary.json with
+run_case(tool, case, out, settings, anvil) runs cases/<case>.yaml with `anvil`
+(build/anvil unless given) into `out` with the --set `settings` (no picture),
+quietly, and returns its summary.json with
 "stopped": the last line the run said when it stopped early (empty when it
 reached its stop), so a tool can report the run rather than drop it.
 """
@@ -14,9 +15,8 @@ import doc_figures
 ROOT = doc_figures.ROOT
 
 
-def run_case(tool, case, out, settings=()):
-    command = [os.path.join(ROOT, "build", "anvil"), "run", os.path.join(ROOT, "cases", case + ".yaml"), "-o", out,
-               "--set", "output.picture=false"]
+def run_case(tool, case, out, settings=(), anvil=os.path.join(ROOT, "build", "anvil")):
+    command = [anvil, "run", os.path.join(ROOT, "cases", case + ".yaml"), "-o", out, "--set", "output.picture=false"]
     for s in settings:
         command += ["--set", s]
     print(f"{tool}: {case} ...", flush=True)

@@ -18,6 +18,9 @@ struct RemeshDue {
   /// body (its region's surface rebuilt). The overlap with the dies and a
   /// periodic remesh are of the whole body.
   bool local = false;
+  /// remeshing.every: nothing to mend, the whole body rebuilt with its
+  /// contact surface kept (local_remesh.h, Region::whole_body).
+  bool periodic = false;
   /// The die vertex sunk into the body that asked for the remesh (mm);
   /// none for the other triggers.
   std::vector<mesh::Point> die_corners;

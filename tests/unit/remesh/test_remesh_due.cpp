@@ -8,6 +8,7 @@
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/Remesher.h"
 #include "anvil/remesh/die_feature_depth.h"
+#include "anvil/remesh/local_remesh.h"
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/remesh_due.h"
 #include "anvil/scene/Case.h"
@@ -53,6 +54,8 @@ TEST_CASE("A body is remeshed when an element is poor, and every N increments wh
   auto due = remesh::remesh_due(r.scene, r.state, kStep);
   REQUIRE(due.size() == 1);
   CHECK(due[0].why == "every 3 increments");
+  CHECK(due[0].periodic);
+  CHECK_FALSE(due[0].local);
 
   // Element 1's first vertex moved most of the way to its opposite face: quality far below 0.15.
   r.state.increment = 4;
@@ -63,6 +66,59 @@ TEST_CASE("A body is remeshed when an element is poor, and every N increments wh
   REQUIRE(due.size() == 1);
   CHECK(due[0].body == 0);
   CHECK(due[0].why.find("worst quality") == 0);
+  CHECK_FALSE(due[0].periodic);
+}
+
+TEST_CASE("A periodic remesh rebuilds the whole body and keeps its contact surface: the nodes pressing on a die and "
+          "those about to touch one stay where they were",
+          "[unit][remesh]") {
+  // closed_die_flash's billet as it starts, its bottom face on the lower
+  // die's web floor: those nodes are about to touch a die (within a tenth of
+  // an element of one). A node on the billet's side, far from the dies, is
+  // then said to press on one.
+  Run r("cases/closed_die_flash.yaml", {"remeshing.check_load=false", "remeshing.every=1"});
+  const double h = r.scene.bodies[0].remesh_size;
+  r.state.increment = 1;
+  const mesh::TetMesh before = r.state.mesh;
+  std::vector<int> touching(before.nodes.size(), -1);
+  const std::vector<char> kept = remesh::contact_surface(before, touching, r.scene, 0, r.state.dies);
+  const std::vector<char> on_boundary = mesh::boundary_node_flags(before);
+  int about_to_touch = 0;
+  for (std::size_t n = 0; n < kept.size(); ++n) {
+    INFO("node " << n << " at z " << before.nodes[n].z());
+    if (!on_boundary[n]) REQUIRE_FALSE(kept[n]);
+    about_to_touch += kept[n];
+  }
+  REQUIRE(about_to_touch > 0); // the bottom face on the web floor
+  // A boundary node far from every die (mid-height on the billet's side) is kept only when it presses on a die.
+  int side = -1;
+  for (std::size_t n = 0; n < kept.size() && side < 0; ++n)
+    if (on_boundary[n] && !kept[n] && std::abs(before.nodes[n].z() - 0.5 * 15.7) < h) side = int(n);
+  REQUIRE(side >= 0);
+  touching[side] = 1;
+  const std::vector<char> with_side = remesh::contact_surface(before, touching, r.scene, 0, r.state.dies);
+  CHECK(with_side[side]);
+
+  const std::vector<remesh::RemeshDue> due = remesh::remesh_due(r.scene, r.state, kStep);
+  REQUIRE(due.size() == 1);
+  REQUIRE(due[0].periodic);
+  const std::vector<double> rate(before.tets.size(), 0.0);
+  remesh::remesh(r.scene, r.state, due, touching, rate, kStep, r.timers);
+  REQUIRE(r.state.remeshes.size() == 1);
+  CHECK(r.state.remeshes[0].rebuilt_share == 1.0);
+  // Every kept node is a node of the new mesh, bit for bit (the body starts at node 0).
+  std::vector<mesh::Point> after = r.state.mesh.nodes;
+  auto less = [](const mesh::Point& a, const mesh::Point& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  };
+  std::sort(after.begin(), after.end(), less);
+  for (std::size_t n = 0; n < with_side.size(); ++n)
+    if (with_side[n]) {
+      INFO("kept node " << n);
+      CHECK(std::binary_search(after.begin(), after.end(), before.nodes[n], less));
+    }
+  for (int e = 0; e < r.state.mesh.tet_count(); ++e)
+    REQUIRE(mesh::quality(r.state.mesh, e) >= r.input.remeshing.quality);
 }
 
 TEST_CASE("An element a remesh left below the quality floor asks for a remesh again only once it is a fifth worse",
