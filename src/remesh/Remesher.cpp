@@ -341,7 +341,8 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       state.remeshes.push_back(record);
       // A region rebuilt for its poor elements fits its own surface, not
       // the overlap elsewhere: counted as a fit, it would put off the
-      // whole remesh that puts that overlap back.
+      // whole remesh that puts that overlap back. The whole body rebuilt
+      // with its surface fits all of it.
       fitted.push_back(!kept_surface &&
                        (region == Region::whole_body || !why->die_corners.empty() || !why->sunk_edges.empty()));
       if (region == Region::whole_body)
