@@ -13,7 +13,6 @@ bool verbose_terminal = false;
 thread_local std::vector<HeldLine>* held = nullptr;
 
 void write_line(bool to_terminal, const char* line) {
-  if (!processes::root()) return; // one log per run: rank 0's
   if (to_terminal && !quiet_terminal) {
     std::fputs(line, stdout);
     std::fputc('\n', stdout);
@@ -26,6 +25,7 @@ void write_line(bool to_terminal, const char* line) {
 }
 
 void write(bool to_terminal, const char* format, va_list args) {
+  if (!processes::root()) return; // one log per run: rank 0's
   char line[2048];
   std::vsnprintf(line, sizeof line, format, args);
   if (held)

@@ -361,9 +361,10 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     else
       for (std::size_t n = 0; n < pinned.size(); ++n)
         pinned[n] = fields.touching_die[n] >= 0;
+    const int let_go_passes = choice == Region::whole_body ? kLetGoPasses : 0;
     for (int pass = 0;; ++pass) {
       if (rebuild(RegionSurface::rebuilt, pinned)) return true;
-      if (choice == Region::due || pass == kLetGoPasses || local.mesh.tets.empty()) return false;
+      if (pass == let_go_passes || local.mesh.tets.empty()) return false;
       int let_go = 0;
       for (int e = 0; e < local.mesh.tet_count(); ++e)
         if (mesh::quality(local.mesh, e) < spec.quality)

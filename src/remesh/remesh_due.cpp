@@ -130,7 +130,13 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
         }
       }
     }
-    if (why[0]) due.push_back({int(b), why, local, periodic, std::move(corners), std::move(sunk_edges)});
+    if (why[0])
+      due.push_back({.body = int(b),
+                     .why = why,
+                     .local = local,
+                     .periodic = periodic,
+                     .die_corners = std::move(corners),
+                     .sunk_edges = std::move(sunk_edges)});
   }
   return due;
 }

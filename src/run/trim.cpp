@@ -336,7 +336,11 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
     log::info("trim: body '%s' cut to %d of %d elements, worst quality %.3f", scene.bodies[b].name.c_str(), r.tet_count,
               part.bodies[b].tet_count, worst);
     if (worst < op.input.remeshing.quality && !scene.bodies[b].law->is_elastic())
-      due.push_back({static_cast<int>(b), "the trim cut left elements below remeshing.quality", true, false, {}, {}});
+      due.push_back({.body = static_cast<int>(b),
+                     .why = "the trim cut left elements below remeshing.quality",
+                     .local = true,
+                     .die_corners = {},
+                     .sunk_edges = {}});
   }
   std::string remeshed = "none";
   if (!due.empty()) {
