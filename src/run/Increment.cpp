@@ -17,55 +17,29 @@ namespace anvil::run {
 using namespace scene; // the loop runs on the scene's types throughout
 namespace {
 
-/// A closed die's flash stage runs at a fifth to a third of the nominal
-/// increment (the displacement limit) while its overlap with the dies grows
-/// every increment: a loss restored over the nominal increment leaves the
-/// material 0.35-0.38 % behind at closure, over the increment itself (down
-/// to this share of the nominal one) 0.03-0.11 % (hub flanges, 1 mm and adaptive).
-constexpr double kShortestRestore = 0.25;
-
 /// The external vector of an increment of `dt`: the boundary tractions, and
 /// the volume compensation of the incompressible bodies. The flow of the
 /// increment is asked to restore the volume each lost so far (explicit
 /// update error, O(Δt) over a run, and contact projection): ∫ q div v = ∫ q g
-/// with g = (V₀ − V_m)/(V_f Δt'), entered as the pressure rows of the
-/// external vector (r_p = −∫N (div v − g)). V_m is the material: the mesh
-/// less what overlaps the dies, which is not material and which a remesh's
-/// put-back cuts off at once. Δt' = max(Δt, kShortestRestore × nominal):
-/// each increment restores the whole loss, and one much shorter than the
-/// nominal (a stop criterion, a cut) no more than that share of it, so that
-/// it does not get a large dilatation. The loss is given back where the
-/// material is free to take it, in the elements with no node pressing on a
-/// die (volume V_f): given to those against a die too, much of it went into
-/// the die's fillets between their nodes (the adaptive hub flange's overlap
-/// at closure 0.43 % against 0.23 %); the whole body takes it when most of it
-/// presses on the dies. `asked` is Σ g V_f Δt (mm³).
+/// with g = (V₀ − V_m)/(V Δt'), entered as the pressure rows of the external
+/// vector (r_p = −∫N (div v − g)). V_m is the material: the mesh less what
+/// overlaps the dies, which is not material and which a remesh's put-back
+/// cuts off at once. Δt' = max(Δt, nominal) restores it over at least the
+/// nominal increment, so a short increment (a stop criterion, a cut) does
+/// not get a large dilatation. `asked` is Σ g V Δt (mm³).
 Eigen::VectorXd external_vector(const Scene& scene, const Discretisation& disc, const RunState& state, double dt,
                                 double nominal, double& asked) {
   Eigen::VectorXd external = disc.imposed.nodal_forces;
   asked = 0.0;
   if (!scene.compensate_volume) return external;
-  const std::vector<int> touching =
-      scene.dies.empty() ? std::vector<int>(state.mesh.node_count(), -1) : disc.touching_die(state.unknowns.nodal);
-  std::vector<char> free(state.mesh.tets.size(), 0);
-  for (std::size_t e = 0; e < free.size(); ++e) {
-    const mesh::Tet& t = state.mesh.tets[e];
-    free[e] = std::none_of(t.begin(), t.end(), [&](int node) { return touching[node] >= 0; });
-  }
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     if (std::isfinite(scene.bodies[b].law->bulk_modulus())) continue;
     const mesh::MeshRange& range = state.bodies[b];
     const double volume = mesh::volume(state.mesh, range);
     const double material = volume - state.inside_dies[b];
-    double free_volume = 0.0;
-    for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e)
-      if (free[e]) free_volume += mesh::signed_volume(state.mesh, e);
-    const bool spread = free_volume > 0.5 * volume;
-    const double taking = spread ? free_volume : volume;
-    const double g = (scene.bodies[b].initial_volume - material) / (taking * std::max(dt, kShortestRestore * nominal));
-    asked += g * taking * dt;
+    const double g = (scene.bodies[b].initial_volume - material) / (volume * std::max(dt, nominal));
+    asked += g * volume * dt;
     for (int e = range.first_tet; e < range.first_tet + range.tet_count; ++e) {
-      if (spread && !free[e]) continue;
       const double quarter = 0.25 * mesh::signed_volume(state.mesh, e);
       for (int node : state.mesh.tets[e])
         external[4 * node + 3] -= g * quarter;
