@@ -488,7 +488,6 @@ void accept_without_motion(const Scene& scene, const IncrementOutcome& inc, RunS
 Advance advance(const Scene& scene, Discretisation& disc, RunState& state, const TimeStepControl& clock, TimeStep step,
                 Timers& timers) {
   IncrementOutcome inc = solve_coupled(scene, disc, state, step, timers);
-  bool second_budget = true;
   // An energy press's last increment of a blow is fitted to spend its energy:
   // a few solves, the load hardly depending on Δt.
   constexpr int kMaxBlowFits = 4;
@@ -506,24 +505,15 @@ Advance advance(const Scene& scene, Discretisation& disc, RunState& state, const
       if (accept_increment(scene, disc, inc, state, timers)) break;
     }
     if (inc.report.interrupted) return {Advance::End::interrupted, std::move(inc)};
+    const std::optional<double> shorter = clock.cut(inc.time_step, cuts++);
+    if (!shorter) return {Advance::End::failed, std::move(inc)};
+    step.length = *shorter;
+    log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1, inc.failure.c_str(),
+              step.length, cuts, scene.input.time.max_cuts);
+    // From the last iterate when the residual fell: the flow hardly depends on Δt.
     const bool on_its_way = inc.report.on_its_way();
     const fem::BodyUnknowns stopped_at = on_its_way ? std::move(inc.unknowns) : fem::BodyUnknowns{};
-    solver::NewtonReport first_budget;
-    if (on_its_way && second_budget) {
-      second_budget = false;
-      log::info("  increment %d: %s, the residual falling (%.3g to %.3g); going on from there with the same dt",
-                state.increment + 1, inc.failure.c_str(), inc.report.iterations.front().force_residual,
-                inc.report.iterations.back().force_residual);
-      first_budget = std::move(inc.report);
-    } else {
-      const std::optional<double> shorter = clock.cut(inc.time_step, cuts++);
-      if (!shorter) return {Advance::End::failed, std::move(inc)};
-      step.length = *shorter;
-      log::info("  increment %d: %s; retrying with dt = %.4g s (cut %d of %d)", state.increment + 1,
-                inc.failure.c_str(), step.length, cuts, scene.input.time.max_cuts);
-    }
     inc = solve_coupled(scene, disc, state, step, timers, on_its_way ? &stopped_at : nullptr);
-    inc.report.continues(first_budget);
   }
   return {Advance::End::accepted, std::move(inc)};
 }

@@ -269,9 +269,23 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   fem::BodyUnknowns trial;
   // The iteration budget applies per active set: a change of set at
   // convergence starts a new (short) Newton run, at most kMaxSetChanges times.
+  // A set that runs out of its budget while the residual falls gets a second
+  // one, once per solve: Newton goes on with the same state (active set,
+  // phase, forcing), so a run whose round-off puts it just past the budget
+  // follows the path of a run with a larger one.
   constexpr int kMaxSetChanges = 10;
   int phase_start = 0, set_changes = 0;
-  for (int it = 1; it - phase_start <= settings.max_iterations; ++it) {
+  bool second_budget = true;
+  for (int it = 1;; ++it) {
+    if (it - phase_start > settings.max_iterations) {
+      const std::span<const NewtonIteration> phase(report.iterations.begin() + phase_start, report.iterations.end());
+      if (!second_budget || !residual_falling(phase)) break;
+      second_budget = false;
+      phase_start += settings.max_iterations;
+      log::info("  no convergence in %d Newton iterations, the residual falling (%.3g to %.3g): a second budget at "
+                "the same time step",
+                settings.max_iterations, phase.front().force_residual, phase.back().force_residual);
+    }
     if (interrupt::requested()) { // the increment is abandoned: the run checkpoints the last accepted one
       report.failure = "interrupted";
       report.interrupted = true;

@@ -9,6 +9,7 @@
 #include "anvil/solver/LinearSolver.h"
 #include "anvil/solver/NodalTerm.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,14 @@ struct NewtonIteration {
   double step;           ///< line-search step length taken
 };
 
+/// The force residual of `iterations` fell, overall and over their second
+/// half: more iterations may converge.
+inline bool residual_falling(std::span<const NewtonIteration> iterations) {
+  if (iterations.size() < 2) return false;
+  const double last = iterations.back().force_residual;
+  return last < iterations.front().force_residual && last < iterations[iterations.size() / 2].force_residual;
+}
+
 struct NewtonReport {
   bool converged = false;
   std::vector<NewtonIteration> iterations;
@@ -45,20 +54,9 @@ struct NewtonReport {
   bool out_of_iterations = false; ///< stopped at the iteration budget (not a failed solve or a non-finite residual)
   bool interrupted = false;       ///< abandoned for SIGINT or SIGTERM (core/interrupt)
 
-  /// Stopped at the budget while its force residual fell, overall and over
-  /// the second half of its iterations: its last iterate is a better start
-  /// than its first, and more iterations may finish the increment.
-  bool on_its_way() const {
-    if (!out_of_iterations || iterations.size() < 2) return false;
-    const double last = iterations.back().force_residual;
-    return last < iterations.front().force_residual && last < iterations[iterations.size() / 2].force_residual;
-  }
-  /// This Newton went on from the last iterate of `earlier` at the same Δt:
-  /// one report of both, so the increment counts all its iterations.
-  void continues(const NewtonReport& earlier) {
-    iterations.insert(iterations.begin(), earlier.iterations.begin(), earlier.iterations.end());
-    linear_iterations += earlier.linear_iterations;
-  }
+  /// Stopped at the budget while its force residual fell: its last iterate
+  /// is a better start than its first (residual_falling).
+  bool on_its_way() const { return out_of_iterations && residual_falling(iterations); }
 };
 
 /// What one increment solves for, besides the unknowns.
