@@ -54,7 +54,10 @@ void read_remeshing(const CheckedYaml& doc, Case& c) {
   m.time_limit = doc.number(r, "time_limit", "remeshing.time_limit");
   m.check_load = doc.boolean(r, "check_load", "remeshing.check_load");
   m.local = doc.boolean(r, "local", "remeshing.local");
-  m.split_sunk_edges = doc.boolean(r, "split_sunk_edges", "remeshing.split_sunk_edges");
+  // The adaptive size field resolves the die features where they meet the
+  // body; the split keeps them resolved between its remeshes.
+  m.split_sunk_edges =
+      r["split_sunk_edges"] ? doc.boolean(r, "split_sunk_edges", "remeshing.split_sunk_edges") : m.adaptive;
   read_size_boxes(doc, r, c);
 }
 

@@ -457,13 +457,13 @@ const std::vector<KeySpec>& case_schema() {
                          "remeshed when that region is over half of it, when that too stays below, and for the "
                          "periodic and overlap triggers"),
                      "true"),
-        with_default(key("remeshing.split_sunk_edges", T::boolean,
-                         "after each increment, split the boundary edges whose midpoint lies over a tenth of an "
-                         "element inside a die (a die fillet or edge sunk between contact nodes) and put their "
-                         "midpoints onto the die, nothing else moved: less of the body inside the dies and a "
-                         "smaller volume change, for more remeshes, and whole remeshes that then resample the "
-                         "refined surface with their load jumps (docs/remeshing.md)"),
-                     "false"),
+        key("remeshing.split_sunk_edges", T::boolean,
+            "after each increment, split the boundary edges whose midpoint lies over a tenth of an "
+            "element inside a die (a die fillet or edge sunk between contact nodes) and put their "
+            "midpoints onto the die, nothing else moved: less of the body inside the dies and a "
+            "smaller volume change, for more remeshes, and whole remeshes that then resample the "
+            "refined surface with their load jumps (docs/remeshing.md); default: on with the adaptive "
+            "size field, off with the uniform one"),
         key("remeshing.size_boxes", T::list,
             "adaptive size field: boxes where the edge is at most their size (graded by 1.5 around them); a box "
             "given with a die moves with it"),

@@ -159,9 +159,14 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
                                        {"remeshing.size=adaptive", "remeshing.check_load=false"}); // 8 min
   check_remeshes_keep_volume_and_strain(run);
   // The 0.3 % aimed at for the volume over the run and for what lies inside
-  // the dies at closure: measured mesh +0.04 %, material -0.16 %, inside
-  // the dies 0.20 % of the volume (the uniform run: +0.48 %, -0.35 % and
-  // 0.83 %, bounded at 1 % above).
+  // the dies at closure: measured mesh +0.14 %, material -0.03 %, inside
+  // the dies 0.17 % of the volume, with the split of sunk edges the
+  // adaptive size field turns on (without it 0.38 % inside at closure in
+  // this run: the overlap grows every increment of the flash stage and
+  // only a whole remesh in the last increments takes it back). The uniform
+  // run: mesh +0.95 %, material -0.13 %, inside 1.08 %; its volume is
+  // bounded at 1 % above (its mesh holds the material and the overlap,
+  // which the compensation leaves in place).
   check_run_volume(run, 0.003);
   const double inside = run.out.summary_number("inside_dies_end") / run.out.summary_number("start");
   INFO("inside the dies at closure: " << 100.0 * inside << " % of the volume");
