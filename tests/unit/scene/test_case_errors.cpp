@@ -127,3 +127,12 @@ TEST_CASE("command-line overrides change one key, every list element or one elem
   CHECK_THAT(error_with("time.stroke_increment"), Contains("expected key.path=value"));
   CHECK_THAT(error_with("title.x=1"), Contains("no key 'title.x'"));
 }
+
+TEST_CASE("the adaptive size field splits sunk edges unless the case says otherwise", "[unit]") {
+  const std::string path = source_path("cases/closed_die_flash.yaml");
+  CHECK_FALSE(scene::read_case(path).remeshing.split_sunk_edges);
+  CHECK(scene::read_case(path, {"remeshing.size=adaptive"}).remeshing.split_sunk_edges);
+  CHECK_FALSE(scene::read_case(path, {"remeshing.size=adaptive", "remeshing.split_sunk_edges=false"})
+                  .remeshing.split_sunk_edges);
+  CHECK(scene::read_case(path, {"remeshing.split_sunk_edges=true"}).remeshing.split_sunk_edges);
+}
