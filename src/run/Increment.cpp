@@ -81,16 +81,15 @@ Eigen::VectorXd external_vector(const Scene& scene, const Discretisation& disc, 
       free_volume += free[k] * volumes[k];
     }
     const double spread = std::max(0.0, 1.0 - free_volume / (kFreeEnough * volume)); // λ
-    std::vector<double> taking(range.tet_count);                                     // w_e V_e
-    double taken = 0.0;
-    for (int k = 0; k < range.tet_count; ++k)
-      taken += taking[k] = (free[k] + spread * (1.0 - free[k])) * volumes[k];
+    const double taken = free_volume + spread * (volume - free_volume);              // Σ w_e V_e
     const double material = volume - state.inside_dies[b];
     const double g = (scene.bodies[b].initial_volume - material) / (taken * std::max(dt, kShortestRestore * nominal));
     asked += g * taken * dt;
-    for (int k = 0; k < range.tet_count; ++k)
+    for (int k = 0; k < range.tet_count; ++k) {
+      const double quarter = 0.25 * (free[k] + spread * (1.0 - free[k])) * volumes[k]; // ¼ w_e V_e
       for (int node : state.mesh.tets[range.first_tet + k])
-        external[4 * node + 3] -= 0.25 * g * taking[k];
+        external[4 * node + 3] -= g * quarter;
+    }
   }
   return external;
 }
@@ -510,8 +509,9 @@ void record_final_loads(const Scene& scene, Discretisation& disc, RunState& stat
   RunState end = state;
   for (std::size_t d = 0; d < scene.dies.size(); ++d)
     end.dies[d].press_time -= end.dies[d].speed_factor * dt;
-  // As an increment would be solved: Newton that ran out of iterations while
-  // its residual fell goes on from its last iterate, else a shorter step.
+  // Much as an increment is solved: Newton that ran out of both its budgets
+  // while its residual fell goes on from its last iterate at the same step
+  // (a record, not a step of the run), else a shorter step.
   TimeStep step{.nominal = dt, .planned = dt, .length = dt};
   IncrementOutcome inc = solve_increment(scene, disc, end, step, timers, ContactEvents::ignore);
   for (int tries = 0; !inc.converged() && !inc.report.interrupted && tries < scene.input.time.max_cuts; ++tries) {
