@@ -164,6 +164,8 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
                     t.worst, floor);
     else if (const std::string pinch = mesh::manifold_fault(t.mesh); !pinch.empty())
       return "the new mesh is not a manifold: " + pinch;
+    else if (const std::string lost = scene::condition_losing_faces(body.conditions, part, t.mesh); !lost.empty())
+      return "the new mesh has no face for boundary " + lost;
     return std::string(text);
   };
   // A result whose worst element is below the trigger would be due again at
@@ -310,7 +312,16 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     if (local) {
       ranges.push_back(mesh::append(next, local->mesh));
       append_values(nodal, local->nodal.data(), local->nodal.size());
-      if (thermal) append_values(temperature, local->temperature.data(), local->temperature.size());
+      if (thermal) {
+        append_values(temperature, local->temperature.data(), local->temperature.size());
+        // The heat of the volume the fit to the dies moved (budget apart, as for a whole remesh).
+        if (const auto& body_thermal = scene.bodies[b].thermal)
+          state.heat.remeshing +=
+              thermal::enthalpy(nodal_mass(local->mesh, *body_thermal), mesh::whole_range(local->mesh),
+                                {local->temperature.data(), std::size_t(local->temperature.size())}) -
+              thermal::enthalpy(nodal_mass(part, *body_thermal), mesh::whole_range(part),
+                                {part_temperature, std::size_t(range.node_count)});
+      }
       if (flow_lines) append_values(material, local->material.data(), local->material.size());
       append_values(strain, local->strain.data(), local->strain.size());
       for (std::size_t k = 0; k < damage.size(); ++k)

@@ -115,7 +115,11 @@ mesh::Bisection bisect_carrying(BodyFields& fields, const std::vector<std::array
 
 /// Shifts the temperatures `t` of the nodes of `part` that `fresh` flags by
 /// one amount, so that the heat `part` stores equals that of `old` at
-/// `old_t`: interpolated or moved new nodes change it a little.
+/// `old_t`: interpolation at new nodes smooths the field and changes it a
+/// little. `part` must hold the volume of `old` (the mesh before its fit to
+/// the dies): the heat of the volume that fit moves goes with it, at its own
+/// temperature, and given to the few new nodes instead it heated them by
+/// hundreds of degrees (a split's midpoints put 0.2 mm into a die).
 void keep_stored_heat(const mesh::TetMesh& old, const double* old_t, const mesh::TetMesh& part, Eigen::VectorXd& t,
                       const std::vector<char>& fresh, const thermal::ThermalMaterial& material) {
   const thermal::NodalMass m_old = nodal_mass(old, material), m_new = nodal_mass(part, material);
@@ -170,7 +174,6 @@ std::optional<LocalRemesh> split_sunk_edges(const scene::Scene& scene, const sce
     return std::nullopt;
   }
   const std::vector<int> touching = fields.touching_die;
-  const std::vector<double> old_temperature = fields.temperature;
   const mesh::Bisection cut = bisect_carrying(fields, edges, nullptr);
   mesh::TetMesh& part = fields.mesh;
   std::vector<char> fresh(part.nodes.size(), 0);
@@ -186,9 +189,10 @@ std::optional<LocalRemesh> split_sunk_edges(const scene::Scene& scene, const sce
   out.volume_put_back = mesh::volume(part);
   const std::set<int> split(cut.parent.begin() + old.tet_count(), cut.parent.end());
   out.rebuilt = static_cast<int>(split.size());
+  // The halves carry every field exactly (a midpoint's temperature is the
+  // P1 field's value there): the stored heat changes only with the volume
+  // the put-back moves, at the temperature where it moves.
   take_fields(fields, out);
-  if (out.temperature.size() > 0 && body.thermal)
-    keep_stored_heat(old, old_temperature.data(), out.mesh, out.temperature, fresh, *body.thermal);
   return out;
 }
 
@@ -331,6 +335,10 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
         why_not = "locally remeshed body fitted to the dies: " + fault;
         return false;
       }
+      if (const std::string lost = scene::condition_losing_faces(body.conditions, part, local.mesh); !lost.empty()) {
+        why_not = "locally remeshed body has no face for boundary " + lost;
+        return false;
+      }
     }
     out.worst = worst_quality(local.mesh); // the kept tets too: a border bisection splits some
     if (out.worst >= spec.quality) return true;
@@ -452,7 +460,8 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
       std::vector<char> fresh_nodes(local.mesh.nodes.size(), 0);
       for (std::size_t n = 0; n < fresh_nodes.size(); ++n)
         fresh_nodes[n] = local.old_node[n] < 0;
-      keep_stored_heat(part, part_temperature, local.mesh, out.temperature, fresh_nodes, *body.thermal);
+      keep_stored_heat(part, part_temperature, out.surface == RegionSurface::kept ? local.mesh : before_fit,
+                       out.temperature, fresh_nodes, *body.thermal);
     }
   }
   out.mesh = std::move(local.mesh);

@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -175,6 +176,22 @@ void settle_on_old_surface(mesh::TetMesh& out, const mesh::TetMesh& body, const 
     const auto& [normal, offset] = plane->second;
     for (int v : out.boundary_faces[f])
       if (movable[v]) out.nodes[v] -= (normal.dot(out.nodes[v]) - offset) * normal;
+  }
+  // A region's remesh can put a facet of a flat patch onto a kept node off
+  // its plane (a node 0.18 mm inside the connecting rod's symmetry plane):
+  // the tag would no longer be flat, and the next remesh would move the
+  // whole plane as a curved patch. Such a result is refused.
+  for (std::size_t f = 0; f < out.boundary_faces.size(); ++f) {
+    const auto plane = planes.find(out.boundary_tags[f]);
+    if (plane == planes.end() || mesh::in_plane(out, out.boundary_faces[f], plane->second)) continue;
+    const auto& [normal, offset] = plane->second;
+    double off = 0.0;
+    for (int v : out.boundary_faces[f])
+      off = std::max(off, std::abs(normal.dot(out.nodes[v]) - offset));
+    char text[160];
+    std::snprintf(text, sizeof text, "a face of the flat boundary patch with tag %d lies %.3g mm off its plane",
+                  plane->first, off);
+    throw RunError(text);
   }
   std::vector<char> restorable = inside_curved_patches(out, curved_tags(body, patch, tag_of_patch));
   for (std::size_t n = 0; n < restorable.size(); ++n)

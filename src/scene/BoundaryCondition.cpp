@@ -47,6 +47,14 @@ std::vector<int> select_faces(const mesh::TetMesh& mesh, const FaceSelection& s)
   return faces;
 }
 
+std::string condition_losing_faces(const std::vector<BoundaryCondition>& conditions, const mesh::TetMesh& before,
+                                   const mesh::TetMesh& after) {
+  for (const BoundaryCondition& bc : conditions)
+    if (select_faces(after, bc.faces).empty() && !select_faces(before, bc.faces).empty())
+      return "condition '" + bc.name + "'";
+  return {};
+}
+
 std::vector<int> face_nodes(const mesh::TetMesh& mesh, const std::vector<int>& faces) {
   std::vector<int> nodes;
   for (int f : faces)

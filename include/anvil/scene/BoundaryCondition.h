@@ -39,6 +39,12 @@ struct BoundaryCondition {
 /// Boundary faces (indices into mesh.boundary_faces) selected by `s`.
 std::vector<int> select_faces(const mesh::TetMesh& mesh, const FaceSelection& s);
 
+/// The first of `conditions` that selects faces of `before` but none of
+/// `after` (a new mesh of the same body), as "condition 'name'"; empty
+/// when every condition keeps its faces.
+std::string condition_losing_faces(const std::vector<BoundaryCondition>& conditions, const mesh::TetMesh& before,
+                                   const mesh::TetMesh& after);
+
 /// Nodes of the selected faces, sorted and unique.
 std::vector<int> face_nodes(const mesh::TetMesh& mesh, const std::vector<int>& faces);
 
