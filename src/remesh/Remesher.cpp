@@ -316,11 +316,8 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
         append_values(temperature, local->temperature.data(), local->temperature.size());
         // The heat of the volume the fit to the dies moved (budget apart, as for a whole remesh).
         if (const auto& body_thermal = scene.bodies[b].thermal)
-          state.heat.remeshing +=
-              thermal::enthalpy(nodal_mass(local->mesh, *body_thermal), mesh::whole_range(local->mesh),
-                                {local->temperature.data(), std::size_t(local->temperature.size())}) -
-              thermal::enthalpy(nodal_mass(part, *body_thermal), mesh::whole_range(part),
-                                {part_temperature, std::size_t(range.node_count)});
+          state.heat.remeshing += stored_heat(local->mesh, local->temperature.data(), *body_thermal) -
+                                  stored_heat(part, part_temperature, *body_thermal);
       }
       if (flow_lines) append_values(material, local->material.data(), local->material.size());
       append_values(strain, local->strain.data(), local->strain.size());
@@ -445,8 +442,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       Eigen::VectorXd fresh_temperature =
           interpolate_nodal(part, Eigen::Map<const Eigen::VectorXd>(part_temperature, range.node_count), 1, at);
       if (const auto& body_thermal = scene.bodies[b].thermal) {
-        const double before = thermal::enthalpy(nodal_mass(part, *body_thermal), mesh::whole_range(part),
-                                                {part_temperature, std::size_t(range.node_count)});
+        const double before = stored_heat(part, part_temperature, *body_thermal);
         const double by_volume = before * relative(volume_after, volume_before);
         const thermal::NodalMass m = nodal_mass(fresh, *body_thermal);
         const mesh::MeshRange all = mesh::whole_range(fresh);

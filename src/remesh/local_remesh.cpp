@@ -122,8 +122,8 @@ mesh::Bisection bisect_carrying(BodyFields& fields, const std::vector<std::array
 /// hundreds of degrees (a split's midpoints put 0.2 mm into a die).
 void keep_stored_heat(const mesh::TetMesh& old, const double* old_t, const mesh::TetMesh& part, Eigen::VectorXd& t,
                       const std::vector<char>& fresh, const thermal::ThermalMaterial& material) {
-  const thermal::NodalMass m_old = nodal_mass(old, material), m_new = nodal_mass(part, material);
-  const double before = thermal::enthalpy(m_old, mesh::whole_range(old), {old_t, std::size_t(old.node_count())});
+  const thermal::NodalMass m_new = nodal_mass(part, material);
+  const double before = stored_heat(old, old_t, material);
   const double after = thermal::enthalpy(m_new, mesh::whole_range(part), {t.data(), std::size_t(part.node_count())});
   double capacity = 0.0;
   for (int n = 0; n < part.node_count(); ++n)
@@ -210,6 +210,10 @@ bool bisect_long_border_edges(BodyFields& fields, std::vector<char>& region, dou
 
 thermal::NodalMass nodal_mass(const mesh::TetMesh& part, const thermal::ThermalMaterial& material) {
   return thermal::nodal_mass(part, std::vector<const thermal::ThermalMaterial*>(part.tets.size(), &material));
+}
+
+double stored_heat(const mesh::TetMesh& part, const double* t, const thermal::ThermalMaterial& material) {
+  return thermal::enthalpy(nodal_mass(part, material), mesh::whole_range(part), {t, std::size_t(part.node_count())});
 }
 
 double relative(double after, double before) {

@@ -180,7 +180,9 @@ void settle_on_old_surface(mesh::TetMesh& out, const mesh::TetMesh& body, const 
   // A region's remesh can put a facet of a flat patch onto a kept node off
   // its plane (a node 0.18 mm inside the connecting rod's symmetry plane):
   // the tag would no longer be flat, and the next remesh would move the
-  // whole plane as a curved patch. Such a result is refused.
+  // whole plane as a curved patch. Such a result is refused. Checked after
+  // every snap: a node on two flat patches that meet at a slant is moved by
+  // both.
   for (std::size_t f = 0; f < out.boundary_faces.size(); ++f) {
     const auto plane = planes.find(out.boundary_tags[f]);
     if (plane == planes.end() || mesh::in_plane(out, out.boundary_faces[f], plane->second)) continue;

@@ -92,4 +92,7 @@ double relative(double after, double before);
 /// The nodal thermal mass of a body `part` of one thermal material.
 thermal::NodalMass nodal_mass(const mesh::TetMesh& part, const thermal::ThermalMaterial& material);
 
+/// The heat (mJ) a body `part` of one thermal material stores at the nodal temperatures `t`.
+double stored_heat(const mesh::TetMesh& part, const double* t, const thermal::ThermalMaterial& material);
+
 } // namespace anvil::remesh
