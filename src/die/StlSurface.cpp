@@ -74,6 +74,17 @@ public:
     return projection(x, tree_.closest_point_and_primitive(Point3(x.x(), x.y(), x.z()), hint));
   }
 
+  std::optional<SurfaceProjection> project_within(const mesh::Point& x, double reach) const override {
+    // CGAL's search keeps its best point so far and visits only the boxes
+    // closer than it: started from a point at distance `reach` that no
+    // facet owns, it looks inside that ball alone, and gives the start back
+    // when no facet is closer.
+    const Point3 query(x.x(), x.y(), x.z()), start(x.x() + reach, x.y(), x.z());
+    const Tree::Point_and_primitive_id found = tree_.closest_point_and_primitive(query, {start, *faces(mesh_).first});
+    if (found.first == start) return std::nullopt;
+    return projection(x, found);
+  }
+
   const SurfaceTriangles& triangles() const override { return triangles_; }
   std::string describe() const override { return description_; }
 

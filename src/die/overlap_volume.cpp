@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <vector>
 
 namespace anvil::die {
@@ -27,12 +29,12 @@ const std::array<Eigen::Vector2d, n* n> samples = [] {
 
 /// overlap_volume's share of boundary face `f`.
 double overlap_under_face(const mesh::TetMesh& mesh, int f, const DieSurface& surface, const Eigen::Vector3d& shift,
-                          double deepest) {
+                          double deepest, const SurfaceProjection& near) {
   const mesh::Triangle& face = mesh.boundary_faces[f];
   const mesh::Point &a = mesh.nodes[face[0]], &b = mesh.nodes[face[1]], &c = mesh.nodes[face[2]];
   const mesh::Point centroid = (a + b + c) / 3.0;
   const double radius = std::max({(a - centroid).norm(), (b - centroid).norm(), (c - centroid).norm()});
-  const SurfaceProjection middle = surface.project(centroid - shift);
+  const SurfaceProjection middle = surface.project_near(centroid - shift, near);
   if (middle.distance > radius) return 0.0; // the die surface misses the face
   const Eigen::Vector3d area = mesh::area_vector(mesh, face);
   const double area_norm = area.norm();
@@ -60,26 +62,52 @@ double overlap_volume(const mesh::TetMesh& mesh, const mesh::MeshRange& body, co
   // from the die than the face's diameter plus `deepest` has no point within
   // `deepest` of it, and adds nothing (every sample would be outside or past
   // the far side). One projection per corner node tells most faces away from
-  // the die apart, where the face's own test needs one per face.
+  // the die apart, where the face's own test needs one per face; it looks
+  // for the die only as far as the largest such bound of the corner's faces
+  // (project_within), and what it finds starts the search of the faces'
+  // centroids.
+  auto diameter = [&](int f) {
+    const mesh::Triangle& face = mesh.boundary_faces[f];
+    double longest = 0.0;
+    for (int i = 0; i < 3; ++i)
+      longest = std::max(longest, (mesh.nodes[face[i]] - mesh.nodes[face[(i + 1) % 3]]).norm());
+    return longest;
+  };
+  constexpr double kMargin = 1.001; // the bound's own rounding
   std::vector<int> corner_of(mesh.nodes.size(), -1);
   std::vector<int> corners;
-  for (int f = body.first_face; f < body.first_face + body.face_count; ++f)
-    for (const int v : mesh.boundary_faces[f])
-      if (corner_of[v] < 0) corner_of[v] = static_cast<int>(corners.size()), corners.push_back(v);
-  const std::vector<double> away =
-      processes::share_out(static_cast<int>(corners.size()), 1, [&](int k, double* distance) {
-        *distance = std::abs(surface.project(mesh.nodes[corners[k]] - shift).distance);
+  std::vector<double> reach;
+  for (int f = body.first_face; f < body.first_face + body.face_count; ++f) {
+    const double bound = kMargin * (diameter(f) + deepest);
+    for (const int v : mesh.boundary_faces[f]) {
+      if (corner_of[v] < 0) corner_of[v] = static_cast<int>(corners.size()), corners.push_back(v), reach.push_back(0.0);
+      reach[corner_of[v]] = std::max(reach[corner_of[v]], bound);
+    }
+  }
+  // Per corner: its distance to the die (infinite beyond its reach), the facet and closest point found.
+  constexpr int kWidth = 5;
+  const std::vector<double> found =
+      processes::share_out(static_cast<int>(corners.size()), kWidth, [&](int k, double* out) {
+        out[0] = std::numeric_limits<double>::infinity(), out[1] = -1.0;
+        const std::optional<SurfaceProjection> p = surface.project_within(mesh.nodes[corners[k]] - shift, reach[k]);
+        if (!p) return;
+        out[0] = std::abs(p->distance), out[1] = p->facet;
+        Eigen::Map<Eigen::Vector3d>(out + 2) = p->point;
       });
   const std::vector<double> under = processes::share_out(body.face_count, 1, [&](int k, double* volume) {
     const mesh::Triangle& face = mesh.boundary_faces[body.first_face + k];
-    double diameter = 0.0, farthest = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      diameter = std::max(diameter, (mesh.nodes[face[i]] - mesh.nodes[face[(i + 1) % 3]]).norm());
-      farthest = std::max(farthest, away[corner_of[face[i]]]);
+    int nearest = corner_of[face[0]];
+    double farthest = 0.0;
+    for (const int v : face) {
+      const int c = corner_of[v];
+      farthest = std::max(farthest, found[kWidth * c]);
+      if (found[kWidth * c] < found[kWidth * nearest]) nearest = c;
     }
-    *volume = farthest > 1.001 * (diameter + deepest)
-                  ? 0.0
-                  : overlap_under_face(mesh, body.first_face + k, surface, shift, deepest);
+    if (farthest > kMargin * (diameter(body.first_face + k) + deepest)) return;
+    SurfaceProjection near;
+    near.point = Eigen::Map<const Eigen::Vector3d>(&found[kWidth * nearest + 2]);
+    near.facet = static_cast<int>(found[kWidth * nearest + 1]);
+    *volume = overlap_under_face(mesh, body.first_face + k, surface, shift, deepest, near);
   });
   double volume = 0.0;
   for (const double v : under) // in face order: the same sum on any number of processes

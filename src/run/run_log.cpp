@@ -6,7 +6,7 @@
 #include "anvil/core/processes.h"
 #include "anvil/scene/damage_peak.h"
 
-#include <tbb/info.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -79,11 +79,13 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
   const int free = disc.solver->free_count();
   log::info("unknowns: %d (velocity and pressure, after %d prescribed)", free,
             static_cast<int>(disc.imposed.prescribed.size()) - free);
+  // The threads a process may use (main's tbb::global_control: its share
+  // of the cores), not the machine's default.
+  const int threads = static_cast<int>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d process%s x %d thread%s",
             solver::to_string(disc.solver->linear_solver().kind()).c_str(),
             solver::to_string(c.linear_solver.kind).c_str(), c.newton.tolerance, c.newton.increment_tolerance,
-            processes::count(), processes::count() > 1 ? "es" : "", tbb::info::default_concurrency(),
-            tbb::info::default_concurrency() > 1 ? "s" : "");
+            processes::count(), processes::count() > 1 ? "es" : "", threads, threads > 1 ? "s" : "");
   if (c.time.enabled) {
     const TimeSpec& t = c.time;
     log::info(

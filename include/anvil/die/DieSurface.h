@@ -7,7 +7,9 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +49,16 @@ public:
   virtual SurfaceProjection project_near(const mesh::Point& x, const SurfaceProjection& near) const {
     (void)near;
     return project(x);
+  }
+  /// project(x) when the surface comes closer to x than `reach` (mm),
+  /// nothing otherwise. A triangulated surface bounds its search to that
+  /// ball, so a point far from the die costs a few bounding boxes instead of
+  /// a whole search (most of a body's nodes, when the question is only
+  /// whether the die is near).
+  virtual std::optional<SurfaceProjection> project_within(const mesh::Point& x, double reach) const {
+    const SurfaceProjection p = project(x);
+    if (std::abs(p.distance) < reach) return p;
+    return std::nullopt;
   }
   /// The surface as triangles in the die frame (what the VTK series shows).
   virtual const SurfaceTriangles& triangles() const = 0;
