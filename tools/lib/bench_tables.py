@@ -5,6 +5,7 @@ keep their output in a log and call this to write their table into docs/:
     bench_tables.py increment LOG [COMMAND]        docs/performance.md, block "blocks"
     bench_tables.py mpi LOG [COMMAND]              docs/parallel-runs.md, block "blocks"
     bench_tables.py preconditioners LOG [COMMAND]  docs/linear-solve.md, block "preconditioners"
+    bench_tables.py growth LOG [COMMAND]           docs/linear-solve.md, block "growth"
 COMMAND, the benchmark as it was run, heads the table.
 A line of anvil_bench (tools/src/bench_increment.cpp), optionally after a
 label and a colon: "PROBLEM nodes N unknowns U SOLVER newton K ... per solve:
@@ -116,7 +117,26 @@ def preconditioners(log, command=""):
                             heading(command) + doc_figures.table(header, lines))
 
 
+def growth(log, command=""):
+    """Krylov iterations per solve of each variant (label) at each size, and
+    their growth from the smallest size to the largest."""
+    variants = OrderedDict()
+    for r in runs(log):
+        variants.setdefault(r["label"].strip(), OrderedDict())[int(r["nodes"])] = float(r["krylov"])
+    sizes = sorted({n for v in variants.values() for n in v})
+    lines = []
+    for label, by_size in variants.items():
+        cells = [f"{by_size[n]:.1f}" if n in by_size else "–" for n in sizes]
+        measured = [n for n in sizes if n in by_size]
+        rise = by_size[measured[-1]] / by_size[measured[0]] if len(measured) > 1 else None
+        lines.append([label, *cells, f"**{rise:.2f}x** ({thousands(measured[0])} to {thousands(measured[-1])})"
+                      if rise else "–"])
+    header = ["Norton-Hoff m = 0.1 block", *(f"{thousands(n)} nodes" for n in sizes), "growth"]
+    doc_figures.write_block("linear-solve.md", "tools/bench_increment --growth", "growth",
+                            heading(command) + doc_figures.table(header, lines))
+
+
 if __name__ == "__main__":
-    if len(sys.argv) not in (3, 4) or sys.argv[1] not in ("increment", "mpi", "preconditioners"):
+    if len(sys.argv) not in (3, 4) or sys.argv[1] not in ("increment", "mpi", "preconditioners", "growth"):
         sys.exit(__doc__)
     globals()[sys.argv[1]](*sys.argv[2:])
