@@ -66,22 +66,21 @@ double overlap_volume(const mesh::TetMesh& mesh, const mesh::MeshRange& body, co
   // for the die only as far as the largest such bound of the corner's faces
   // (project_within), and what it finds starts the search of the faces'
   // centroids.
-  auto diameter = [&](int f) {
-    const mesh::Triangle& face = mesh.boundary_faces[f];
-    double longest = 0.0;
-    for (int i = 0; i < 3; ++i)
-      longest = std::max(longest, (mesh.nodes[face[i]] - mesh.nodes[face[(i + 1) % 3]]).norm());
-    return longest;
-  };
+  // Per face: the distance beyond which a corner rules it out.
   constexpr double kMargin = 1.001; // the bound's own rounding
+  std::vector<double> bound(body.face_count);
   std::vector<int> corner_of(mesh.nodes.size(), -1);
   std::vector<int> corners;
-  std::vector<double> reach;
-  for (int f = body.first_face; f < body.first_face + body.face_count; ++f) {
-    const double bound = kMargin * (diameter(f) + deepest);
-    for (const int v : mesh.boundary_faces[f]) {
+  std::vector<double> reach; // per corner: the largest bound of its faces
+  for (int k = 0; k < body.face_count; ++k) {
+    const mesh::Triangle& face = mesh.boundary_faces[body.first_face + k];
+    double diameter = 0.0;
+    for (int i = 0; i < 3; ++i)
+      diameter = std::max(diameter, (mesh.nodes[face[i]] - mesh.nodes[face[(i + 1) % 3]]).norm());
+    bound[k] = kMargin * (diameter + deepest);
+    for (const int v : face) {
       if (corner_of[v] < 0) corner_of[v] = static_cast<int>(corners.size()), corners.push_back(v), reach.push_back(0.0);
-      reach[corner_of[v]] = std::max(reach[corner_of[v]], bound);
+      reach[corner_of[v]] = std::max(reach[corner_of[v]], bound[k]);
     }
   }
   // Per corner: its distance to the die (infinite beyond its reach), the facet and closest point found.
@@ -103,7 +102,7 @@ double overlap_volume(const mesh::TetMesh& mesh, const mesh::MeshRange& body, co
       farthest = std::max(farthest, found[kWidth * c]);
       if (found[kWidth * c] < found[kWidth * nearest]) nearest = c;
     }
-    if (farthest > kMargin * (diameter(body.first_face + k) + deepest)) return;
+    if (farthest > bound[k]) return;
     SurfaceProjection near;
     near.point = Eigen::Map<const Eigen::Vector3d>(&found[kWidth * nearest + 2]);
     near.facet = static_cast<int>(found[kWidth * nearest + 1]);
