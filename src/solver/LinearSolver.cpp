@@ -114,10 +114,15 @@ template <class Solver> bool factorize_with(Solver& s, const ColumnMatrix& a, bo
   return s.info() == Eigen::Success;
 }
 
+/// Decades of residual reduction a solve made (at least one).
+double decades(const KrylovOutcome& k) {
+  return std::max(1.0, -std::log10(std::max(k.reduction, 1e-300)));
+}
+
 /// Iterations per decade of residual reduction: comparable between solves
 /// to different tolerances.
 double rate(const KrylovOutcome& k) {
-  return k.iterations / std::max(1.0, -std::log10(std::max(k.reduction, 1e-300)));
+  return k.iterations / decades(k);
 }
 } // namespace
 
@@ -189,10 +194,13 @@ bool LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double 
       iterations_ += k.iterations;
     }
     if (k.converged) {
-      if (setup_rate_ == 0.0)
+      if (setup_rate_ == 0.0) {
         setup_rate_ = std::max(rate(k), 1e-3);
-      else if (rate(k) > settings_.reuse_growth * setup_rate_)
-        refresh_ = true;
+        extra_iterations_ = 0.0;
+      } else {
+        extra_iterations_ += std::max(0.0, k.iterations - setup_rate_ * decades(k));
+        if (extra_iterations_ > settings_.setup_cost) refresh_ = true;
+      }
       return true;
     }
     log::info("    linear solver: FGMRES stopped after %d iterations (%s, residual reduced to %.2e of %.2e asked); "

@@ -163,8 +163,8 @@ TEST_CASE("the iterative solvers give the direct solver's answer", "[verificatio
   const std::vector<std::pair<std::string, solver::LinearSolverSettings>> solvers = {
       {"umfpack", {K::umfpack}},
       {"mumps", {K::mumps}},
-      {"fgmres bfbt", {K::fgmres, true, 1.5, solver::SchurApproximation::bfbt}},
-      {"fgmres mass", {K::fgmres, true, 1.5, solver::SchurApproximation::mass}},
+      {"fgmres bfbt", {K::fgmres, solver::SchurApproximation::bfbt}},
+      {"fgmres mass", {K::fgmres, solver::SchurApproximation::mass}},
       {"minres", {K::minres}}};
   double reference = 0.0;
   for (const auto& [name, settings] : solvers) {

@@ -42,13 +42,18 @@ SchurApproximation schur_approximation(const std::string& name); ///< throws Inp
 
 struct LinearSolverSettings {
   LinearSolverKind kind = LinearSolverKind::automatic;
-  /// Keep the Krylov preconditioner across Newton iterations and increments
-  /// while it stays effective: set it up again when the iterations per decade
-  /// of residual reduction exceed `reuse_growth` × their value right after
-  /// the last set-up, when a solve fails, or when the pattern changes.
-  bool reuse_preconditioner = true;
-  double reuse_growth = 1.5;
   SchurApproximation schur = SchurApproximation::bfbt; ///< fgmres
+  /// Keep the Krylov preconditioner across Newton iterations and increments
+  /// while it pays: set it up again once the Krylov iterations the kept
+  /// set-up has cost beyond a fresh one's (at the iterations per decade of
+  /// residual reduction right after the last set-up) add up to
+  /// `setup_cost` iterations, when a solve fails, or when the pattern changes.
+  bool reuse_preconditioner = true;
+  /// A set-up's cost in Krylov iterations (ML and BFBT on the Norton-Hoff
+  /// block: 16 at 13k nodes, 19 at 53k; `anvil_bench norton_hoff N fgmres
+  /// --no-reuse`, set-up time over time per iteration). Counted, not timed,
+  /// so that a run stays the same from one run to the next.
+  double setup_cost = 16.0;
 };
 
 class LinearSolver {
@@ -72,6 +77,10 @@ public:
   bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance);
   /// The pattern of the next matrix differs (direct solvers analyse it again).
   void pattern_changed() { analysed_ = false; }
+  /// The next matrix is another operator than the last (the law's tangent
+  /// after the predictor's Newtonian stand-in): a kept preconditioner is set
+  /// up again.
+  void operator_changed() { refresh_ = true; }
   /// Back to the state of a new solver: no kept preconditioner, no MUMPS
   /// fallback. A run resumed from a checkpoint starts with a new solver; the
   /// uninterrupted run restarts its own at each checkpoint, so both solve the
@@ -102,9 +111,10 @@ private:
   int analyses_ = 0;
   int iterations_ = 0;
   int setups_ = 0;
-  double setup_rate_ = 0.0; ///< iterations per decade in the first solve after the last set-up
-  bool refresh_ = true;     ///< the next factorize() sets the preconditioner up again
-  bool reused_ = false;     ///< the last factorize() kept an earlier preconditioner
+  double setup_rate_ = 0.0;       ///< iterations per decade in the first solve after the last set-up
+  double extra_iterations_ = 0.0; ///< beyond setup_rate_'s, over the solves on the kept set-up
+  bool refresh_ = true;           ///< the next factorize() sets the preconditioner up again
+  bool reused_ = false;           ///< the last factorize() kept an earlier preconditioner
 };
 
 } // namespace anvil::solver
