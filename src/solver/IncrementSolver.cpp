@@ -225,7 +225,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     report.linear_iterations += solve(newtonian_problem, predictor, unknowns).linear_iterations;
     // Its preconditioner is the uniform viscosity's: kept for the law's
     // tangent, with its rigid zones, the first Newton solve took 42 Krylov
-    // iterations at 13k nodes and 98 at 214k instead of 20-30.
+    // iterations at 13k nodes and 98 at 214k, against 14 and 25 on a set-up
+    // of its own (docs/linear-solve.md).
     linear_solver_.operator_changed();
     if (settings.verbose)
       for (const auto& stand_in : stand_ins)
