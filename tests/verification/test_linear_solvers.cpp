@@ -18,13 +18,13 @@ namespace {
 /// punch the block stays rigid, with a viscosity about 3e3 times that under
 /// it (ε̄̇₀ = 1e-4 1/s against ε̄̇ ~ 0.1 1/s, ratio^(1−m)).
 struct Punch {
-  mesh::TetMesh mesh = mesh::make_box(mesh::Point::Zero(), mesh::Point(20, 20, 10), {10, 10, 5});
+  mesh::TetMesh mesh;
   scene::ImposedConditions imposed;
   std::vector<int> punch_nodes;
-  Punch();
 };
 
-Punch::Punch() {
+Punch punch_block() {
+  Punch p{mesh::make_box(mesh::Point::Zero(), mesh::Point(20, 20, 10), {10, 10, 5}), {}, {}};
   scene::BoundaryCondition base, punch;
   base.kind = scene::BoundaryKind::sticking_plate;
   base.faces.tag = 5;
@@ -32,13 +32,14 @@ Punch::Punch() {
   punch.kind = scene::BoundaryKind::velocity;
   punch.faces.plane_point = mesh::Point(0, 0, 10);
   punch.velocity = {0.0, 0.0, -1.0};
-  imposed = scene::impose(mesh, {base});
-  for (int node : scene::face_nodes(mesh, scene::select_faces(mesh, punch.faces)))
-    if (mesh.nodes[node].x() <= 10.0 + 1e-9) {
-      punch_nodes.push_back(node);
+  p.imposed = scene::impose(p.mesh, {base});
+  for (int node : scene::face_nodes(p.mesh, scene::select_faces(p.mesh, punch.faces)))
+    if (p.mesh.nodes[node].x() <= 10.0 + 1e-9) {
+      p.punch_nodes.push_back(node);
       for (int c = 0; c < 3; ++c)
-        imposed.prescribed[4 * node + c] = 1, imposed.values[4 * node + c] = c == 2 ? -1.0 : 0.0;
+        p.imposed.prescribed[4 * node + c] = 1, p.imposed.values[4 * node + c] = c == 2 ? -1.0 : 0.0;
     }
+  return p;
 }
 
 } // namespace
@@ -47,7 +48,7 @@ TEST_CASE("Norton-Hoff m = 0.1 with a rigid zone: FGMRES gives MUMPS's punch loa
   // Newton from rest to tolerance 1e-10: the loads of two solvers agree to
   // ~1e-9; asserted at 1e-7.
   const material::NortonHoff law(100.0, 0.1, 1e-4);
-  const Punch p;
+  const Punch p = punch_block();
   const auto& [mesh, imposed, punch_nodes] = p;
   using K = solver::LinearSolverKind;
   const std::vector<std::pair<std::string, solver::LinearSolverSettings>> solvers = {
@@ -82,7 +83,7 @@ TEST_CASE("The predictor's preconditioner is set up again for the law's tangent"
   // kept, the first Newton solve took three times the Krylov iterations
   // (42 against 14 at 13k nodes). Predictor and one Newton iteration: two set-ups.
   const material::NortonHoff law(100.0, 0.1, 1e-4);
-  const Punch p;
+  const Punch p = punch_block();
   Timers timers;
   solver::IncrementSolver solver(p.mesh, p.imposed.prescribed, {solver::LinearSolverKind::fgmres}, timers);
   fem::BodyUnknowns u{p.imposed.values, Eigen::VectorXd::Zero(3 * p.mesh.tet_count())};
