@@ -66,8 +66,13 @@ double krylov_tolerance(const NewtonSettings& settings, bool linear_problem, boo
 /// throughout; 12.3 with the far phase on the material alone, 8.7 and 13 at
 /// most with it on material and friction. Every increment in the far phase
 /// (kFarStart = 0): the same there, but cases/upsetting.yaml took 225
-/// iterations instead of 173 (185 with kFarStart = 0.1).
-constexpr double kFarSensitivity = 0.5, kNearSolution = 1e-2, kFarStart = 0.1;
+/// iterations instead of 173 (185 with kFarStart = 0.1). An increment whose
+/// first step the line search cuts to kFarCut or less starts far too,
+/// whatever its residual: after a local remesh, hot_closed_die_flash's
+/// increment 32 started at 0.045, took steps of 1/8 and 1/4, then a dozen
+/// half steps, 26 Newton iterations in all; 17 from its second iteration in
+/// the far phase.
+constexpr double kFarSensitivity = 0.5, kNearSolution = 1e-2, kFarStart = 0.1, kFarCut = 0.25;
 /// The stiffened tangent only guards against overshoot: when two full steps
 /// in a row lower the residual by less than this factor each, it is itself
 /// the slow part (a linear rate of 0.9-0.96 for 20 steps, measured in
@@ -321,8 +326,9 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
                                          [](const NodalTerm* term) { return term->set_follows_iterates(); });
     forcing = krylov_tolerance(settings, linear_problem, set_follows, residual_now, previous_residual, forcing);
     previous_residual = residual_now;
-    // The tangent the line search below assembles is the next direction's.
-    if (it == 1 && residual_now > kFarStart) { // its first tangent again, stiffened
+    const bool first_cut = it == 2 && !far && report.iterations.back().step <= kFarCut && residual_now > kNearSolution;
+    if ((it == 1 && residual_now > kFarStart) || first_cut) { // this iterate's tangent again, stiffened
+      if (first_cut && settings.verbose) log::detail("    far phase: the first step was cut");
       far = true;
       set_tangent_phase(problem, true);
       merit = evaluate(problem, unknowns);

@@ -9,6 +9,7 @@
 #include <ml_utils.h>
 #include <petscksp.h>
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,6 +55,8 @@ struct KrylovSolver::Impl {
   Vec pressure_mass = nullptr;
   Vec coordinates = nullptr;
   bool user_tolerance = false; ///< -ksp_rtol given: it replaces the Newton-driven tolerance
+  PetscReal tolerance = 0.0;   ///< the relative tolerance after the options (the user's, if given)
+  PetscInt max_iterations = 0; ///< after the options (500, or -ksp_max_it)
   bool set_up = false;         ///< the splits' solvers exist
 
   ~Impl() { destroy(); }
@@ -136,6 +139,7 @@ struct KrylovSolver::Impl {
     PetscBool given = PETSC_FALSE;
     petsc::check_options(PetscOptionsHasName(nullptr, nullptr, "-ksp_rtol", &given));
     user_tolerance = given;
+    check(KSPGetTolerances(ksp, &tolerance, nullptr, nullptr, &max_iterations), "creating the Krylov solver");
   }
 
   /// Builds the splits' preconditioners now (the multigrid hierarchies), not
@@ -250,11 +254,12 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
   ++setups_;
 }
 
-KrylovOutcome KrylovSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance) {
+KrylovOutcome KrylovSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance,
+                                  int max_iterations) {
   Impl& s = *impl_;
-  if (!s.user_tolerance)
-    check(KSPSetTolerances(s.ksp, relative_tolerance, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT),
-          "setting the Krylov tolerance");
+  check(KSPSetTolerances(s.ksp, s.user_tolerance ? s.tolerance : relative_tolerance, PETSC_DEFAULT, PETSC_DEFAULT,
+                         std::min<PetscInt>(max_iterations, s.max_iterations)),
+        "setting the Krylov tolerance");
   x.setZero(b.size());
   check(KSPSolve(s.ksp, s.rhs.in(b), s.solution.in(x)), "solving the linear system");
   s.solution.out(x);

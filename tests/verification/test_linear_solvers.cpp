@@ -118,3 +118,72 @@ TEST_CASE("contact, friction, several bodies, elastic dies: FGMRES gives MUMPS's
     CHECK(std::abs(loads[1][i].force.z() - loads[0][i].force.z()) <= 1e-6 * std::abs(loads[0][i].force.z()));
   }
 }
+
+TEST_CASE("A kept preconditioner gone stale is stopped at its budget and set up again", "[verification]") {
+  // The budget's mechanism (its gain is measured on whole runs:
+  // docs/linear-solve.md). The punch block's tangent under a uniform
+  // viscosity, then under Norton-Hoff m = 0.1 at its solution (the rigid
+  // zone beside the punch): the second solve takes 49 iterations on the
+  // first set-up and on one of its own. With a set-up's cost set at 4
+  // iterations, the budget (what the first solve took, 36, plus two
+  // set-ups' cost) falls short of it: the solve is stopped there and done
+  // again on a new set-up, to the tolerance. With a cost of 16000 it runs
+  // to the end on the kept set-up.
+  const material::NortonHoff uniform(100.0, 1.0, 1e-4), rigid_plastic(100.0, 0.1, 1e-4);
+  const Punch p = punch_block();
+  const fem::Partition partition = fem::partition_mesh(p.mesh, 1, 0);
+  fem::BodyUnknowns u{p.imposed.values, Eigen::VectorXd::Zero(3 * p.mesh.tet_count())};
+  {
+    Timers timers;
+    solver::IncrementSolver flow(p.mesh, p.imposed.prescribed, {solver::LinearSolverKind::mumps}, timers);
+    solver::NewtonSettings newton;
+    newton.max_iterations = 60;
+    newton.verbose = false;
+    REQUIRE(flow.solve(p.mesh, rigid_plastic, {}, p.imposed.nodal_forces, {}, newton, u).converged);
+  }
+  fem::Assembler assembler(p.mesh, fem::DofMap(p.imposed.prescribed), partition);
+  auto tangent = [&](const material::Material& law) {
+    assembler.assemble(p.mesh, fem::ElementLaws(p.mesh.tet_count(), &law),
+                       std::vector<material::PointState>(p.mesh.tet_count()), u, p.imposed.nodal_forces, {}, true);
+    assembler.finish_tangent(); // the prescribed dofs decoupled
+    return std::pair{assembler.tangent(), assembler.pressure_mass()};
+  };
+  const auto [first, first_mass] = tangent(uniform);
+  const auto [second, second_mass] = tangent(rigid_plastic);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(first.rows()), x;
+  for (int d = 0; d < rhs.size(); ++d)
+    if (!p.imposed.prescribed[d]) rhs[d] = std::sin(0.37 * d); // any right-hand side
+  constexpr double kTolerance = 1e-6;
+  struct Solves {
+    int first, second, setups;
+  };
+  // `setups` set-ups on `first` then (kept or not) on `second`, or on `second` alone.
+  auto solves = [&](double setup_cost, bool from_first) {
+    Timers timers;
+    solver::LinearSolverSettings settings{solver::LinearSolverKind::fgmres};
+    settings.setup_cost = setup_cost;
+    solver::LinearSolver solver(settings, static_cast<int>(rhs.size()), partition, timers);
+    Solves out{0, 0, 0};
+    if (from_first) {
+      REQUIRE(solver.factorize(first, {p.mesh.nodes, first_mass}));
+      REQUIRE(solver.solve(rhs, x, kTolerance));
+      out.first = solver.iterations();
+    }
+    REQUIRE(solver.factorize(second, {p.mesh.nodes, second_mass}));
+    REQUIRE(solver.solve(rhs, x, kTolerance));
+    REQUIRE(solver.kind() == solver::LinearSolverKind::fgmres);
+    CHECK((rhs - second * x).norm() <= 10.0 * kTolerance * rhs.norm()); // to the tolerance, up to round-off
+    out.second = solver.iterations();
+    out.setups = solver.setups();
+    return out;
+  };
+  const Solves fresh = solves(4.0, false), wide = solves(16000.0, true), tight = solves(4.0, true);
+  INFO("first solve " << wide.first << " iterations; on the stale set-up to the end " << wide.second
+                      << "; stopped and set up again " << tight.second << ", of which the new set-up's "
+                      << fresh.second);
+  CHECK(wide.setups == 1);
+  CHECK(tight.setups == 2);
+  const int before_stop = tight.second - fresh.second; // the new set-up's solve is the fresh one
+  CHECK(before_stop <= tight.first + 2 * 4 + 1);
+  CHECK(before_stop < wide.second);
+}
