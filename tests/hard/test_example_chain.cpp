@@ -45,8 +45,12 @@ TEST_CASE("the hub-flange chain runs its five operations to the end", "[hard]") 
   const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
   CHECK((text.find("\"remesh\": \"none\"") != std::string::npos ||
          text.find("\"remesh\": \"along the cut\"") != std::string::npos));
+  // Within the line: its corners, given to 0.1 µm, lie up to 17 nm beyond r 13.
+  double outermost = 0.0;
+  for (const Eigen::Vector2d& corner : chain.operations[3].trim.line)
+    outermost = std::max(outermost, corner.norm());
   for (const mesh::Point& x : trimmed.mesh.nodes)
-    CHECK(x.head<2>().norm() <= 13.0 + 1e-9);
+    CHECK(x.head<2>().norm() <= outermost + 1e-9);
   for (int e = 0; e < trimmed.mesh.tet_count(); ++e)
     CHECK(mesh::quality(trimmed.mesh, e) > 0.0);
   // In air the trimmed part only cools: its hottest node ends colder than
