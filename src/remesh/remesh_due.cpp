@@ -91,7 +91,7 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     // the overlap grow an increment more (to 1.24 % of closed_die_flash's
     // volume at closure, past its 1 % trigger).
     const double overlap = scene.dies.empty() ? 0.0 : state.inside_dies[b];
-    if (!scene.dies.empty() && due_again(overlap, spec.die_overlap * body.initial_volume, left.die_overlap)) {
+    if (due_again(overlap, spec.die_overlap * body.initial_volume, left.die_overlap)) {
       std::snprintf(why, sizeof why, "%.3g%% of its initial volume lies inside the dies",
                     100.0 * overlap / body.initial_volume);
       local = false;

@@ -54,10 +54,9 @@ struct KrylovSolver::Impl {
   Mat schur_preconditioner = nullptr; ///< mass: Ŝ = A11 − diag(M_p/η)
   Vec pressure_mass = nullptr;
   Vec coordinates = nullptr;
-  bool user_tolerance = false; ///< -ksp_rtol given: it replaces the Newton-driven tolerance
-  PetscReal tolerance = 0.0;   ///< the relative tolerance after the options (the user's, if given)
-  PetscInt max_iterations = 0; ///< after the options (500, or -ksp_max_it)
-  bool set_up = false;         ///< the splits' solvers exist
+  std::optional<PetscReal> user_tolerance; ///< -ksp_rtol's: it replaces the Newton-driven tolerance
+  PetscInt max_iterations = 0;             ///< after the options (500, or -ksp_max_it)
+  bool set_up = false;                     ///< the splits' solvers exist
 
   ~Impl() { destroy(); }
   void destroy() {
@@ -136,10 +135,11 @@ struct KrylovSolver::Impl {
     check(KSPConvergedDefaultCreate(&converged), "creating the Krylov solver");
     check(KSPSetConvergenceTest(ksp, converged_unless_interrupted, converged, KSPConvergedDefaultDestroy),
           "creating the Krylov solver");
+    PetscReal tolerance = 0.0;
+    check(KSPGetTolerances(ksp, &tolerance, nullptr, nullptr, &max_iterations), "creating the Krylov solver");
     PetscBool given = PETSC_FALSE;
     petsc::check_options(PetscOptionsHasName(nullptr, nullptr, "-ksp_rtol", &given));
-    user_tolerance = given;
-    check(KSPGetTolerances(ksp, &tolerance, nullptr, nullptr, &max_iterations), "creating the Krylov solver");
+    if (given) user_tolerance = tolerance;
   }
 
   /// Builds the splits' preconditioners now (the multigrid hierarchies), not
@@ -257,7 +257,7 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
 KrylovOutcome KrylovSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance,
                                   int max_iterations) {
   Impl& s = *impl_;
-  check(KSPSetTolerances(s.ksp, s.user_tolerance ? s.tolerance : relative_tolerance, PETSC_DEFAULT, PETSC_DEFAULT,
+  check(KSPSetTolerances(s.ksp, s.user_tolerance.value_or(relative_tolerance), PETSC_DEFAULT, PETSC_DEFAULT,
                          std::min<PetscInt>(max_iterations, s.max_iterations)),
         "setting the Krylov tolerance");
   x.setZero(b.size());

@@ -115,6 +115,10 @@ template <class Solver> bool factorize_with(Solver& s, const ColumnMatrix& a, bo
   return s.info() == Eigen::Success;
 }
 
+/// A solve on a kept set-up may take this many set-ups' cost in iterations
+/// beyond what the set-up's first solve took (LinearSolver::solve).
+constexpr double kStaleSetups = 2.0;
+
 /// Decades of residual reduction to `reduction` (at least one).
 double decades(double reduction) {
   return std::max(1.0, -std::log10(std::max(reduction, 1e-300)));
@@ -132,6 +136,14 @@ double rate(const KrylovOutcome& k) {
 }
 } // namespace
 
+void LinearSolver::set_krylov_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse) {
+  backend_->krylov->set_operator(a, data, reuse);
+  reused_ = reuse;
+  if (reuse) return;
+  ++setups_;
+  setup_rate_ = 0.0; // measured by the next solve
+}
+
 bool LinearSolver::factorize(const fem::SparseMatrix& a, const SaddlePointData& data) {
   matrix_ = &a;
   data_.reset();
@@ -139,14 +151,8 @@ bool LinearSolver::factorize(const fem::SparseMatrix& a, const SaddlePointData& 
   Backend& b = *backend_;
   switch (kind_) {
   case LinearSolverKind::fgmres: {
-    const bool reuse = settings_.reuse_preconditioner && analysed_ && !refresh_;
-    b.krylov->set_operator(a, data, reuse);
-    if (!reuse) {
-      ++setups_;
-      setup_rate_ = 0.0;
-    }
+    set_krylov_operator(a, data, settings_.reuse_preconditioner && analysed_ && !refresh_);
     refresh_ = false;
-    reused_ = reuse;
     if (!analysed_) ++analyses_;
     analysed_ = true;
     return true;
@@ -189,25 +195,22 @@ bool LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double 
   iterations_ = 0;
   switch (kind_) {
   case LinearSolverKind::fgmres: {
-    // On a kept set-up, a solve that has run two set-ups' worth of iterations
+    // On a kept set-up, a solve that has run kStaleSetups set-ups' worth of iterations
     // past what a fresh one takes (at the rate after the set-up) is stopped
     // and done again on a new set-up: the kept one has gone stale (contact
     // nodes joined the active set). Measured over both closed-die cases on 1
     // and 2 processes: 76 solves went past this budget, 41 to 500 iterations
     // (7,803 in all); stopped, their new set-ups solved in 5-23 (11.7 on
     // average), 5,488 iterations with each set-up counted at its cost.
-    const int budget =
-        reused_ ? static_cast<int>(std::ceil(setup_rate_ * decades(relative_tolerance) + 2.0 * settings_.setup_cost))
-                : std::numeric_limits<int>::max();
+    const int budget = reused_ ? static_cast<int>(std::ceil(setup_rate_ * decades(relative_tolerance) +
+                                                            kStaleSetups * settings_.setup_cost))
+                               : std::numeric_limits<int>::max();
     KrylovOutcome k = b.krylov->solve(rhs, x, relative_tolerance, budget);
     iterations_ = k.iterations;
     if (!k.converged && reused_) { // a kept preconditioner may have gone stale: set it up again first
       log::detail("    linear solver: the kept preconditioner stopped after %d iterations (%s); set up again",
                   k.iterations, k.reason.c_str());
-      b.krylov->set_operator(*matrix_, *data_, false);
-      ++setups_;
-      setup_rate_ = 0.0;
-      reused_ = false;
+      set_krylov_operator(*matrix_, *data_, false);
       k = b.krylov->solve(rhs, x, relative_tolerance);
       iterations_ += k.iterations;
     }

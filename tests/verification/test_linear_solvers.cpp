@@ -42,6 +42,14 @@ Punch punch_block() {
   return p;
 }
 
+/// Newton with at most `iterations` iterations, its log off.
+solver::NewtonSettings quiet_newton(int iterations) {
+  solver::NewtonSettings newton;
+  newton.max_iterations = iterations;
+  newton.verbose = false;
+  return newton;
+}
+
 } // namespace
 
 TEST_CASE("Norton-Hoff m = 0.1 with a rigid zone: FGMRES gives MUMPS's punch load", "[verification]") {
@@ -60,10 +68,8 @@ TEST_CASE("Norton-Hoff m = 0.1 with a rigid zone: FGMRES gives MUMPS's punch loa
     Timers timers;
     solver::IncrementSolver solver(mesh, imposed.prescribed, settings, timers);
     fem::BodyUnknowns u{imposed.values, Eigen::VectorXd::Zero(3 * mesh.tet_count())};
-    solver::NewtonSettings newton;
+    solver::NewtonSettings newton = quiet_newton(60); // from rest, the damped phase alone takes about 25 iterations
     newton.tolerance = newton.increment_tolerance = 1e-10;
-    newton.max_iterations = 60; // from rest, the damped phase alone takes about 25 iterations
-    newton.verbose = false;
     const solver::NewtonReport report = solver.solve(mesh, law, {}, imposed.nodal_forces, {}, newton, u);
     INFO(name << ": " << report.failure);
     REQUIRE(report.converged);
@@ -87,10 +93,7 @@ TEST_CASE("The predictor's preconditioner is set up again for the law's tangent"
   Timers timers;
   solver::IncrementSolver solver(p.mesh, p.imposed.prescribed, {solver::LinearSolverKind::fgmres}, timers);
   fem::BodyUnknowns u{p.imposed.values, Eigen::VectorXd::Zero(3 * p.mesh.tet_count())};
-  solver::NewtonSettings newton;
-  newton.max_iterations = 1;
-  newton.verbose = false;
-  solver.solve(p.mesh, law, {}, p.imposed.nodal_forces, {}, newton, u);
+  solver.solve(p.mesh, law, {}, p.imposed.nodal_forces, {}, quiet_newton(1), u);
   CHECK(solver.linear_solver().setups() == 2);
 }
 
@@ -136,10 +139,7 @@ TEST_CASE("A kept preconditioner gone stale is stopped at its budget and set up 
   {
     Timers timers;
     solver::IncrementSolver flow(p.mesh, p.imposed.prescribed, {solver::LinearSolverKind::mumps}, timers);
-    solver::NewtonSettings newton;
-    newton.max_iterations = 60;
-    newton.verbose = false;
-    REQUIRE(flow.solve(p.mesh, rigid_plastic, {}, p.imposed.nodal_forces, {}, newton, u).converged);
+    REQUIRE(flow.solve(p.mesh, rigid_plastic, {}, p.imposed.nodal_forces, {}, quiet_newton(60), u).converged);
   }
   fem::Assembler assembler(p.mesh, fem::DofMap(p.imposed.prescribed), partition);
   auto tangent = [&](const material::Material& law) {

@@ -98,6 +98,9 @@ public:
   int setups() const { return setups_; }
 
 private:
+  /// Hands `a` to the Krylov solver, its preconditioner kept (`reuse`) or set up anew.
+  void set_krylov_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse);
+
   struct Backend;
   LinearSolverSettings settings_;
   int unknowns_;
