@@ -533,6 +533,9 @@ Case read_case_document(const CheckedYaml& doc, const std::vector<std::string>& 
   });
   read_dies(doc, c);
   read_contact_pairs(doc, c);
+  c.linear_solver.geometric_aggregation =
+      std::any_of(c.contact_pairs.begin(), c.contact_pairs.end(),
+                  [](const ContactPairSpec& p) { return p.method.integration == contact::PairIntegration::facet; });
   const YAML::Node contact = section(root, "contact");
   c.contact.penalty = doc.number(contact, "penalty", "contact.penalty");
   c.contact.regularisation = doc.number(contact, "regularisation", "contact.regularisation");

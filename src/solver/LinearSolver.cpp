@@ -94,7 +94,8 @@ void LinearSolver::restart() {
     // A workspace MUMPS had to raise stays raised: the same matrices need it again.
     const int workspace = backend_ && backend_->mumps ? backend_->mumps->workspace_percent() : 0;
     backend_ = std::make_unique<Backend>();
-    if (kind_ == LinearSolverKind::fgmres) backend_->krylov.emplace(settings_.schur, partition_, timers_);
+    if (kind_ == LinearSolverKind::fgmres)
+      backend_->krylov.emplace(settings_.schur, settings_.geometric_aggregation, partition_, timers_);
     if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace(partition_, timers_, workspace);
     backend_->minres.setMaxIterations(20000);
   }

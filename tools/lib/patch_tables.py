@@ -166,9 +166,13 @@ def krylov(directory, anvil):
     """Krylov iterations of the unit-cube patch test (1 MPa) with facet against
     nodal contact on non-matching meshes, whose facet contact rows couple a
     node with many nodes of the other body, for the velocity AMGs an expert
-    can pick; one process, so that the counts do not depend on the cores."""
+    can pick (ML aggregating on the matrix or on the nodes' geometry, its
+    default with facet contact); one process, so that the counts do not
+    depend on the cores."""
     root = doc_figures.ROOT
-    amgs = OrderedDict([("ML (default)", []), ("ML, threshold 0.02", ["-fieldsplit_0_pc_ml_Threshold", "0.02"]),
+    amgs = OrderedDict([("ML (default: geometric aggregation with facet contact)", []),
+                        ("ML, matrix aggregation", ["-fieldsplit_0_pc_ml_Aux", "false"]),
+                        ("ML, geometric aggregation", ["-fieldsplit_0_pc_ml_Aux", "true"]),
                         ("GAMG", ["-fieldsplit_0_pc_type", "gamg"]),
                         ("BoomerAMG", ["-fieldsplit_0_pc_type", "hypre"])])
 

@@ -2,7 +2,8 @@
 // docs/linear-solve.md): flexible GMRES, right-preconditioned by the upper
 // block factorisation
 //   P = [ K̂  Bᵀ ]      K̂ ≈ K: one algebraic-multigrid V-cycle on the
-//       [ 0  Ŝ  ]      velocity block (ML by default; GAMG with the
+//       [ 0  Ŝ  ]      velocity block (ML by default, aggregating on the
+//                      nodes' geometry for facet contact; GAMG with the
 //                      rigid-body near-null space, or hypre BoomerAMG),
 //   Ŝ = −(C + M_p/η) ≈ S = −C − B K⁻¹ Bᵀ: the condensed-bubble block plus
 // the lumped viscosity-scaled pressure mass (Elman, Silvester, Wathen 2014,
@@ -45,8 +46,10 @@ struct KrylovOutcome {
 class KrylovSolver {
 public:
   /// On the rows of `partition`; the matrix's creation timed in `timers`
-  /// (both must outlive the solver).
-  KrylovSolver(SchurApproximation schur, const fem::Partition& partition, Timers& timers);
+  /// (both must outlive the solver). With `geometric_aggregation`, ML
+  /// aggregates the velocity block on a distance Laplacian of the nodes
+  /// (its auxiliary matrix) instead of the block's own couplings.
+  KrylovSolver(SchurApproximation schur, bool geometric_aggregation, const fem::Partition& partition, Timers& timers);
   ~KrylovSolver();
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;
