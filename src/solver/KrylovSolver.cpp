@@ -72,11 +72,11 @@ private:
 /// Facet contact between bodies couples a node with the nodes of every
 /// facet of the other body its facets overlap, many and each weakly where a
 /// coarse facet lies on a fine mesh: aggregates that follow those couplings
-/// cost the Krylov solve 1.6-2.6 times nodal contact's iterations on the
+/// cost the Krylov solve up to 2.6 times nodal contact's iterations on the
 /// patch meshes. ML's auxiliary matrix, a Laplacian of the distances
 /// between the nodes that drops couplings weaker than the threshold,
-/// aggregates on the geometry instead (0.05 took fewer facet iterations
-/// than 0.02 and 0.1 on the patch meshes, docs/linear-solve.md). PETSc reads
+/// aggregates on the geometry instead (0.05 took as few facet iterations
+/// as 0.02 and 0.1 or fewer on every patch pair, docs/linear-solve.md). PETSc reads
 /// these options with the repartitioning's, which acts on several processes
 /// only.
 constexpr std::pair<const char*, const char*> kGeometricAggregation[] = {{"-fieldsplit_0_pc_ml_repartition", "true"},
