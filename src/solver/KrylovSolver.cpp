@@ -11,9 +11,7 @@
 
 #include <algorithm>
 #include <optional>
-#include <span>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace anvil::solver {
@@ -42,32 +40,6 @@ int ml_initial_seed() {
   return static_cast<int>((largest - 1) * (1.0 - (rank + 1) / (size + 1.0)));
 }
 
-/// Options set for one solver's set-up only, where the user gave none: the
-/// options database is the process's, and another solver of the process
-/// (a later run of the test programs, a chain's next operation) must not
-/// read them. PETSc keeps what a preconditioner read after they are gone.
-class TransientOptions {
-public:
-  explicit TransientOptions(std::span<const std::pair<const char*, const char*>> options) {
-    for (const auto& [name, value] : options) {
-      PetscBool present = PETSC_FALSE;
-      petsc::check_options(PetscOptionsHasName(nullptr, nullptr, name, &present));
-      if (present) continue;
-      petsc::check_options(PetscOptionsSetValue(nullptr, name, value));
-      set_.push_back(name);
-    }
-  }
-  ~TransientOptions() {
-    for (const char* name : set_)
-      PetscOptionsClearValue(nullptr, name);
-  }
-  TransientOptions(const TransientOptions&) = delete;
-  TransientOptions& operator=(const TransientOptions&) = delete;
-
-private:
-  std::vector<const char*> set_;
-};
-
 /// ML's options for geometric aggregation (LinearSolverSettings::geometric_aggregation).
 /// Facet contact between bodies couples a node with the nodes of every
 /// facet of the other body its facets overlap, many and each weakly where a
@@ -79,9 +51,8 @@ private:
 /// as 0.02 and 0.1 or fewer on every patch pair, docs/linear-solve.md). PETSc reads
 /// these options with the repartitioning's, which acts on several processes
 /// only.
-constexpr std::pair<const char*, const char*> kGeometricAggregation[] = {{"-fieldsplit_0_pc_ml_repartition", "true"},
-                                                                         {"-fieldsplit_0_pc_ml_Aux", "true"},
-                                                                         {"-fieldsplit_0_pc_ml_AuxThreshold", "0.05"}};
+constexpr const char* kGeometricAggregation =
+    "-fieldsplit_0_pc_ml_repartition true -fieldsplit_0_pc_ml_Aux true -fieldsplit_0_pc_ml_AuxThreshold 0.05";
 
 /// Whether the boolean option `name` is given and true.
 bool option_is_true(const char* name) {
@@ -331,13 +302,16 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
   // the first did.
   ML_set_random_seed(ml_initial_seed());
   const bool first = !s.set_up;
-  std::optional<TransientOptions> geometric; // the sub-solvers read their options at the first set-up
+  // For this solver's first set-up only, where its sub-solvers read their
+  // options: another solver of the process (the test programs, a chain's
+  // next operation) must not read them, and ML keeps what it read.
+  std::optional<ScopedPetscOptions> geometric;
   if (first) {
     // An expert's -fieldsplit_0_pc_ml_Aux decides (the rest as here).
     PetscBool given = PETSC_FALSE;
     petsc::check_options(PetscOptionsHasName(nullptr, nullptr, "-fieldsplit_0_pc_ml_Aux", &given));
     s.ml_coordinates = s.velocity_ml && (given ? option_is_true("-fieldsplit_0_pc_ml_Aux") : s.geometric_aggregation);
-    if (s.ml_coordinates) geometric.emplace(kGeometricAggregation);
+    if (s.ml_coordinates) geometric.emplace(kGeometricAggregation, "anvil's geometric aggregation");
   }
   if (!first && s.ml_coordinates) {
     PetscInt splits = 0;

@@ -27,9 +27,10 @@ public:
   static std::vector<std::string> unused_options();
 };
 
-/// PETSc options of a case (solver.petsc_options), in the options database
-/// for the lifetime of this object; an option also given on the command line
-/// keeps the command line's value. Takes "-name value -flag ..." text.
+/// PETSc options in the options database for the lifetime of this object: a
+/// case's (solver.petsc_options), or anvil's own for one solver's set-up
+/// (KrylovSolver); an option also given on the command line or by a case
+/// keeps that value. Takes "-name value -flag ..." text.
 class ScopedPetscOptions {
 public:
   /// Throws InputError naming `source` when the text is not a list of
