@@ -198,6 +198,12 @@ int run_on_processes(int processes, int argc, char** argv) {
   command.push_back(error ? std::string(argv[0]) : self.string());
   for (int i = 1; i < argc; ++i)
     command.emplace_back(argv[i]);
+  // A process waiting in MPI yields its core rather than spin on it: with
+  // another program busy on one of two cores, hot_closed_die_flash to 3 mm
+  // took 13-167 s spinning and 8-11 s yielding over five runs each (6 s on
+  // one process); on an idle machine the whole run took 23.0-23.8 s against
+  // 23.4-23.9 s yielding, loads equal (docs/parallel-runs.md).
+  setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
   // Open MPI refuses to start as root unless told (CI runs as root).
   if (geteuid() == 0) {
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 0);
