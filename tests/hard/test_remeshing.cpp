@@ -152,10 +152,10 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
 // The worst jump comes at a whole remesh that puts back onto the dies the
 // material their fillets had sunk into (0.3-1 % of the volume), and moves
 // with the flow's round-off (each remesh's mesh changes with it; a run is
-// reproducible on a given number of processes): 3.6 % in this one-process
-// run, 5.5 % on two processes, 6.8 % on one with MUMPS (Newton's answer
+// reproducible on a given number of processes): 3.3 % in this one-process
+// run, 4.9 % on two processes, 7.9 % on one with MUMPS (Newton's answer
 // differs within its tolerance), bounded at 8 %; the trend just after a
-// remesh, 4.1 %, 5.8 % and 3.7 %, bounded at 7 %. The jump is the
+// remesh, 4.6 %, 5.7 % and 5.6 %, bounded at 7 % (measured 2026-11-29). The jump is the
 // difference between two meshes of one body at h 1 mm (two fresh meshes
 // differ by 1.5-4.9 % between themselves); finer meshes lower
 // it at a cost beyond the suite's (docs/remeshing.md). Full stroke is asserted: a node the
