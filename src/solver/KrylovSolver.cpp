@@ -60,6 +60,17 @@ bool option_is_true(const char* name) {
   petsc::check_options(PetscOptionsGetBool(nullptr, nullptr, name, &value, nullptr));
   return value;
 }
+
+/// The solver of split `i` (0: velocity, 1: the Schur complement) of the
+/// Schur fieldsplit `pc`, which owns it.
+KSP split_solver(PC pc, int i, const char* doing) {
+  PetscInt splits = 0;
+  KSP* sub = nullptr;
+  check(PCFieldSplitSchurGetSubKSP(pc, &splits, &sub), doing);
+  KSP solver = sub[i];
+  PetscFree(sub);
+  return solver;
+}
 } // namespace
 
 struct KrylovSolver::Impl {
@@ -79,8 +90,7 @@ struct KrylovSolver::Impl {
   std::optional<PetscReal> user_tolerance; ///< -ksp_rtol's: it replaces the Newton-driven tolerance
   PetscInt max_iterations = 0;             ///< after the options (500, or -ksp_max_it)
   bool set_up = false;                     ///< the splits' solvers exist
-  bool velocity_ml = false;                ///< the velocity AMG is ML (after the options)
-  bool ml_coordinates = false;             ///< ML's aggregation needs the coordinates (its auxiliary matrix)
+  bool ml_coordinates = false;             ///< ML aggregates on the geometry: it needs the coordinates
 
   ~Impl() { destroy(); }
   void destroy() {
@@ -135,8 +145,12 @@ struct KrylovSolver::Impl {
     char velocity_amg[32] = "";
     petsc::check_options(
         PetscOptionsGetString(nullptr, nullptr, "-fieldsplit_0_pc_type", velocity_amg, sizeof velocity_amg, nullptr));
-    velocity_ml = std::string(velocity_amg) == "ml";
+    const bool velocity_ml = std::string(velocity_amg) == "ml";
     set_default_option("-fieldsplit_0_mg_levels_pc_type", velocity_ml ? "pbjacobi" : "jacobi");
+    // An expert's -fieldsplit_0_pc_ml_Aux decides; else the scene's contact.
+    PetscBool aux_given = PETSC_FALSE;
+    petsc::check_options(PetscOptionsHasName(nullptr, nullptr, "-fieldsplit_0_pc_ml_Aux", &aux_given));
+    ml_coordinates = velocity_ml && (aux_given ? option_is_true("-fieldsplit_0_pc_ml_Aux") : geometric_aggregation);
     set_default_option("-fieldsplit_1_bfbt_mg_levels_ksp_type", "chebyshev");
     set_default_option("-fieldsplit_1_bfbt_mg_levels_pc_type", "jacobi");
     set_default_option("-fieldsplit_1_ksp_type", "preonly");
@@ -168,11 +182,10 @@ struct KrylovSolver::Impl {
   }
 
   /// Gives ML the velocity nodes' coordinates (this process's, packed by
-  /// node) before its set-up, when its aggregation needs them. ML forgets
+  /// node) before its set-up, for aggregation on the geometry. ML forgets
   /// them whenever it is set up again (its reset): `again` resets it first,
   /// on its operators, so that its next set-up is a first one and keeps them.
   void give_ml_coordinates(KSP velocity_ksp, bool again) {
-    if (!ml_coordinates) return;
     PC ml = nullptr;
     check(KSPGetPC(velocity_ksp, &ml), "giving the velocity AMG the coordinates");
     if (again) {
@@ -200,7 +213,7 @@ struct KrylovSolver::Impl {
     PetscInt splits = 0;
     KSP* sub = nullptr;
     check(PCFieldSplitSchurGetSubKSP(pc, &splits, &sub), "setting up the preconditioner");
-    if (first) give_ml_coordinates(sub[0], false);
+    if (first && ml_coordinates) give_ml_coordinates(sub[0], false);
     for (PetscInt i = 0; i < splits; ++i)
       check(KSPSetUp(sub[i]), "setting up the preconditioner");
     PetscFree(sub);
@@ -214,12 +227,9 @@ struct KrylovSolver::Impl {
     PetscBool given = PETSC_FALSE;
     petsc::check_options(PetscOptionsHasName(nullptr, nullptr, "-fieldsplit_1_pc_type", &given));
     if (given) return;
-    PetscInt splits = 0;
-    KSP* sub = nullptr;
-    check(PCFieldSplitSchurGetSubKSP(pc, &splits, &sub), "setting up the Schur preconditioner");
     PC schur_pc = nullptr;
-    check(KSPGetPC(sub[1], &schur_pc), "setting up the Schur preconditioner");
-    PetscFree(sub);
+    check(KSPGetPC(split_solver(pc, 1, "setting up the Schur preconditioner"), &schur_pc),
+          "setting up the Schur preconditioner");
     if (schur == SchurApproximation::bfbt)
       bfbt.emplace().attach(schur_pc);
     else
@@ -306,20 +316,8 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
   // options: another solver of the process (the test programs, a chain's
   // next operation) must not read them, and ML keeps what it read.
   std::optional<ScopedPetscOptions> geometric;
-  if (first) {
-    // An expert's -fieldsplit_0_pc_ml_Aux decides (the rest as here).
-    PetscBool given = PETSC_FALSE;
-    petsc::check_options(PetscOptionsHasName(nullptr, nullptr, "-fieldsplit_0_pc_ml_Aux", &given));
-    s.ml_coordinates = s.velocity_ml && (given ? option_is_true("-fieldsplit_0_pc_ml_Aux") : s.geometric_aggregation);
-    if (s.ml_coordinates) geometric.emplace(kGeometricAggregation, "anvil's geometric aggregation");
-  }
-  if (!first && s.ml_coordinates) {
-    PetscInt splits = 0;
-    KSP* sub = nullptr;
-    check(PCFieldSplitSchurGetSubKSP(pc, &splits, &sub), "setting up the preconditioner");
-    s.give_ml_coordinates(sub[0], true);
-    PetscFree(sub);
-  }
+  if (first && s.ml_coordinates) geometric.emplace(kGeometricAggregation, "anvil's geometric aggregation");
+  if (!first && s.ml_coordinates) s.give_ml_coordinates(split_solver(pc, 0, "setting up the preconditioner"), true);
   check(KSPSetUp(s.ksp), "setting up the preconditioner");
   if (first) s.choose_schur_pc(pc);
   s.set_up = true;
