@@ -69,7 +69,8 @@ bool RunWriter::write_due(const scene::Scene& scene, const scene::Discretisation
     }
   }
   const int every = scene.input.checkpoint_every;
-  const bool checkpoint_due = scene.input.time.enabled && every > 0 && (force || state.increment % every == 0);
+  const bool checkpoint_due =
+      scene.input.time.enabled && every > 0 && !checkpoints_stopped_ && (force || state.increment % every == 0);
   if (!checkpoint_due || last_checkpoint_ == state.increment) return false;
   Timers::Scope scope(timers, "checkpoint");
   write_checkpoint(directory_ + "/checkpoint.h5", state, scene.fingerprint);

@@ -219,7 +219,20 @@ RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
     last = inc.report;
     last_step = inc.time_step;
     const double heat_before = timers.seconds("effect heat");
-    if (disc.heat) advance_heat(scene, disc, inc, state, timers);
+    if (disc.heat) {
+      try {
+        advance_heat(scene, disc, inc, state, timers);
+      } catch (const RunError& failure) {
+        // The increment's flow is taken and its heat is not: the results so
+        // far are written, not a checkpoint of this state (the last one stays exact).
+        writer.stop_checkpoints();
+        finish(scene, disc, state, writer, last, timers, start);
+        throw RunError("increment " + std::to_string(state.increment) + " at t = " + std::to_string(state.time) +
+                       " s: " + failure.what() + "; the results so far are written in " + out +
+                       " (its last frame with the temperatures of increment " + std::to_string(state.increment - 1) +
+                       ")" + (c.checkpoint_every > 0 ? "; --resume continues from its last checkpoint" : ""));
+      }
+    }
     log_progress(scene, disc, state, inc, time_left.update(clock.progress(state), seconds_since(start)),
                  (timers.seconds("effect heat") - heat_before) / seconds_since(increment_start));
     if (c.detect_folds) watch_folds(scene, disc, state, timers);

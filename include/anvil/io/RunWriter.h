@@ -32,6 +32,11 @@ public:
   void write_summary(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state,
                      const solver::NewtonReport& last, const Timers& timers, double total) const;
 
+  /// No checkpoint from here on: the state is not one to resume from (an
+  /// increment whose flow was taken but whose heat step failed), so the last
+  /// checkpoint written stays the one --resume continues from.
+  void stop_checkpoints() { checkpoints_stopped_ = true; }
+
   const std::string& directory() const { return directory_; }
 
 private:
@@ -47,6 +52,7 @@ private:
   std::size_t loads_written_ = 0;            ///< records of RunState::loads in loads.csv
   bool loads_started_ = false;               ///< loads.csv holds its header (written whole at the first write)
   int last_vtk_ = -1, last_checkpoint_ = -1; ///< increments written last
+  bool checkpoints_stopped_ = false;
 };
 
 } // namespace anvil::io
