@@ -47,8 +47,6 @@ struct Remeshed {
 /// A remesh may not change the body's volume by more than this before the
 /// put-back onto the dies (CGAL's own loss; the cases lose below 0.01 %).
 constexpr double kMostVolumeChange = 0.01;
-/// Nor leave an element worse than this share of remeshing.quality.
-constexpr double kQualityFloorShare = 1.0 / 3.0;
 /// The widest feature angle a last try of a poor remesh takes (deg).
 constexpr double kWidestFeatureAngle = 80.0;
 /// A line on the terminal every this often while CGAL works (s).
@@ -148,7 +146,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   // A mesh already below the floor is replaced by any better one: kept, its
   // worst element is crushed further by the next increments until one
   // inverts (the connecting rod under a die edge: 0.001 kept against 0.04).
-  const double volume = mesh::volume(part), floor = std::min(kQualityFloorShare * spec.quality, worst_quality(part));
+  const double volume = mesh::volume(part), floor = std::min(spec.quality_floor(), worst_quality(part));
   // Why try `t` cannot replace the body's mesh; empty when it can.
   auto fault = [&](const Remeshed& t) {
     if (!t.failed.empty()) return t.failed;

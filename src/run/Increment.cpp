@@ -395,9 +395,9 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
   const double volume_flow = mesh::volume(moved);
   // Contact nodes back onto their die at its new position, along the node's
   // free directions only (a node on a symmetry plane stays on it), and not
-  // where the move would take an element below the remesh trigger (or below
-  // what it is, if less): a node left inside by a remesh's put-back, where
-  // the die corner needs an element flattened, stays in until the next
+  // where the move would take an element below the remesher's own floor (or
+  // below what it is, if less): a node left inside by a remesh's put-back,
+  // where the die corner needs an element flattened, stays in until the next
   // remesh rather than leave a flat element (quality 1e-15 on hot_conrod),
   // whose conduction the heat step cannot solve, or end the run.
   const auto& candidates = disc.die_contact.candidates();
@@ -412,7 +412,7 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
     const mesh::Point& x = moved.nodes[c.node];
     disc.projection_guard.move(moved, c.node,
                                shift + die::project_keeping(surface, x - shift, free, 1e-9 * scene.reference_length),
-                               scene.input.remeshing.quality);
+                               scene.input.remeshing.quality_floor());
   }
   for (int e = 0; e < moved.tet_count(); ++e)
     if (mesh::signed_volume(moved, e) <= 0.0) {

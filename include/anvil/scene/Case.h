@@ -162,6 +162,10 @@ struct RemeshSpec {
   bool local = true;               ///< a quality trigger rebuilds the poor elements' region only (remesh_region)
   bool split_sunk_edges = false;   ///< split surface edges over a die fillet or edge sunk between contact nodes
   std::vector<SizeBox> size_boxes; ///< adaptive: where the user asks for finer elements
+
+  /// The worst element a remesh may leave, and a contact node's move back
+  /// onto its die after an increment: a third of the trigger.
+  double quality_floor() const { return quality / 3.0; }
 };
 
 struct ContactSpec {
