@@ -146,7 +146,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   // A mesh already below the floor is replaced by any better one: kept, its
   // worst element is crushed further by the next increments until one
   // inverts (the connecting rod under a die edge: 0.001 kept against 0.04).
-  const double volume = mesh::volume(part), floor = std::min(spec.quality_floor(), worst_quality(part));
+  const double volume = mesh::volume(part), floor = std::min(spec.worst_allowed_quality(), worst_quality(part));
   // Why try `t` cannot replace the body's mesh; empty when it can.
   auto fault = [&](const Remeshed& t) {
     if (!t.failed.empty()) return t.failed;

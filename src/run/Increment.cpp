@@ -412,7 +412,7 @@ bool accept_increment(const Scene& scene, Discretisation& disc, IncrementOutcome
     const mesh::Point& x = moved.nodes[c.node];
     disc.projection_guard.move(moved, c.node,
                                shift + die::project_keeping(surface, x - shift, free, 1e-9 * scene.reference_length),
-                               scene.input.remeshing.quality_floor());
+                               scene.input.remeshing.worst_allowed_quality());
   }
   for (int e = 0; e < moved.tet_count(); ++e)
     if (mesh::signed_volume(moved, e) <= 0.0) {

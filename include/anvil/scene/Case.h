@@ -163,9 +163,10 @@ struct RemeshSpec {
   bool split_sunk_edges = false;   ///< split surface edges over a die fillet or edge sunk between contact nodes
   std::vector<SizeBox> size_boxes; ///< adaptive: where the user asks for finer elements
 
-  /// The worst element a remesh may leave, and a contact node's move back
-  /// onto its die after an increment: a third of the trigger.
-  double quality_floor() const { return quality / 3.0; }
+  /// The worst element quality a remesh may leave, and a contact node's move
+  /// back onto its die after an increment: a third of the trigger. (Not
+  /// RemeshSettings::quality_floor, which is the trigger itself.)
+  double worst_allowed_quality() const { return quality / 3.0; }
 };
 
 struct ContactSpec {
