@@ -10,6 +10,7 @@
 #include "anvil/mesh/boundary_slivers.h"
 #include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/flat_tags.h"
+#include "anvil/mesh/flat_tet_mending.h"
 #include "anvil/mesh/manifold.h"
 #include "anvil/mesh/restore_volume.h"
 #include "anvil/mesh/tet_geometry.h"
@@ -459,6 +460,14 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
     for (std::size_t v = 0; v < movable.size(); ++v)
       movable[v] = out.old_node[v] < 0;
     settle_on_old_surface(out.mesh, body, patch, tag_of_patch, movable, mesh::volume(body), settings.quality_floor);
+  }
+  // CGAL leaves flat tets of four border nodes, which it may not move,
+  // where the border is planar (near closure on the adaptive hot connecting
+  // rod, most levels had one).
+  if (const int mended = mesh::mend_flat_tets(out.mesh, out.kept_tets, kPeelShare * settings.quality_floor);
+      mended > 0) {
+    out.old_node.resize(out.mesh.nodes.size(), -1);
+    log::detail("    local remesh: %d flat tets taken out", mended);
   }
   if (const std::string why = mesh::fault(out.mesh); !why.empty()) throw RunError("locally remeshed body: " + why);
   return out;
