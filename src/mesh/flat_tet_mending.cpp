@@ -183,6 +183,10 @@ Point flat_normal(const TetMesh& mesh, const Tet& t) {
 } // namespace
 
 int mend_flat_tets(TetMesh& mesh, int first, double below) {
+  bool any = false;
+  for (int e = first; e < mesh.tet_count() && !any; ++e)
+    any = quality(mesh, e) < below;
+  if (!any) return 0;
   std::vector<std::vector<int>> around = tets_around_nodes(mesh);
   std::vector<char> dead(mesh.tets.size(), 0);
   int mended = 0;
