@@ -51,6 +51,8 @@ constexpr double kMostVolumeChange = 0.01;
 constexpr double kWidestFeatureAngle = 80.0;
 /// A line on the terminal every this often while CGAL works (s).
 constexpr double kProgressEvery = 5.0;
+/// Bisections of the coarsening that meets the node budget (to 1e-9 of it).
+constexpr int kCoarsenBisections = 40;
 
 /// Says every kProgressEvery seconds, while it lives, that body `name` is
 /// still being remeshed: CGAL gives no progress of its own.
@@ -73,12 +75,23 @@ private:
   std::jthread thread_; ///< last: stopped and joined before the mutex goes
 };
 
-/// Nodes a remesh of `part` with edge lengths `size(x)` (mm) at the centroids
-/// will have: a regular mesh of edge h has about 1.5 V/h³ nodes.
-double expected_nodes(const mesh::TetMesh& part, const std::function<double(const mesh::Point&)>& size) {
-  double nodes = 0.0;
+/// Nodes a remesh of `part` at edge lengths c × `size(x)` (mm) will have
+/// (mesh/node_budget.h): the bulk's, ∑ V / size³ over the tets, and the
+/// surface's, ∑ A / size² over the boundary faces, each size at the centroid.
+struct ExpectedNodes {
+  double bulk = 0.0, surface = 0.0;
+  double at(double c) const { return bulk / (c * c * c) + surface / (c * c); }
+};
+
+ExpectedNodes expected_nodes(const mesh::TetMesh& part, const std::function<double(const mesh::Point&)>& size) {
+  ExpectedNodes nodes;
   for (int e = 0; e < part.tet_count(); ++e)
-    nodes += 1.5 * mesh::signed_volume(part, e) / std::pow(size(mesh::centroid(part, e)), 3);
+    nodes.bulk +=
+        mesh::kRemeshedNodesPerVolume * mesh::signed_volume(part, e) / std::pow(size(mesh::centroid(part, e)), 3);
+  for (const mesh::Triangle& f : part.boundary_faces) {
+    const mesh::Point centroid = (part.nodes[f[0]] + part.nodes[f[1]] + part.nodes[f[2]]) / 3.0;
+    nodes.surface += mesh::kRemeshedNodesPerArea * mesh::area_vector(part, f).norm() / std::pow(size(centroid), 2);
+  }
   return nodes;
 }
 
@@ -103,14 +116,20 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   const double budget =
       spec.max_nodes > 0 ? std::min<double>(spec.max_nodes, mesh::affordable_nodes()) : mesh::affordable_nodes();
   double coarsen = 1.0;
-  double expected =
+  const ExpectedNodes terms =
       expected_nodes(part, [&](const mesh::Point& x) { return size_field ? size_field(x, 1.0) : body.remesh_size; });
+  double expected = terms.at(1.0);
   if (expected > budget) {
-    coarsen = std::cbrt(expected / budget);
+    // terms.at(c) falls with c from above the budget at 1 to below it at
+    // √(expected / budget): bisected between.
+    double low = 1.0, high = std::sqrt(expected / budget);
+    for (int step = 0; step < kCoarsenBisections; ++step)
+      (terms.at(0.5 * (low + high)) > budget ? low : high) = 0.5 * (low + high);
+    coarsen = high;
     log::info("    remesh of '%s': its sizes would make about %.3g nodes, more than the node budget of %.3g; "
               "every size is made %.3g times larger",
               body.name.c_str(), expected, budget, coarsen);
-    expected = budget;
+    expected = terms.at(coarsen);
   }
   const RemeshProgress progress(body.name, expected);
   const auto deadline =

@@ -250,11 +250,16 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
         throw InputError(c.path + text);
       }
     }
-    // A regular mesh of edge h has about 1.5 V/h³ nodes.
-    if (c.remeshing.enabled)
-      mesh::check_node_budget(1.5 * body.initial_volume / std::pow(body.remesh_size, 3),
+    if (c.remeshing.enabled) {
+      double area = 0.0;
+      for (const mesh::Triangle& f : part.boundary_faces)
+        area += mesh::area_vector(part, f).norm();
+      const double h = body.remesh_size;
+      mesh::check_node_budget(mesh::kRemeshedNodesPerVolume * body.initial_volume / std::pow(h, 3) +
+                                  mesh::kRemeshedNodesPerArea * area / (h * h),
                               c.path + ": key 'remeshing.element_size' " + std::to_string(body.remesh_size) +
                                   " mm, remeshing body '" + body.name + "'");
+    }
     initial_ranges.push_back(mesh::append(initial_mesh, part));
     bodies.push_back(std::move(body));
   }

@@ -10,6 +10,15 @@ namespace anvil::mesh {
 /// block, 6.3 GB for Norton-Hoff m = 0.1); the direct solvers take more.
 inline constexpr double kRunBytesPerNode = 20e3;
 
+/// Nodes CGAL's isotropic remeshing makes at edge length h (mm): about
+/// kRemeshedNodesPerVolume V/h³ + kRemeshedNodesPerArea A/h² for a body of
+/// volume V (mm³) and surface area A (mm²), the surface's nodes over what
+/// the bulk gives. Fitted by tools/remesh_nodes on cubes, plates, cylinders
+/// and rings at 1-2 mm (docs/remeshing.md); the bulk term alone fell short
+/// on every one, most on thin bodies.
+inline constexpr double kRemeshedNodesPerVolume = 1.62;
+inline constexpr double kRemeshedNodesPerArea = 0.92;
+
 /// Physical memory of this machine (bytes).
 double physical_memory();
 

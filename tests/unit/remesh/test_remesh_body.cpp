@@ -1,5 +1,6 @@
 // remesh_body: a new mesh of the same volume, tags kept on flat faces.
 #include "anvil/mesh/generators.h"
+#include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/remesh_body.h"
@@ -7,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 using namespace anvil;
@@ -71,6 +73,16 @@ TEST_CASE("Remeshing a quarter cylinder keeps its volume and its lateral surface
     if (out.boundary_tags[f] == 2)
       for (int n : out.boundary_faces[f])
         CHECK(out.nodes[n].head<2>().norm() == Approx(radius).margin(sagitta));
+  // The node estimate a remesh makes before CGAL runs (the node budget)
+  // holds within 20 %: its fit's worst over the bodies of tools/remesh_nodes
+  // is 12 %, and the mesh CGAL starts from moves the count by 7 % more (this
+  // body: 2761 nodes from a mesh at 1.0 mm there, 2943 from this one at 1.5).
+  double area = 0.0;
+  for (const mesh::Triangle& f : out.boundary_faces)
+    area += mesh::area_vector(out, f).norm();
+  const double estimate = mesh::kRemeshedNodesPerVolume * mesh::volume(out) + mesh::kRemeshedNodesPerArea * area;
+  INFO("nodes " << out.node_count() << ", estimated " << estimate);
+  CHECK(std::abs(out.node_count() / estimate - 1.0) < 0.2);
 }
 
 TEST_CASE("An adaptive size field refines where it asks and keeps the volume", "[unit][remesh]") {
