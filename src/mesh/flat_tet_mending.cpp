@@ -126,6 +126,8 @@ Mending edge_removal(const TetMesh& mesh, const Ring& ring, const Point& /*norma
     }
   Mending out;
   out.worst = best[0][m - 1];
+  // No valid triangulation (a sub-chain without one has no apex): nothing to make.
+  if (!(out.worst > 0.0)) return out;
   std::vector<std::array<int, 2>> open{{0, m - 1}};
   while (!open.empty()) {
     const auto [i, k] = open.back();
