@@ -463,11 +463,11 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
   }
   // CGAL leaves flat tets of four border nodes, which it may not move,
   // where the border is planar (near closure on the adaptive hot connecting
-  // rod, most levels had one).
+  // rod, in most levels).
   if (const int mended = mesh::mend_flat_tets(out.mesh, out.kept_tets, kPeelShare * settings.quality_floor);
       mended > 0) {
     out.old_node.resize(out.mesh.nodes.size(), -1);
-    log::detail("    local remesh: %d flat tets taken out", mended);
+    log::detail("    remeshing: %d flat tets taken out of a rebuilt region", mended);
   }
   if (const std::string why = mesh::fault(out.mesh); !why.empty()) throw RunError("locally remeshed body: " + why);
   return out;

@@ -254,9 +254,7 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
       double area = 0.0;
       for (const mesh::Triangle& f : part.boundary_faces)
         area += mesh::area_vector(part, f).norm();
-      const double h = body.remesh_size;
-      mesh::check_node_budget(mesh::kRemeshedNodesPerVolume * body.initial_volume / std::pow(h, 3) +
-                                  mesh::kRemeshedNodesPerArea * area / (h * h),
+      mesh::check_node_budget(mesh::remeshed_nodes(body.initial_volume, area, body.remesh_size),
                               c.path + ": key 'remeshing.element_size' " + std::to_string(body.remesh_size) +
                                   " mm, remeshing body '" + body.name + "'");
     }

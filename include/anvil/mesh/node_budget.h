@@ -18,6 +18,9 @@ inline constexpr double kRunBytesPerNode = 20e3;
 /// on every one, most on thin bodies.
 inline constexpr double kRemeshedNodesPerVolume = 1.62;
 inline constexpr double kRemeshedNodesPerArea = 0.92;
+inline double remeshed_nodes(double volume, double area, double h) {
+  return kRemeshedNodesPerVolume * volume / (h * h * h) + kRemeshedNodesPerArea * area / (h * h);
+}
 
 /// Physical memory of this machine (bytes).
 double physical_memory();
