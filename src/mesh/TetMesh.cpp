@@ -101,6 +101,13 @@ double volume(const TetMesh& mesh) {
   return v;
 }
 
+double boundary_area(const TetMesh& mesh) {
+  double a = 0.0;
+  for (const Triangle& f : mesh.boundary_faces)
+    a += area_vector(mesh, f).norm();
+  return a;
+}
+
 std::vector<char> boundary_node_flags(const TetMesh& mesh) {
   std::vector<char> on_boundary(mesh.nodes.size(), 0);
   for (const Triangle& f : mesh.boundary_faces)

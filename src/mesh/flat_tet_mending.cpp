@@ -54,7 +54,7 @@ std::optional<Ring> ring_of(const TetMesh& mesh, const std::vector<std::vector<i
   const int m = static_cast<int>(sides.size());
   if (m < 3 || m > kLongestRing) return std::nullopt;
   // Walk the link: a closed ring passes each of its nodes twice.
-  std::vector<int> order{0};
+  ring.tets = {tets[0]};
   ring.link = {sides[0][0], sides[0][1]};
   std::vector<char> used(m, 0);
   used[0] = 1;
@@ -64,7 +64,7 @@ std::optional<Ring> ring_of(const TetMesh& mesh, const std::vector<std::vector<i
       if (!used[k] && (sides[k][0] == ring.link.back() || sides[k][1] == ring.link.back())) next = k;
     if (next < 0) return std::nullopt;
     used[next] = 1;
-    order.push_back(next);
+    ring.tets.push_back(tets[next]);
     ring.link.push_back(sides[next][0] == ring.link.back() ? sides[next][1] : sides[next][0]);
   }
   if (ring.link.back() != ring.link.front()) return std::nullopt;
@@ -72,8 +72,6 @@ std::optional<Ring> ring_of(const TetMesh& mesh, const std::vector<std::vector<i
   std::vector<int> distinct = ring.link;
   std::sort(distinct.begin(), distinct.end());
   if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end()) return std::nullopt;
-  for (int k : order)
-    ring.tets.push_back(tets[k]);
   // The orientation from the largest tet: a flat one's sign is round-off.
   const std::vector<Point>& x = mesh.nodes;
   double largest = 0.0;
@@ -104,7 +102,7 @@ Tet oriented(Tet t, double sigma) {
 /// of the tets each triangle makes with a and with c (Klincsek's dynamic
 /// programme). They fill the ring exactly when every one has the ring's
 /// orientation (Shewchuk 2002, §3), which a positive worst quality says.
-Mending edge_removal(const TetMesh& mesh, const Ring& ring, const Point& /*normal*/) {
+Mending edge_removal(const TetMesh& mesh, const Ring& ring) {
   const std::vector<Point>& x = mesh.nodes;
   const std::vector<int>& l = ring.link;
   const int m = static_cast<int>(l.size());
@@ -185,11 +183,7 @@ Point flat_normal(const TetMesh& mesh, const Tet& t) {
 } // namespace
 
 int mend_flat_tets(TetMesh& mesh, int first, double below) {
-  bool any = false;
-  for (int e = first; e < mesh.tet_count() && !any; ++e)
-    any = quality(mesh, e) < below;
-  if (!any) return 0;
-  std::vector<std::vector<int>> around = tets_around_nodes(mesh);
+  std::vector<std::vector<int>> around; // built at the first poor tet: most regions have none
   std::vector<char> dead(mesh.tets.size(), 0);
   int mended = 0;
   // New tets can be poor too (only better than their ring): a later pass
@@ -199,22 +193,25 @@ int mend_flat_tets(TetMesh& mesh, int first, double below) {
     changed = false;
     for (int e = first; e < mesh.tet_count(); ++e) {
       if (dead[e] || quality(mesh, e) >= below) continue;
+      if (around.empty()) around = tets_around_nodes(mesh);
       const Tet t = mesh.tets[e];
-      const Point normal = flat_normal(mesh, t);
       std::vector<Ring> rings;
       for (int p = 0; p < 4; ++p)
         for (int q = p + 1; q < 4; ++q)
           if (std::optional<Ring> ring = ring_of(mesh, around, dead, first, t[p], t[q])) rings.push_back(*ring);
-      // An edge removal adds no node: a lifted split only where none helps.
       const Ring* chosen_ring = nullptr;
       Mending chosen;
-      for (auto way : {edge_removal, lifted_split}) {
-        for (const Ring& ring : rings) {
-          Mending candidate = way(mesh, ring, normal);
-          if (candidate.worst > std::max(ring.worst, 0.0) && candidate.worst > chosen.worst)
-            chosen = std::move(candidate), chosen_ring = &ring;
-        }
-        if (chosen_ring) break;
+      auto consider = [&](const Ring& ring, Mending candidate) {
+        if (candidate.worst > std::max(ring.worst, 0.0) && candidate.worst > chosen.worst)
+          chosen = std::move(candidate), chosen_ring = &ring;
+      };
+      for (const Ring& ring : rings)
+        consider(ring, edge_removal(mesh, ring));
+      // An edge removal adds no node: a lifted split only where none helps.
+      if (!chosen_ring) {
+        const Point normal = flat_normal(mesh, t);
+        for (const Ring& ring : rings)
+          consider(ring, lifted_split(mesh, ring, normal));
       }
       if (!chosen_ring) continue;
       for (int r : chosen_ring->tets)

@@ -250,14 +250,10 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
         throw InputError(c.path + text);
       }
     }
-    if (c.remeshing.enabled) {
-      double area = 0.0;
-      for (const mesh::Triangle& f : part.boundary_faces)
-        area += mesh::area_vector(part, f).norm();
-      mesh::check_node_budget(mesh::remeshed_nodes(body.initial_volume, area, body.remesh_size),
+    if (c.remeshing.enabled)
+      mesh::check_node_budget(mesh::remeshed_nodes(body.initial_volume, mesh::boundary_area(part), body.remesh_size),
                               c.path + ": key 'remeshing.element_size' " + std::to_string(body.remesh_size) +
                                   " mm, remeshing body '" + body.name + "'");
-    }
     initial_ranges.push_back(mesh::append(initial_mesh, part));
     bodies.push_back(std::move(body));
   }

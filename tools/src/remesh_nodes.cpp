@@ -18,13 +18,6 @@ using namespace anvil;
 
 namespace {
 
-double area(const mesh::TetMesh& m) {
-  double a = 0.0;
-  for (const mesh::Triangle& f : m.boundary_faces)
-    a += mesh::area_vector(m, f).norm();
-  return a;
-}
-
 struct Shape {
   std::string name;
   std::function<mesh::TetMesh(double)> make; ///< the body, meshed at about this size
@@ -60,7 +53,8 @@ int main() {
       remesh::RemeshSettings settings;
       settings.edge_length = h;
       const mesh::TetMesh out = remesh::remesh_body(body, settings);
-      rows.push_back({mesh::volume(out) / std::pow(h, 3), area(out) / std::pow(h, 2), double(out.node_count())});
+      rows.push_back(
+          {mesh::volume(out) / std::pow(h, 3), mesh::boundary_area(out) / std::pow(h, 2), double(out.node_count())});
       names.push_back(shape.name);
       hs.push_back(h);
       std::fprintf(stderr, "%s at %.2f mm: %d nodes\n", shape.name.c_str(), h, out.node_count());

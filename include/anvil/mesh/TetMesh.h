@@ -62,6 +62,8 @@ void validate(const TetMesh& mesh, const std::string& source);
 
 /// Sum of tet volumes (mm³).
 double volume(const TetMesh& mesh);
+/// Sum of the boundary faces' areas (mm²).
+double boundary_area(const TetMesh& mesh);
 
 /// 1 for each node on a boundary face of `mesh`, else 0.
 std::vector<char> boundary_node_flags(const TetMesh& mesh);

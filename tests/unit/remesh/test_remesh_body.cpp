@@ -77,10 +77,7 @@ TEST_CASE("Remeshing a quarter cylinder keeps its volume and its lateral surface
   // holds within 20 %: its fit's worst over the bodies of tools/remesh_nodes
   // is 12 %, and the mesh CGAL starts from moves the count by 7 % more (this
   // body: 2761 nodes from a mesh at 1.0 mm there, 2943 from this one at 1.5).
-  double area = 0.0;
-  for (const mesh::Triangle& f : out.boundary_faces)
-    area += mesh::area_vector(out, f).norm();
-  const double estimate = mesh::kRemeshedNodesPerVolume * mesh::volume(out) + mesh::kRemeshedNodesPerArea * area;
+  const double estimate = mesh::remeshed_nodes(mesh::volume(out), mesh::boundary_area(out), 1.0);
   INFO("nodes " << out.node_count() << ", estimated " << estimate);
   CHECK(std::abs(out.node_count() / estimate - 1.0) < 0.2);
 }
