@@ -9,6 +9,7 @@
 #include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/die_feature_depth.h"
+#include "anvil/remesh/expected_nodes.h"
 #include "anvil/remesh/field_transfer.h"
 #include "anvil/remesh/fit_to_dies.h"
 #include "anvil/remesh/local_remesh.h"
@@ -36,6 +37,7 @@ struct Remeshed {
   mesh::TetMesh remeshed;   ///< CGAL's mesh of the old body: the fields are transferred onto it
   mesh::TetMesh mesh;       ///< the same, fitted to the dies
   double edge_length = 0.0; ///< mm
+  double expected = 0.0;    ///< the nodes estimated before CGAL ran (remesh/expected_nodes.h)
   double worst = 0.0;       ///< worst quality of `mesh`
   PutBack put_back;
   double volume_put_back = 0.0;   ///< mm³, of `mesh` after the put-back, before keep_material
@@ -75,26 +77,6 @@ private:
   std::jthread thread_; ///< last: stopped and joined before the mutex goes
 };
 
-/// Nodes a remesh of `part` at edge lengths c × `size(x)` (mm) will have
-/// (mesh/node_budget.h): the bulk's, ∑ V / size³ over the tets, and the
-/// surface's, ∑ A / size² over the boundary faces, each size at the centroid.
-struct ExpectedNodes {
-  double bulk = 0.0, surface = 0.0;
-  double at(double c) const { return bulk / (c * c * c) + surface / (c * c); }
-};
-
-ExpectedNodes expected_nodes(const mesh::TetMesh& part, const std::function<double(const mesh::Point&)>& size) {
-  ExpectedNodes nodes;
-  for (int e = 0; e < part.tet_count(); ++e)
-    nodes.bulk +=
-        mesh::kRemeshedNodesPerVolume * mesh::signed_volume(part, e) / std::pow(size(mesh::centroid(part, e)), 3);
-  for (const mesh::Triangle& f : part.boundary_faces) {
-    const mesh::Point centroid = (part.nodes[f[0]] + part.nodes[f[1]] + part.nodes[f[2]]) / 3.0;
-    nodes.surface += mesh::kRemeshedNodesPerArea * mesh::area_vector(part, f).norm() / std::pow(size(centroid), 2);
-  }
-  return nodes;
-}
-
 /// Remeshes `part`, body `b` of `state` (`in_old` locates points in it),
 /// fitted to the dies; nothing, with `refused` saying why, when no try keeps
 /// the body's volume and an acceptable worst quality.
@@ -116,8 +98,9 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   const double budget =
       spec.max_nodes > 0 ? std::min<double>(spec.max_nodes, mesh::affordable_nodes()) : mesh::affordable_nodes();
   double coarsen = 1.0;
-  const ExpectedNodes terms =
-      expected_nodes(part, [&](const mesh::Point& x) { return size_field ? size_field(x, 1.0) : body.remesh_size; });
+  const ExpectedNodes terms = expected_nodes(
+      part, [&](const mesh::Point& x) { return size_field ? size_field(x, 1.0) : body.remesh_size; }, body.remesh_size,
+      size_field ? smallest : body.remesh_size);
   double expected = terms.at(1.0);
   if (expected > budget) {
     // terms.at(c) falls with c from above the budget at 1 to below it at
@@ -149,6 +132,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
     Remeshed t;
     const log::Holding holding(t.log);
     t.edge_length = settings.edge_length;
+    t.expected = terms.at(coarsen * scale);
     try {
       t.remeshed = remesh_body(part, settings);
     } catch (const RunError& error) {
@@ -512,12 +496,12 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     record.rebuilt_share = 1.0;
     state.remeshes.push_back(record);
     fitted.push_back(1);
-    log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm; worst quality %.3f -> %.3f; "
-              "volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
+    log::info("  remesh '%s' (%s): %d -> %d nodes, %d -> %d elements, h %.3g mm (about %.0f nodes expected); worst "
+              "quality %.3f -> %.3f; volume %+.4f%%; transfer: integral of strain %+.3f%%, max strain %+.3f%%; %.2f s",
               scene.bodies[b].name.c_str(), why->why.c_str(), record.nodes_before, record.nodes_after, part.tet_count(),
-              fresh.tet_count(), best.edge_length, record.worst_quality_before, record.worst_quality_after,
-              100.0 * record.volume_change, 100.0 * record.strain_integral_change, 100.0 * record.strain_max_change,
-              record.seconds);
+              fresh.tet_count(), best.edge_length, best.expected, record.worst_quality_before,
+              record.worst_quality_after, 100.0 * record.volume_change, 100.0 * record.strain_integral_change,
+              100.0 * record.strain_max_change, record.seconds);
     log_fit(best.put_back, volume_remeshed, best.volume_put_back, best.given_back, volume_after);
     if (volume_after != volume_remeshed)
       log::info("    integral of strain %+.3f%% by these moves (the elements carry their values)",

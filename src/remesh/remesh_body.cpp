@@ -7,6 +7,7 @@
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/mesh/QualityGuard.h"
+#include "anvil/mesh/TetMesh.h"
 #include "anvil/mesh/boundary_slivers.h"
 #include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/flat_tags.h"
@@ -28,6 +29,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <numeric>
@@ -60,6 +62,24 @@ constexpr int kBorderPasses = 3;
 constexpr double kLevelRetryScale = 0.95;
 /// After the size field's levels, cells below this quality are rebuilt.
 constexpr double kPoorAfterLevels = 0.25;
+
+/// A finer level of the size field: ¾ of the level before
+/// (RemeshSettings::size), at least the smallest length.
+double finer_level(double previous, double smallest) {
+  return std::max(0.75 * previous, smallest);
+}
+
+/// The cells of `mesh` that go to the level at `length` after the one at
+/// `previous`: those whose centroid wants less than the geometric mean of
+/// the two, so that a cell goes to the level nearest the size it wants.
+std::vector<char> level_cells(const mesh::TetMesh& mesh, const std::function<double(const mesh::Point&)>& size,
+                              double previous, double length) {
+  const double finer_than = std::sqrt(previous * length);
+  std::vector<char> region(mesh.tets.size(), 0);
+  for (int e = 0; e < mesh.tet_count(); ++e)
+    region[e] = size(mesh::centroid(mesh, e)) < finer_than;
+  return region;
+}
 /// Flat tets on the surface below this share of settings.quality_floor are
 /// taken off the new mesh (mesh/boundary_slivers.h): a third, where the
 /// remesher refuses a result (remesh/Remesher.cpp).
@@ -473,6 +493,38 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
   return out;
 }
 
+std::vector<LevelBorder> level_borders(const mesh::TetMesh& body, const std::function<double(const mesh::Point&)>& size,
+                                       double edge_length, double smallest) {
+  std::vector<LevelBorder> borders;
+  // The inner faces, each with the two tets on it and its area: made at the
+  // first level (a uniform size has none).
+  struct InnerFace {
+    int tet[2];
+    double area;
+  };
+  std::vector<InnerFace> inner;
+  for (double previous = edge_length; previous > smallest * (1.0 + 1e-9);) {
+    const double length = finer_level(previous, smallest);
+    const std::vector<char> region = level_cells(body, size, previous, length);
+    if (std::find(region.begin(), region.end(), 1) == region.end()) break;
+    if (inner.empty()) {
+      std::map<mesh::Triangle, int> first_tet;
+      for (int e = 0; e < body.tet_count(); ++e)
+        for (const auto& fv : mesh::kFaceVertices) {
+          const mesh::Triangle f = mesh::sorted({body.tets[e][fv[0]], body.tets[e][fv[1]], body.tets[e][fv[2]]});
+          if (const auto [at, first] = first_tet.emplace(f, e); !first)
+            inner.push_back({{at->second, e}, mesh::area_vector(body, f).norm()});
+        }
+    }
+    double area = 0.0;
+    for (const InnerFace& f : inner)
+      if (region[f.tet[0]] != region[f.tet[1]]) area += f.area;
+    borders.push_back({previous, length, area});
+    previous = length;
+  }
+  return borders;
+}
+
 mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {
   mesh::TetMesh out = remesh_uniform(body, settings);
   if (!settings.size) return out;
@@ -491,12 +543,8 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
       break;
     }
     RemeshSettings at_level = settings;
-    at_level.edge_length = std::max(0.75 * previous_level, settings.smallest_edge_length);
-    // A cell goes to the level nearest (geometrically) the size it wants.
-    const double finer_than = std::sqrt(previous_level * at_level.edge_length);
-    std::vector<char> region(out.tets.size(), 0);
-    for (int e = 0; e < out.tet_count(); ++e)
-      region[e] = settings.size(mesh::centroid(out, e)) < finer_than;
+    at_level.edge_length = finer_level(previous_level, settings.smallest_edge_length);
+    std::vector<char> region = level_cells(out, settings.size, previous_level, at_level.edge_length);
     if (std::find(region.begin(), region.end(), 1) == region.end()) break;
     // A border face CGAL changed anyway (a few in thousands) takes the kept
     // tets on it into the region, and the level is tried again.
