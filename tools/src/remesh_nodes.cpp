@@ -127,6 +127,7 @@ int main() {
     remesh::RemeshSettings settings;
     settings.edge_length = g.edge_length;
     settings.smallest_edge_length = g.smallest;
+    settings.quality_floor = 0.1; // remeshing.quality's default: flat tets below a third of it are mended
     settings.size = [&g](const mesh::Point& x) {
       return std::min(g.edge_length, g.smallest + (remesh::kGradation - 1.0) * g.distance(x));
     };

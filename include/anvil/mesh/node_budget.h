@@ -33,8 +33,8 @@ inline double remeshed_nodes(double volume, double area, double h) {
 /// under graded size fields (docs/remeshing.md); without this term the
 /// estimate fell 30-47 % short on the adaptive remeshes of the closed-die
 /// parts, where a third of the nodes are bisected border edges.
-inline constexpr double kNodesPerLevelBorder = 1.70;
-inline constexpr double kLevelRatioWithoutSplits = 0.865;
+inline constexpr double kNodesPerLevelBorder = 1.68;
+inline constexpr double kLevelRatioWithoutSplits = 0.870;
 inline double level_border_nodes(double area, double coarser, double ratio, double k = kNodesPerLevelBorder,
                                  double r0 = kLevelRatioWithoutSplits) {
   const double share = std::clamp((r0 - ratio) / (r0 - 0.75), 0.0, 1.0);
