@@ -380,42 +380,6 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
                                               .remesh_boundaries(true)
                                               .smooth_constrained_edges(false)
                                               .edge_is_constrained_map(CGAL::Boolean_property_map(constrained)));
-    // Last, CGAL peels slivers off the boundary (a cell under 2° whose faces
-    // on it lie on one patch leaves the domain). One against the kept tets
-    // opens the border (a few faces in 10k, on most finer levels of a size
-    // field, and the level was remade). It goes back into the region; the
-    // flat tets' mending below takes it out.
-    std::set<std::array<VertexHandle, 4>> kept_cells;
-    for (std::size_t e = 0; e < body.tets.size(); ++e)
-      if (!rebuilt[e]) {
-        std::array<VertexHandle, 4> key;
-        for (int a = 0; a < 4; ++a)
-          key[a] = handles[body.tets[e][a] + 1];
-        std::sort(key.begin(), key.end());
-        kept_cells.insert(key);
-      }
-    std::unordered_map<VertexHandle, int> node_of;
-    for (int i = 0; i < n; ++i)
-      node_of.emplace(handles[i + 1], i);
-    int restored = 0;
-    for (auto c : tr.finite_cell_handles()) {
-      if (c->subdomain_index() != 0) continue;
-      std::array<VertexHandle, 4> key{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
-      std::sort(key.begin(), key.end());
-      if (kept_cells.count(key) > 0) continue;
-      for (int i = 0; i < 4; ++i) {
-        std::array<int, 3> face{-1, -1, -1};
-        for (int a = 0; a < 3; ++a)
-          if (const auto it = node_of.find(c->vertex((i + 1 + a) % 4)); it != node_of.end()) face[a] = it->second;
-        std::sort(face.begin(), face.end());
-        if (face[0] >= 0 && border.count(face) > 0) {
-          c->set_subdomain_index(1);
-          ++restored;
-          break;
-        }
-      }
-    }
-    if (restored > 0) log::detail("    remeshing: %d slivers CGAL peeled off the border put back", restored);
   }
 
   // The nodes that stay (those of kept tets, and with the surface kept those
