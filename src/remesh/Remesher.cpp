@@ -110,7 +110,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
       (terms.at(0.5 * (low + high)) > budget ? low : high) = 0.5 * (low + high);
     coarsen = high;
     log::info("    remesh of '%s': its sizes would make about %.3g nodes, more than the node budget of %.3g; "
-              "every size is made %.3g times larger",
+              "every size is made %.3f times larger",
               body.name.c_str(), expected, budget, coarsen);
     expected = terms.at(coarsen);
   }
