@@ -31,7 +31,7 @@ inline double remeshed_nodes(double volume, double area, double h) {
 /// edges that are bisected, is 1 at r = ¾ and falls linearly to 0 at
 /// r = r₀. k and r₀ are fitted by tools/remesh_nodes on generated bodies
 /// under graded size fields (docs/remeshing.md); without this term the
-/// estimate fell 30-47 % short on the adaptive remeshes of the closed-die
+/// estimate fell 30-33 % short on the adaptive remeshes of the closed-die
 /// parts, where a third of the nodes are bisected border edges.
 inline constexpr double kNodesPerLevelBorder = 1.68;
 inline constexpr double kLevelRatioWithoutSplits = 0.870;
