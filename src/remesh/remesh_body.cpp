@@ -80,6 +80,7 @@ std::vector<char> level_cells(const mesh::TetMesh& mesh, const std::function<dou
     region[e] = size(mesh::centroid(mesh, e)) < finer_than;
   return region;
 }
+
 /// Flat tets on the surface below this share of settings.quality_floor are
 /// taken off the new mesh (mesh/boundary_slivers.h): a third, where the
 /// remesher refuses a result (remesh/Remesher.cpp).
