@@ -424,11 +424,13 @@ const std::vector<KeySpec>& case_schema() {
                                "s"),
                            0, kInf, true),
                      "120"),
-        with_default(range(key("remeshing.max_nodes", T::integer,
-                               "node budget of a remesh: sizes that would make more nodes are coarsened alike; 0 = "
-                               "what this machine's memory can solve (about 20 kB a node)"),
-                           0, kInf),
-                     "0"),
+        with_default(
+            range(key("remeshing.max_nodes", T::integer,
+                      "node budget of a remesh: sizes that would make more nodes are coarsened alike (the estimate "
+                      "made before CGAL runs holds within about 12 %, docs/remeshing.md); 0 = "
+                      "what this machine's memory can solve (about 20 kB a node)"),
+                  0, kInf),
+            "0"),
         with_default(range(key("remeshing.feature_angle", T::number,
                                "boundary edges where the surface turns more than this stay sharp", "deg"),
                            0, 180, true),
