@@ -108,6 +108,22 @@ double boundary_area(const TetMesh& mesh) {
   return a;
 }
 
+std::vector<InnerFace> inner_faces(const TetMesh& mesh) {
+  std::vector<std::pair<Triangle, int>> faces; // (sorted face, tet)
+  faces.reserve(4 * mesh.tets.size());
+  for (int e = 0; e < mesh.tet_count(); ++e)
+    for (const auto& fv : kFaceVertices)
+      faces.emplace_back(sorted({mesh.tets[e][fv[0]], mesh.tets[e][fv[1]], mesh.tets[e][fv[2]]}), e);
+  std::sort(faces.begin(), faces.end());
+  std::vector<InnerFace> inner;
+  for (std::size_t k = 0; k + 1 < faces.size(); ++k)
+    if (faces[k].first == faces[k + 1].first) {
+      inner.push_back({faces[k].first, {faces[k].second, faces[k + 1].second}});
+      ++k;
+    }
+  return inner;
+}
+
 std::vector<char> boundary_node_flags(const TetMesh& mesh) {
   std::vector<char> on_boundary(mesh.nodes.size(), 0);
   for (const Triangle& f : mesh.boundary_faces)

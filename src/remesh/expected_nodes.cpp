@@ -2,7 +2,7 @@
 
 #include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
-#include "anvil/remesh/remesh_body.h"
+#include "anvil/remesh/size_levels.h"
 
 #include <cmath>
 

@@ -17,6 +17,7 @@
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/rebuild_region.h"
+#include "anvil/remesh/size_levels.h"
 #include "anvil/remesh/surface_mending.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -62,24 +63,6 @@ constexpr int kBorderPasses = 3;
 constexpr double kLevelRetryScale = 0.95;
 /// After the size field's levels, cells below this quality are rebuilt.
 constexpr double kPoorAfterLevels = 0.25;
-
-/// A finer level of the size field: ¾ of the level before
-/// (RemeshSettings::size), at least the smallest length.
-double finer_level(double previous, double smallest) {
-  return std::max(0.75 * previous, smallest);
-}
-
-/// The cells of `mesh` that go to the level at `length` after the one at
-/// `previous`: those whose centroid wants less than the geometric mean of
-/// the two, so that a cell goes to the level nearest the size it wants.
-std::vector<char> level_cells(const mesh::TetMesh& mesh, const std::function<double(const mesh::Point&)>& size,
-                              double previous, double length) {
-  const double finer_than = std::sqrt(previous * length);
-  std::vector<char> region(mesh.tets.size(), 0);
-  for (int e = 0; e < mesh.tet_count(); ++e)
-    region[e] = size(mesh::centroid(mesh, e)) < finer_than;
-  return region;
-}
 
 /// Flat tets on the surface below this share of settings.quality_floor are
 /// taken off the new mesh (mesh/boundary_slivers.h): a third, where the
@@ -333,18 +316,8 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
         stays[v] = 1;
   // The border between the region and the kept tets, as sorted node triples.
   std::set<std::array<int, 3>> border;
-  {
-    std::map<std::array<int, 3>, int> sides; // face -> 1 region, 2 kept, 3 both
-    for (std::size_t e = 0; e < body.tets.size(); ++e)
-      for (const auto& fv : mesh::kFaceVertices) {
-        const mesh::Tet& t = body.tets[e];
-        std::array<int, 3> key{t[fv[0]], t[fv[1]], t[fv[2]]};
-        std::sort(key.begin(), key.end());
-        sides[key] |= rebuilt[e] ? 1 : 2;
-      }
-    for (const auto& [key, side] : sides)
-      if (side == 3) border.insert(key);
-  }
+  for (const mesh::InnerFace& f : mesh::inner_faces(body))
+    if (rebuilt[f.tets[0]] != rebuilt[f.tets[1]]) border.insert(f.face);
   if (surface == RegionSurface::kept) {
     CGAL::tetrahedral_isotropic_remeshing(
         tr, settings.edge_length, CGAL::parameters::number_of_iterations(settings.iterations).remesh_boundaries(false));
@@ -492,38 +465,6 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
   }
   if (const std::string why = mesh::fault(out.mesh); !why.empty()) throw RunError("locally remeshed body: " + why);
   return out;
-}
-
-std::vector<LevelBorder> level_borders(const mesh::TetMesh& body, const std::function<double(const mesh::Point&)>& size,
-                                       double edge_length, double smallest) {
-  std::vector<LevelBorder> borders;
-  // The inner faces, each with the two tets on it and its area: made at the
-  // first level (a uniform size has none).
-  struct InnerFace {
-    int tet[2];
-    double area;
-  };
-  std::vector<InnerFace> inner;
-  for (double previous = edge_length; previous > smallest * (1.0 + 1e-9);) {
-    const double length = finer_level(previous, smallest);
-    const std::vector<char> region = level_cells(body, size, previous, length);
-    if (std::find(region.begin(), region.end(), 1) == region.end()) break;
-    if (inner.empty()) {
-      std::map<mesh::Triangle, int> first_tet;
-      for (int e = 0; e < body.tet_count(); ++e)
-        for (const auto& fv : mesh::kFaceVertices) {
-          const mesh::Triangle f = mesh::sorted({body.tets[e][fv[0]], body.tets[e][fv[1]], body.tets[e][fv[2]]});
-          if (const auto [at, first] = first_tet.emplace(f, e); !first)
-            inner.push_back({{at->second, e}, mesh::area_vector(body, f).norm()});
-        }
-    }
-    double area = 0.0;
-    for (const InnerFace& f : inner)
-      if (region[f.tet[0]] != region[f.tet[1]]) area += f.area;
-    borders.push_back({previous, length, area});
-    previous = length;
-  }
-  return borders;
 }
 
 mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {

@@ -13,6 +13,7 @@
 #include "anvil/remesh/expected_nodes.h"
 #include "anvil/remesh/remesh_body.h"
 #include "anvil/remesh/size_field.h"
+#include "anvil/remesh/size_levels.h"
 
 #include <algorithm>
 #include <cmath>

@@ -68,6 +68,14 @@ double boundary_area(const TetMesh& mesh);
 /// 1 for each node on a boundary face of `mesh`, else 0.
 std::vector<char> boundary_node_flags(const TetMesh& mesh);
 
+/// A face two tets share: its nodes (sorted) and the two tets.
+struct InnerFace {
+  Triangle face;
+  std::array<int, 2> tets;
+};
+/// Every face two tets of `mesh` share, in the order of their sorted nodes.
+std::vector<InnerFace> inner_faces(const TetMesh& mesh);
+
 /// For each node, the tets that have it as a vertex (in increasing order).
 std::vector<std::vector<int>> tets_around_nodes(const TetMesh& mesh);
 

@@ -40,19 +40,6 @@ struct RemeshSettings {
 /// (an inverted element: the caller keeps the old mesh).
 mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings);
 
-/// One finer level of a size field, as remesh_body makes them: its length
-/// and the one before (mm), and the area of its border with the coarser
-/// cells (mm²) as the cells of a given mesh draw it.
-struct LevelBorder {
-  double coarser = 0.0, length = 0.0, area = 0.0;
-};
-/// The finer levels remesh_body makes of `body` under `size` from
-/// `edge_length` down to `smallest`, each border drawn by the cells of
-/// `body`. A level's border keeps the coarser cells' faces, their long
-/// edges bisected: it adds nodes like a surface.
-std::vector<LevelBorder> level_borders(const mesh::TetMesh& body, const std::function<double(const mesh::Point&)>& size,
-                                       double edge_length, double smallest);
-
 /// A body remeshed in a region, the rest kept as it was.
 struct RegionRemesh {
   /// The kept tets first, in the body's order and with its node coordinates

@@ -85,3 +85,18 @@ TEST_CASE("cylinder generator: conforming, positive, near the exact volume", "[u
   for (int tag = 1; tag <= 3; ++tag)
     CHECK(faces_with_tag(m, tag) > 0);
 }
+
+TEST_CASE("inner faces: each face two tets share, once, with both tets", "[unit]") {
+  // A box's faces: 4 per tet, each inner one counted by two tets, each
+  // boundary one by one.
+  const mesh::TetMesh box = mesh::make_box({0, 0, 0}, {3, 2, 2}, 1.0);
+  const std::vector<mesh::InnerFace> inner = mesh::inner_faces(box);
+  CHECK(2 * inner.size() + box.boundary_faces.size() == 4 * box.tets.size());
+  for (const mesh::InnerFace& f : inner)
+    for (int e : f.tets) {
+      mesh::Tet t = box.tets[e];
+      CHECK(std::all_of(f.face.begin(), f.face.end(),
+                        [&](int v) { return std::find(t.begin(), t.end(), v) != t.end(); }));
+    }
+  CHECK(inner.front().tets[0] != inner.front().tets[1]);
+}
