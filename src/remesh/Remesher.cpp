@@ -55,6 +55,8 @@ constexpr double kWidestFeatureAngle = 80.0;
 constexpr double kProgressEvery = 5.0;
 /// Bisections of the coarsening that meets the node budget (to 1e-9 of it).
 constexpr int kCoarsenBisections = 40;
+/// Why a try run beside a good enough one was not made to its end (never taken up).
+constexpr const char* kNotNeeded = "stopped: another try was good enough";
 
 /// Says every kProgressEvery seconds, while it lives, that body `name` is
 /// still being remeshed: CGAL gives no progress of its own.
@@ -115,12 +117,11 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
     expected = terms.at(coarsen);
   }
   const RemeshProgress progress(body.name, expected);
-  const auto deadline =
-      std::chrono::steady_clock::now() +
-      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(spec.time_limit));
-  auto make = [&](double scale, double feature_angle) {
+  const auto deadline = deadline_in(spec.time_limit);
+  auto make = [&](double scale, double feature_angle, std::stop_token stop) {
     RemeshSettings settings;
     settings.deadline = deadline;
+    settings.stop = stop;
     settings.edge_length = coarsen * scale * body.remesh_size;
     settings.feature_angle = feature_angle;
     settings.iterations = spec.iterations;
@@ -137,6 +138,15 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
       t.remeshed = remesh_body(part, settings);
     } catch (const RunError& error) {
       t.failed = error.what();
+      return t;
+    } catch (const RemeshStopped& stopped) {
+      char text[120];
+      std::snprintf(text, sizeof text, "CGAL was still at work after remeshing.time_limit (%g s)", spec.time_limit);
+      t.failed = stopped.out_of_time ? text : kNotNeeded;
+      return t;
+    }
+    if (stop.stop_requested()) {
+      t.failed = kNotNeeded;
       return t;
     }
     t.mesh = t.remeshed;
@@ -182,23 +192,29 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
     tries.emplace_back(1.0, wider);
   // The tries do not depend on each other: as many run at once as this
   // process has cores, and they are taken up one after the other as if made
-  // so, which gives the same mesh on any number of cores.
+  // so, which gives the same mesh on any number of cores. Those beside a try
+  // that is good enough are stopped, not waited for.
   const std::size_t at_once = std::max(1, processes::available_cores());
   std::optional<Remeshed> best;
   auto done = [&] { return best && (best->worst >= spec.quality || std::chrono::steady_clock::now() > deadline); };
   for (std::size_t first = 0; first < tries.size() && !done(); first += at_once) {
     const std::size_t end = std::min(tries.size(), first + at_once);
+    std::stop_source not_needed;
     std::vector<std::future<Remeshed>> beside;
     for (std::size_t k = first + 1; k < end; ++k)
-      beside.push_back(
-          std::async(std::launch::async, [&make, &tries, k] { return make(tries[k].first, tries[k].second); }));
-    Remeshed own = make(tries[first].first, tries[first].second);
+      beside.push_back(std::async(std::launch::async, [&make, &tries, k, stop = not_needed.get_token()] {
+        return make(tries[k].first, tries[k].second, stop);
+      }));
+    Remeshed own = make(tries[first].first, tries[first].second, {});
     for (std::size_t k = first; k < end && !(k > first && done()); ++k) {
       const auto& [scale, angle] = tries[k];
       Remeshed again = k == first ? std::move(own) : beside[k - first - 1].get();
       log::write_held(again.log);
       const std::string why = fault(again);
-      if (scale != 1.0 || angle != spec.feature_angle || !why.empty())
+      if (!again.failed.empty())
+        log::info("    remesh of '%s' with h %.3g mm, feature angle %.0f deg not made: %s", body.name.c_str(),
+                  again.edge_length, angle, why.c_str());
+      else if (scale != 1.0 || angle != spec.feature_angle || !why.empty())
         log::info("    remesh of '%s' with h %.3g mm, feature angle %.0f deg: worst quality %.3f%s%s",
                   body.name.c_str(), again.edge_length, angle, again.worst,
                   why.empty() ? "" : "; not taken: ", why.c_str());
@@ -207,6 +223,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
       else if (!best)
         refused = why;
     }
+    not_needed.request_stop(); // before `beside` is destroyed, which waits for its tries
   }
   return best;
 }

@@ -312,6 +312,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   settings.feature_angle = spec.feature_angle;
   settings.iterations = spec.iterations;
   settings.quality_floor = spec.quality;
+  settings.deadline = deadline_in(spec.time_limit);
   RegionRemesh local;
   mesh::TetMesh before_fit; // CGAL's mesh of the old region, before the fit to the dies: ε̄ is remapped on it
   // One try: the region remeshed with its surface kept or rebuilt; false,
@@ -323,6 +324,12 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     } catch (const RunError& error) {
       local = {};
       why_not = error.what();
+      return false;
+    } catch (const RemeshStopped&) { // its deadline passed: nothing else stops a local remesh
+      local = {};
+      std::snprintf(text, sizeof text, "CGAL was still at work on the region after remeshing.time_limit (%g s)",
+                    spec.time_limit);
+      why_not = text;
       return false;
     }
     if (surface == RegionSurface::rebuilt) {

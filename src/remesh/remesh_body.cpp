@@ -107,6 +107,31 @@ std::vector<char> inside_curved_patches(const mesh::TetMesh& mesh, const std::se
   return movable;
 }
 
+/// CGAL's own default selection, the cells of a subdomain (≠ 0), which
+/// throws RemeshStopped once the settings' stop is asked or their deadline
+/// has passed. CGAL 5.5 gives no way to stop a pass, but it asks the
+/// selection at every cell it splits, collapses, flips or smooths around;
+/// the clock is read every kLooksPerCheck looks.
+class StoppableSelection {
+public:
+  explicit StoppableSelection(const RemeshSettings& settings) : settings_(settings) {}
+  /// The selection as CGAL takes it (copied by value into each step).
+  auto map() {
+    return [this](Triangulation::Cell_handle c) {
+      if (++looks_ % kLooksPerCheck == 0) {
+        if (settings_.stop.stop_requested()) throw RemeshStopped{false};
+        if (std::chrono::steady_clock::now() > settings_.deadline) throw RemeshStopped{true};
+      }
+      return c->subdomain_index() != 0;
+    };
+  }
+
+private:
+  static constexpr unsigned kLooksPerCheck = 1024;
+  const RemeshSettings& settings_;
+  unsigned looks_ = 0;
+};
+
 /// One CGAL isotropic remeshing at `length` of the cells `selected` picks
 /// (boundaries remeshed too, patch borders kept where they are).
 template <class Selector> void remesh_pass(Triangulation& tr, double length, int iterations, Selector selected) {
@@ -218,8 +243,8 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
   const std::vector<int> tag_of_patch = build(
       body, settings.feature_angle, [](std::size_t) { return 1; }, tr, handles, patch);
 
-  auto in_body = [](Triangulation::Cell_handle c) { return c->subdomain_index() != 0; }; // CGAL's own default
-  remesh_pass(tr, settings.edge_length, settings.iterations, in_body);
+  StoppableSelection selection(settings);
+  remesh_pass(tr, settings.edge_length, settings.iterations, selection.map());
   // Back to our mesh: the cells of the body (subdomain ≠ 0). CGAL's cell
   // order has no locality; the nodes are numbered along a Hilbert curve and
   // the elements sorted by their first node, so that neighbours in space are
@@ -318,9 +343,12 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
   std::set<std::array<int, 3>> border;
   for (const mesh::InnerFace& f : mesh::inner_faces(body))
     if (rebuilt[f.tets[0]] != rebuilt[f.tets[1]]) border.insert(f.face);
+  StoppableSelection selection(settings);
   if (surface == RegionSurface::kept) {
-    CGAL::tetrahedral_isotropic_remeshing(
-        tr, settings.edge_length, CGAL::parameters::number_of_iterations(settings.iterations).remesh_boundaries(false));
+    CGAL::tetrahedral_isotropic_remeshing(tr, settings.edge_length,
+                                          CGAL::parameters::number_of_iterations(settings.iterations)
+                                              .remesh_boundaries(false)
+                                              .cell_is_selected_map(selection.map()));
     for (const mesh::Triangle& f : body.boundary_faces)
       for (int v : f)
         stays[v] = 1;
@@ -353,7 +381,8 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
                                           CGAL::parameters::number_of_iterations(settings.iterations)
                                               .remesh_boundaries(true)
                                               .smooth_constrained_edges(false)
-                                              .edge_is_constrained_map(CGAL::Boolean_property_map(constrained)));
+                                              .edge_is_constrained_map(CGAL::Boolean_property_map(constrained))
+                                              .cell_is_selected_map(selection.map()));
   }
 
   // The nodes that stay (those of kept tets, and with the surface kept those
@@ -477,11 +506,14 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   // with their border to the rest frozen.
   const double border_splits = 1.0 / (kBorderMargin * 0.75); // remesh_region's border limit over its length
   double previous_level = settings.edge_length;
+  auto out_of_time = [&] {
+    log::info("    remeshing: the size field's finer levels stopped at %.3g mm (smallest asked %.3g mm): the "
+              "remesh ran out of remeshing.time_limit",
+              previous_level, settings.smallest_edge_length);
+  };
   while (previous_level > settings.smallest_edge_length * (1.0 + 1e-9)) {
     if (std::chrono::steady_clock::now() > settings.deadline) {
-      log::info("    remeshing: the size field's finer levels stopped at %.3g mm (smallest asked %.3g mm): the "
-                "remesh ran out of remeshing.time_limit",
-                previous_level, settings.smallest_edge_length);
+      out_of_time();
       break;
     }
     RemeshSettings at_level = settings;
@@ -504,6 +536,10 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
       changed.clear();
       try {
         level = remesh_region(out, region, at_level, RegionSurface::rebuilt, {}, &changed);
+      } catch (const RemeshStopped& stopped) {
+        if (!stopped.out_of_time) throw;
+        out_of_time(); // the mesh stays at the last level made
+        break;
       } catch (const RunError& error) {
         if (attempt + 1 == kLevelAttempts) {
           log::info("    remeshing: the size field's finer levels stopped at %.3g mm (smallest asked %.3g mm): %s",
@@ -548,6 +584,8 @@ mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& setti
   try {
     RegionRemesh mended = remesh_region(out, poor, inside, RegionSurface::kept);
     if (worst_quality(mended.mesh) > worst) out = std::move(mended.mesh);
+  } catch (const RemeshStopped& stopped) {
+    if (!stopped.out_of_time) throw;
   } catch (const RunError&) {
     // The levels' mesh stands: its worst is what the caller's checks judge.
   }

@@ -419,8 +419,10 @@ const std::vector<KeySpec>& case_schema() {
                   "mm"),
               0, kInf, true),
         with_default(range(key("remeshing.time_limit", T::number,
-                               "work limit of one remesh: the adaptive size field's finer levels are not started "
-                               "after this (the mesh is then coarser than smallest_size there), nor another try",
+                               "time limit of one remesh: CGAL is stopped inside its pass after this. A whole "
+                               "remesh with no try made by then is refused (the body keeps its mesh), a local one "
+                               "falls back to the whole body, and the adaptive size field's finer levels stop (the "
+                               "mesh is then coarser than smallest_size there)",
                                "s"),
                            0, kInf, true),
                      "120"),

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <functional>
 #include <span>
+#include <stop_token>
 
 namespace anvil::remesh {
 
@@ -24,11 +25,27 @@ struct RemeshSettings {
   /// of ½ left slivers (q 0.08) there.
   std::function<double(const mesh::Point&)> size;
   double smallest_edge_length = 0.0;
-  /// The finer levels of `size` are not started after this: CGAL gives no
-  /// way to stop a pass, so a remesh is bounded between passes.
+  /// A CGAL pass still at work after this is stopped (RemeshStopped), and
+  /// the finer levels of `size` are not started after it.
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  /// A stop asked here stops the pass at work (RemeshStopped): a try that is
+  /// no longer needed.
+  std::stop_token stop;
   double quality_floor =
       0.0; ///< putting a node back onto the old surface may not leave an element below this (or below what it was)
+};
+
+/// The deadline `seconds` from now (a RemeshSettings::deadline).
+inline std::chrono::steady_clock::time_point deadline_in(double seconds) {
+  return std::chrono::steady_clock::now() +
+         std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+/// Thrown from inside a CGAL pass by remesh_body and remesh_region when
+/// RemeshSettings::stop was asked or its deadline passed. Not a RunError:
+/// neither is a failure of the mesh that another length could mend.
+struct RemeshStopped {
+  bool out_of_time; ///< the deadline passed (else the stop was asked)
 };
 
 /// A new mesh of the volume of `body` (one connected body, a topological ball:

@@ -9,8 +9,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <set>
+#include <stop_token>
 
 using namespace anvil;
 
@@ -209,4 +211,33 @@ TEST_CASE("A local remesh with its surface rebuilt keeps the rest and its border
                                                     << worst_rebuilt(out.mesh, out.kept_tets));
   CHECK(new_on_boundary > 0);
   CHECK(worst_rebuilt(out.mesh, out.kept_tets) > 0.0);
+}
+
+TEST_CASE("A remesh past its deadline or asked to stop stops inside CGAL's pass", "[unit][remesh]") {
+  // CGAL 5.5 has no way to stop a pass; the selection it asks at every cell
+  // throws. A deadline already passed or a stop already asked stops the
+  // pass at its first check, 1024 looks in; the box at h 1 needs far more.
+  const mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 2.0);
+  remesh::RemeshSettings settings;
+  settings.edge_length = 1.0;
+  settings.deadline = std::chrono::steady_clock::now();
+  const std::vector<char> all(box.tets.size(), 1);
+  auto stopped_for = [&](auto&& remesh) {
+    try {
+      remesh();
+    } catch (const remesh::RemeshStopped& stopped) {
+      return stopped.out_of_time ? 1 : 2;
+    }
+    return 0;
+  };
+  CHECK(stopped_for([&] { remesh::remesh_body(box, settings); }) == 1);
+  CHECK(stopped_for([&] { remesh::remesh_region(box, all, settings); }) == 1);
+  std::stop_source stop;
+  stop.request_stop();
+  settings.deadline = std::chrono::steady_clock::time_point::max();
+  settings.stop = stop.get_token();
+  CHECK(stopped_for([&] { remesh::remesh_body(box, settings); }) == 2);
+  // Neither asked: the same remesh runs to its end.
+  settings.stop = {};
+  CHECK(stopped_for([&] { remesh::remesh_body(box, settings); }) == 0);
 }
