@@ -192,6 +192,32 @@ std::string manifold_fault(const TetMesh& mesh) {
   return {};
 }
 
+bool is_ball(const TetMesh& mesh) {
+  if (mesh.tets.empty() || !manifold_fault(mesh).empty()) return false;
+  // A manifold's boundary is closed surfaces; one sphere (connected, Euler
+  // characteristic V − E + F = 2) bounds a ball: a second part, a hole
+  // through or a cavity would add a surface or lower the characteristic.
+  const std::vector<Triangle> boundary = face_use(mesh).boundary;
+  std::vector<int> root(mesh.nodes.size(), -1);
+  auto find = [&](int v) {
+    while (root[v] != v)
+      v = root[v] = root[root[v]];
+    return v;
+  };
+  long vertices = 0;
+  for (const Triangle& f : boundary)
+    for (int v : f)
+      if (root[v] < 0) root[v] = v, ++vertices;
+  for (const Triangle& f : boundary)
+    root[find(f[1])] = find(f[0]), root[find(f[2])] = find(f[0]);
+  long parts = 0;
+  for (std::size_t v = 0; v < root.size(); ++v)
+    parts += root[v] == static_cast<int>(v);
+  // Every boundary edge is on two faces (manifold_fault): E = 3F/2.
+  const long faces = static_cast<long>(boundary.size()), edges = 3 * faces / 2;
+  return parts == 1 && vertices - edges + faces == 2;
+}
+
 int cut_pinches(TetMesh& mesh) {
   int removed = 0;
   // Each pass cuts the pinches it sees; a cut can leave a pinch at a node of

@@ -18,6 +18,11 @@ namespace anvil::mesh {
 /// none.
 std::string manifold_fault(const TetMesh& mesh);
 
+/// Whether the tets of `mesh` fill a ball: a manifold (manifold_fault)
+/// whose boundary is one sphere. CGAL's remesher builds its triangulation
+/// from tets only when they do.
+bool is_ball(const TetMesh& mesh);
+
 /// Cuts the pinches of `mesh` where a remesher left two parts of the body
 /// touching (CGAL across a flash thinner than its elements): around a
 /// boundary edge on four or more boundary faces, or a node whose boundary

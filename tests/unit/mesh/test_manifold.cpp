@@ -83,3 +83,25 @@ TEST_CASE("Cutting a fin off a box at its corner gives back the box and its tags
   CHECK(pinched.boundary_faces == box.boundary_faces);
   CHECK(pinched.boundary_tags == box.boundary_tags);
 }
+
+TEST_CASE("A ball is one piece bounded by one sphere: not two pieces, not a ring", "[mesh]") {
+  const mesh::TetMesh box = mesh::make_box({0, 0, 0}, {3, 3, 1}, {3, 3, 1});
+  CHECK(mesh::is_ball(box));
+  CHECK(mesh::is_ball(mesh::make_quarter_ring(5, 2, 3, 1))); // a quarter of a ring is no ring
+  mesh::TetMesh two = box;
+  mesh::append(two, mesh::make_box({5, 0, 0}, {1, 1, 1}, {1, 1, 1}));
+  CHECK_FALSE(mesh::is_ball(two));
+  // The box without its middle cell: a ring (Euler characteristic 0).
+  std::vector<char> middle(box.tets.size(), 0);
+  for (int e = 0; e < box.tet_count(); ++e) {
+    mesh::Point c = mesh::Point::Zero();
+    for (int v : box.tets[e])
+      c += box.nodes[v] / 4.0;
+    middle[e] = c.x() > 1 && c.x() < 2 && c.y() > 1 && c.y() < 2;
+  }
+  mesh::TetMesh ring = box;
+  mesh::remove_tets(ring, middle, {}, {});
+  REQUIRE(ring.tet_count() < box.tet_count());
+  CHECK(mesh::manifold_fault(ring).empty());
+  CHECK_FALSE(mesh::is_ball(ring));
+}

@@ -1,9 +1,11 @@
 // remesh_body: a new mesh of the same volume, tags kept on flat faces.
 #include "anvil/mesh/generators.h"
+#include "anvil/mesh/manifold.h"
 #include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/expected_nodes.h"
 #include "anvil/remesh/quality.h"
+#include "anvil/remesh/region_window.h"
 #include "anvil/remesh/remesh_body.h"
 
 #include <catch2/catch.hpp>
@@ -240,4 +242,37 @@ TEST_CASE("A remesh past its deadline or asked to stop stops inside CGAL's pass"
   // Neither asked: the same remesh runs to its end.
   settings.stop = {};
   CHECK(stopped_for([&] { remesh::remesh_body(box, settings); }) == 0);
+}
+
+TEST_CASE("A region inside a kept surface is remeshed in a window cut out of the body and put back whole",
+          "[unit][remesh]") {
+  // The box of the local remesh above, squeezed near x = 0, its tets with a
+  // centroid below x = 3 rebuilt: with a layer around them they are a ball
+  // under half the box, cut out and remeshed alone. The result is the box
+  // with the region rebuilt, as remesh_region's contract says: kept tets bit
+  // for bit first, the surface face for face, the volume.
+  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
+  const std::vector<char> on_boundary = mesh::boundary_node_flags(box);
+  for (std::size_t n = 0; n < box.nodes.size(); ++n)
+    if (!on_boundary[n] && box.nodes[n].x() < 2.5) box.nodes[n].x() = 2.0 + 0.2 * (box.nodes[n].x() - 2.0);
+  std::vector<char> rebuilt(box.tets.size(), 0);
+  for (int e = 0; e < box.tet_count(); ++e)
+    rebuilt[e] = mesh::centroid(box, e).x() < 3.0;
+  const std::optional<remesh::RegionWindow> window = remesh::region_window(box, rebuilt);
+  REQUIRE(window);
+  CHECK(window->soup.tet_count() < box.tet_count() / 2);
+  CHECK(mesh::is_ball(window->soup));
+  remesh::RemeshSettings settings;
+  settings.edge_length = 1.0;
+  const remesh::RegionRemesh out = remesh::remesh_region(box, rebuilt, settings);
+  check_kept_bit_for_bit(box, rebuilt, out);
+  CHECK(out.mesh.boundary_faces.size() == box.boundary_faces.size());
+  CHECK(tags_of(out.mesh) == tags_of(box));
+  CHECK(mesh::volume(out.mesh) == Approx(240.0).epsilon(1e-12));
+  CHECK(mesh::manifold_fault(out.mesh).empty());
+  // A region through the box from face to face, with its layer, is over half of it: no window.
+  std::vector<char> slab(box.tets.size(), 0);
+  for (int e = 0; e < box.tet_count(); ++e)
+    slab[e] = mesh::centroid(box, e).x() < 6.0;
+  CHECK_FALSE(remesh::region_window(box, slab));
 }
