@@ -34,7 +34,7 @@ std::optional<RegionWindow> region_window(const mesh::TetMesh& body, std::span<c
   }
   for (int layer = 0; layer < kMostLayers; ++layer) {
     in = grow_region(body, std::move(in), 1);
-    if (std::count(in.begin(), in.end(), 1) > kMostShare * body.tet_count()) return std::nullopt;
+    if (static_cast<double>(std::count(in.begin(), in.end(), 1)) > kMostShare * body.tet_count()) return std::nullopt;
     RegionWindow window;
     window.soup = body;
     std::vector<char> out(in.size());
@@ -78,35 +78,10 @@ std::vector<std::array<int, 3>> to_body(const RegionWindow& window, const std::v
 
 RegionRemesh merge_window(const mesh::TetMesh& body, std::span<const char> rebuilt, RegionSurface surface,
                           const RegionWindow& window, const RegionRemesh& inner) {
-  // As remesh_region numbers its result on the whole body: the nodes that
-  // stay (of kept tets, and of the boundary when it is kept) first in the
-  // body's order, the kept tets in the body's order, then the new ones.
-  RegionRemesh out;
-  const int n = body.node_count();
-  std::vector<char> stays(static_cast<std::size_t>(n), 0);
-  for (std::size_t e = 0; e < body.tets.size(); ++e)
-    if (!rebuilt[e])
-      for (int v : body.tets[e])
-        stays[v] = 1;
-  if (surface == RegionSurface::kept)
-    for (const mesh::Triangle& f : body.boundary_faces)
-      for (int v : f)
-        stays[v] = 1;
-  std::vector<int> number(static_cast<std::size_t>(n), -1);
-  for (int i = 0; i < n; ++i)
-    if (stays[i]) {
-      number[i] = static_cast<int>(out.mesh.nodes.size());
-      out.mesh.nodes.push_back(body.nodes[i]);
-      out.old_node.push_back(i);
-    }
-  for (std::size_t e = 0; e < body.tets.size(); ++e)
-    if (!rebuilt[e]) {
-      mesh::Tet t = body.tets[e];
-      for (int& v : t)
-        v = number[v];
-      out.mesh.tets.push_back(t);
-    }
-  out.kept_tets = out.mesh.tet_count();
+  // As remesh_region numbers its result on the whole body: the kept part
+  // first, then the new nodes and tets.
+  std::vector<int> number;
+  RegionRemesh out = kept_part(body, rebuilt, surface, number);
   // The window's new tets; a node CGAL left where it was keeps its body node.
   std::vector<int> inner_number(inner.mesh.nodes.size(), -1);
   for (int e = inner.kept_tets; e < inner.mesh.tet_count(); ++e) {
@@ -114,7 +89,7 @@ RegionRemesh merge_window(const mesh::TetMesh& body, std::span<const char> rebui
     for (int& v : t) {
       if (inner_number[v] < 0) {
         const int old = inner.old_node[v] >= 0 ? window.body_node[inner.old_node[v]] : -1;
-        if (old >= 0 && stays[old]) {
+        if (old >= 0 && number[old] >= 0) {
           inner_number[v] = number[old];
         } else {
           inner_number[v] = static_cast<int>(out.mesh.nodes.size());

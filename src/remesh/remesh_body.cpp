@@ -229,6 +229,36 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
 
 } // namespace
 
+RegionRemesh kept_part(const mesh::TetMesh& body, std::span<const char> rebuilt, RegionSurface surface,
+                       std::vector<int>& number) {
+  std::vector<char> stays(body.nodes.size(), 0);
+  for (std::size_t e = 0; e < body.tets.size(); ++e)
+    if (!rebuilt[e])
+      for (int v : body.tets[e])
+        stays[v] = 1;
+  if (surface == RegionSurface::kept)
+    for (const mesh::Triangle& f : body.boundary_faces)
+      for (int v : f)
+        stays[v] = 1;
+  RegionRemesh out;
+  number.assign(body.nodes.size(), -1);
+  for (std::size_t i = 0; i < stays.size(); ++i)
+    if (stays[i]) {
+      number[i] = static_cast<int>(out.mesh.nodes.size());
+      out.mesh.nodes.push_back(body.nodes[i]);
+      out.old_node.push_back(static_cast<int>(i));
+    }
+  for (std::size_t e = 0; e < body.tets.size(); ++e)
+    if (!rebuilt[e]) {
+      mesh::Tet t = body.tets[e];
+      for (int& v : t)
+        v = number[v];
+      out.mesh.tets.push_back(t);
+    }
+  out.kept_tets = out.mesh.tet_count();
+  return out;
+}
+
 namespace {
 
 /// remesh_region with CGAL given every tet of `body`.
@@ -250,11 +280,6 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
   const std::vector<int> tag_of_patch = build(
       body, settings.feature_angle, [&](std::size_t e) { return rebuilt[e] ? 1 : 0; }, tr, handles, patch);
   const int n = body.node_count();
-  std::vector<char> stays(static_cast<std::size_t>(n), 0);
-  for (std::size_t e = 0; e < body.tets.size(); ++e)
-    if (!rebuilt[e])
-      for (int v : body.tets[e])
-        stays[v] = 1;
   // The border between the region and the kept tets, as sorted node triples.
   std::set<std::array<int, 3>> border;
   for (const mesh::InnerFace& f : mesh::inner_faces(body))
@@ -265,9 +290,6 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
                                           CGAL::parameters::number_of_iterations(settings.iterations)
                                               .remesh_boundaries(false)
                                               .cell_is_selected_map(selection.map()));
-    for (const mesh::Triangle& f : body.boundary_faces)
-      for (int v : f)
-        stays[v] = 1;
   } else {
     // CGAL splits an edge longer than 4/3 of the length asked: the length
     // is raised so that no border edge is.
@@ -301,28 +323,17 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
                                               .cell_is_selected_map(selection.map()));
   }
 
-  // The nodes that stay (those of kept tets, and with the surface kept those
-  // of the boundary), which CGAL could not move or remove: their handles live on.
-  RegionRemesh out;
+  // The nodes that stay, which CGAL could not move or remove: their handles live on.
+  std::vector<int> kept_number;
+  RegionRemesh out = kept_part(body, rebuilt, surface, kept_number);
   std::unordered_map<VertexHandle, int> number;
-  for (int i = 0; i < n; ++i)
-    if (stays[i]) {
-      number.emplace(handles[i + 1], static_cast<int>(out.mesh.nodes.size()));
-      out.mesh.nodes.push_back(body.nodes[i]);
-      out.old_node.push_back(i);
-    }
-  for (std::size_t e = 0; e < body.tets.size(); ++e)
-    if (!rebuilt[e]) {
-      mesh::Tet t = body.tets[e];
-      for (int& v : t)
-        v = number.at(handles[v + 1]);
-      out.mesh.tets.push_back(t);
-    }
-  out.kept_tets = out.mesh.tet_count();
   // A region node CGAL left where it was keeps its number in the body.
   std::unordered_map<VertexHandle, int> original;
   for (int i = 0; i < n; ++i)
-    if (!stays[i]) original.emplace(handles[i + 1], i);
+    if (kept_number[i] >= 0)
+      number.emplace(handles[i + 1], kept_number[i]);
+    else
+      original.emplace(handles[i + 1], i);
   // The new region: its new vertices after the kept ones, its tets after the kept tets.
   std::vector<mesh::Triangle> tagged;
   std::vector<int> tags;

@@ -85,6 +85,13 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
                            RegionSurface surface = RegionSurface::kept, std::span<const char> pinned = {},
                            std::vector<std::array<int, 3>>* changed_border = nullptr);
 
+/// The part of remesh_region's result the region leaves: the nodes that
+/// stay (those of the tets `rebuilt` does not flag, and of the boundary when
+/// `surface` is kept), in the body's order, and those tets, in the body's
+/// order. `number` gets each body node's index in it, −1 where it goes.
+RegionRemesh kept_part(const mesh::TetMesh& body, std::span<const char> rebuilt, RegionSurface surface,
+                       std::vector<int>& number);
+
 /// Patch number (from 1) of each boundary face of `body`, as remesh_body sets them.
 std::vector<int> boundary_patches(const mesh::TetMesh& body, double feature_angle);
 

@@ -40,6 +40,15 @@ void check_kept_bit_for_bit(const mesh::TetMesh& body, const std::vector<char>& 
   }
   CHECK(kept == out.kept_tets);
 }
+/// A box whose interior nodes near x = 0 are squeezed towards the plane
+/// x = 2 (poor elements there).
+mesh::TetMesh squeezed_box() {
+  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
+  const std::vector<char> on_boundary = mesh::boundary_node_flags(box);
+  for (std::size_t n = 0; n < box.nodes.size(); ++n)
+    if (!on_boundary[n] && box.nodes[n].x() < 2.5) box.nodes[n].x() = 2.0 + 0.2 * (box.nodes[n].x() - 2.0);
+  return box;
+}
 } // namespace
 
 TEST_CASE("Remeshing a box keeps its volume, faces and tags", "[unit][remesh]") {
@@ -129,13 +138,8 @@ TEST_CASE("An adaptive size field refines where it asks and keeps the volume", "
 
 TEST_CASE("A local remesh rebuilds its region only: the rest keeps its nodes and elements bit for bit",
           "[unit][remesh]") {
-  // A box whose interior nodes near x = 0 are squeezed towards the plane
-  // x = 2 (poor elements there); the tets with a centroid below x = 3 are
-  // rebuilt.
-  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
-  const std::vector<char> on_boundary = mesh::boundary_node_flags(box);
-  for (std::size_t n = 0; n < box.nodes.size(); ++n)
-    if (!on_boundary[n] && box.nodes[n].x() < 2.5) box.nodes[n].x() = 2.0 + 0.2 * (box.nodes[n].x() - 2.0);
+  // The squeezed box; the tets with a centroid below x = 3 are rebuilt.
+  const mesh::TetMesh box = squeezed_box();
   std::vector<char> rebuilt(box.tets.size(), 0);
   double worst_before = 1.0;
   for (int e = 0; e < box.tet_count(); ++e)
@@ -251,10 +255,7 @@ TEST_CASE("A region inside a kept surface is remeshed in a window cut out of the
   // under half the box, cut out and remeshed alone. The result is the box
   // with the region rebuilt, as remesh_region's contract says: kept tets bit
   // for bit first, the surface face for face, the volume.
-  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
-  const std::vector<char> on_boundary = mesh::boundary_node_flags(box);
-  for (std::size_t n = 0; n < box.nodes.size(); ++n)
-    if (!on_boundary[n] && box.nodes[n].x() < 2.5) box.nodes[n].x() = 2.0 + 0.2 * (box.nodes[n].x() - 2.0);
+  const mesh::TetMesh box = squeezed_box();
   std::vector<char> rebuilt(box.tets.size(), 0);
   for (int e = 0; e < box.tet_count(); ++e)
     rebuilt[e] = mesh::centroid(box, e).x() < 3.0;
