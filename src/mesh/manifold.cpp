@@ -173,10 +173,8 @@ void remove_with_tags(TetMesh& mesh, const std::vector<char>& remove) {
   remove_tets(mesh, remove, tagged, tags);
 }
 
-} // namespace
-
-std::string manifold_fault(const TetMesh& mesh) {
-  const FaceUse use = face_use(mesh);
+/// manifold_fault of a mesh of `node_count` nodes whose faces are `use`.
+std::string manifold_fault(const FaceUse& use, std::size_t node_count) {
   if (!use.crowded.empty()) {
     const auto& [f, count] = use.crowded.front();
     return "the face of nodes " + nodes_text({f[0], f[1], f[2]}) + " is in " + std::to_string(count) + " tetrahedra";
@@ -186,18 +184,25 @@ std::string manifold_fault(const TetMesh& mesh) {
     return "the boundary edge of nodes " + nodes_text({e.first, e.second}) + " is on " + std::to_string(count) +
            " boundary faces";
   }
-  if (const auto pinched = pinched_nodes(use.boundary, mesh.nodes.size()); !pinched.empty())
+  if (const auto pinched = pinched_nodes(use.boundary, node_count); !pinched.empty())
     return "the boundary faces around node " + std::to_string(pinched.front() + 1) +
            " form more than one fan (two parts of the body touch there)";
   return {};
 }
 
+} // namespace
+
+std::string manifold_fault(const TetMesh& mesh) {
+  return manifold_fault(face_use(mesh), mesh.nodes.size());
+}
+
 bool is_ball(const TetMesh& mesh) {
-  if (mesh.tets.empty() || !manifold_fault(mesh).empty()) return false;
+  const FaceUse use = face_use(mesh);
+  if (mesh.tets.empty() || !manifold_fault(use, mesh.nodes.size()).empty()) return false;
   // A manifold's boundary is closed surfaces; one sphere (connected, Euler
   // characteristic V − E + F = 2) bounds a ball: a second part, a hole
   // through or a cavity would add a surface or lower the characteristic.
-  const std::vector<Triangle> boundary = face_use(mesh).boundary;
+  const std::vector<Triangle>& boundary = use.boundary;
   std::vector<int> root(mesh.nodes.size(), -1);
   auto find = [&](int v) {
     while (root[v] != v)

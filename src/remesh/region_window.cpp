@@ -5,7 +5,6 @@
 #include "anvil/remesh/rebuild_region.h"
 
 #include <algorithm>
-#include <map>
 #include <set>
 
 namespace anvil::remesh {
@@ -16,11 +15,6 @@ constexpr int kMostLayers = 3;
 /// A window over this share of the body saves CGAL too little to be cut out.
 constexpr double kMostShare = 0.5;
 
-mesh::Triangle sorted(mesh::Triangle f) {
-  std::sort(f.begin(), f.end());
-  return f;
-}
-
 } // namespace
 
 std::optional<RegionWindow> region_window(const mesh::TetMesh& body, std::span<const char> rebuilt) {
@@ -29,7 +23,7 @@ std::optional<RegionWindow> region_window(const mesh::TetMesh& body, std::span<c
   std::set<mesh::Triangle> surface;
   int fresh_tag = 1;
   for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
-    surface.insert(sorted(body.boundary_faces[f]));
+    surface.insert(mesh::sorted(body.boundary_faces[f]));
     fresh_tag = std::max(fresh_tag, body.boundary_tags[f] + 1);
   }
   for (int layer = 0; layer < kMostLayers; ++layer) {
@@ -54,34 +48,19 @@ std::optional<RegionWindow> region_window(const mesh::TetMesh& body, std::span<c
       mesh::Triangle in_body;
       for (int k = 0; k < 3; ++k)
         in_body[k] = window.body_node[window.soup.boundary_faces[f][k]];
-      if (surface.count(sorted(in_body)) == 0) window.soup.boundary_tags[f] = fresh_tag;
+      if (surface.count(mesh::sorted(in_body)) == 0) window.soup.boundary_tags[f] = fresh_tag;
     }
     if (mesh::is_ball(window.soup)) return window;
   }
   return std::nullopt;
 }
 
-std::vector<char> to_window(const RegionWindow& window, std::span<const char> per_body_node) {
-  if (per_body_node.empty()) return {};
-  std::vector<char> out(window.body_node.size());
-  for (std::size_t n = 0; n < out.size(); ++n)
-    out[n] = per_body_node[window.body_node[n]];
-  return out;
-}
-
-std::vector<std::array<int, 3>> to_body(const RegionWindow& window, const std::vector<std::array<int, 3>>& faces) {
-  std::vector<std::array<int, 3>> out;
-  for (const std::array<int, 3>& f : faces)
-    out.push_back(sorted({window.body_node[f[0]], window.body_node[f[1]], window.body_node[f[2]]}));
-  return out;
-}
-
-RegionRemesh merge_window(const mesh::TetMesh& body, std::span<const char> rebuilt, RegionSurface surface,
-                          const RegionWindow& window, const RegionRemesh& inner) {
+RegionRemesh merge_window(const mesh::TetMesh& body, std::span<const char> rebuilt, const RegionWindow& window,
+                          const RegionRemesh& inner) {
   // As remesh_region numbers its result on the whole body: the kept part
   // first, then the new nodes and tets.
   std::vector<int> number;
-  RegionRemesh out = kept_part(body, rebuilt, surface, number);
+  RegionRemesh out = kept_part(body, rebuilt, RegionSurface::kept, number);
   // The window's new tets; a node CGAL left where it was keeps its body node.
   std::vector<int> inner_number(inner.mesh.nodes.size(), -1);
   for (int e = inner.kept_tets; e < inner.mesh.tet_count(); ++e) {
@@ -101,39 +80,11 @@ RegionRemesh merge_window(const mesh::TetMesh& body, std::span<const char> rebui
     }
     out.mesh.tets.push_back(t);
   }
-  // The boundary: the body's faces on kept tets (all of them when the
-  // surface is kept), and the window's boundary faces on new tets.
+  // The boundary is the body's, face for face (on staying nodes).
   std::vector<mesh::Triangle> tagged;
-  std::vector<int> tags;
-  if (surface == RegionSurface::kept) {
-    for (const mesh::Triangle& f : body.boundary_faces)
-      tagged.push_back({number[f[0]], number[f[1]], number[f[2]]});
-    tags = body.boundary_tags;
-  } else {
-    std::map<mesh::Triangle, int> body_tag, window_tag;
-    for (std::size_t f = 0; f < body.boundary_faces.size(); ++f)
-      body_tag.emplace(sorted(body.boundary_faces[f]), body.boundary_tags[f]);
-    for (std::size_t f = 0; f < inner.mesh.boundary_faces.size(); ++f)
-      window_tag.emplace(sorted(inner.mesh.boundary_faces[f]), inner.mesh.boundary_tags[f]);
-    for (std::size_t e = 0; e < body.tets.size(); ++e)
-      if (!rebuilt[e])
-        for (const auto& fv : mesh::kFaceVertices) {
-          const mesh::Tet& t = body.tets[e];
-          if (const auto it = body_tag.find(sorted({t[fv[0]], t[fv[1]], t[fv[2]]})); it != body_tag.end()) {
-            tagged.push_back({number[t[fv[0]]], number[t[fv[1]]], number[t[fv[2]]]});
-            tags.push_back(it->second);
-          }
-        }
-    for (int e = inner.kept_tets; e < inner.mesh.tet_count(); ++e)
-      for (const auto& fv : mesh::kFaceVertices) {
-        const mesh::Tet& t = inner.mesh.tets[e];
-        if (const auto it = window_tag.find(sorted({t[fv[0]], t[fv[1]], t[fv[2]]})); it != window_tag.end()) {
-          tagged.push_back({inner_number[t[fv[0]]], inner_number[t[fv[1]]], inner_number[t[fv[2]]]});
-          tags.push_back(it->second);
-        }
-      }
-  }
-  mesh::build_boundary(out.mesh, tagged, tags);
+  for (const mesh::Triangle& f : body.boundary_faces)
+    tagged.push_back({number[f[0]], number[f[1]], number[f[2]]});
+  mesh::build_boundary(out.mesh, tagged, body.boundary_tags);
   if (out.mesh.boundary_faces.size() != tagged.size())
     throw RunError("locally remeshed body: its rebuilt region does not fit the kept elements");
   if (const std::string why = mesh::fault(out.mesh); !why.empty()) throw RunError("locally remeshed body: " + why);

@@ -436,15 +436,10 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
   const std::optional<RegionWindow> window =
       surface == RegionSurface::kept ? region_window(body, rebuilt) : std::nullopt;
   if (!window) return remesh_region_in(body, rebuilt, settings, surface, pinned, changed_border);
-  std::vector<std::array<int, 3>> changed;
-  try {
-    const RegionRemesh inner = remesh_region_in(window->soup, window->rebuilt, settings, surface,
-                                                to_window(*window, pinned), changed_border ? &changed : nullptr);
-    return merge_window(body, rebuilt, surface, *window, inner);
-  } catch (const RunError&) {
-    if (changed_border) *changed_border = to_body(*window, changed);
-    throw;
-  }
+  // With the surface kept nothing is pinned (it all stays) and the border
+  // cannot change (all of it is frozen).
+  return merge_window(body, rebuilt, *window,
+                      remesh_region_in(window->soup, window->rebuilt, settings, surface, {}, nullptr));
 }
 
 mesh::TetMesh remesh_body(const mesh::TetMesh& body, const RemeshSettings& settings) {

@@ -7,7 +7,6 @@
 #include "anvil/mesh/TetMesh.h"
 #include "anvil/remesh/remesh_body.h"
 
-#include <array>
 #include <optional>
 #include <span>
 #include <vector>
@@ -29,16 +28,11 @@ struct RegionWindow {
 /// they form a ball; nothing when they do not, or hold over half the body.
 std::optional<RegionWindow> region_window(const mesh::TetMesh& body, std::span<const char> rebuilt);
 
-/// Per node of the window: the value of `per_body_node` at its body node.
-std::vector<char> to_window(const RegionWindow& window, std::span<const char> per_body_node);
-
-/// Sorted node triples of the window as the body's sorted node triples.
-std::vector<std::array<int, 3>> to_body(const RegionWindow& window, const std::vector<std::array<int, 3>>& faces);
-
-/// The body remeshed: `inner`, remesh_region's result on the window, put
-/// into the body with remesh_region's order (the kept tets of the body
-/// first, in its order, on its nodes bit for bit, then the new ones).
-RegionRemesh merge_window(const mesh::TetMesh& body, std::span<const char> rebuilt, RegionSurface surface,
-                          const RegionWindow& window, const RegionRemesh& inner);
+/// The body remeshed: `inner`, remesh_region's result on the window with
+/// its surface kept, put into the body with remesh_region's order (the
+/// kept tets of the body first, in its order, on its nodes bit for bit,
+/// then the new ones; the body's boundary face for face).
+RegionRemesh merge_window(const mesh::TetMesh& body, std::span<const char> rebuilt, const RegionWindow& window,
+                          const RegionRemesh& inner);
 
 } // namespace anvil::remesh
