@@ -34,6 +34,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <string>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -76,27 +77,35 @@ std::array<int, 3> facet_key(const mesh::Triangle& f) {
 }
 /// CGAL's own default selection, the cells of a subdomain (≠ 0), which
 /// throws RemeshStopped once the settings' stop is asked or their deadline
-/// has passed. CGAL 5.5 gives no way to stop a pass, but it asks the
-/// selection at every cell it splits, collapses, flips or smooths around;
-/// the clock is read every kLooksPerCheck looks.
+/// has passed, and a RunError once CGAL has looked at cells more often than
+/// any pass that ends does. CGAL 5.5 gives no way to stop a pass, but it
+/// asks the selection at every cell it splits, collapses, flips or smooths
+/// around; the clock is read every kLooksPerCheck looks.
 class StoppableSelection {
 public:
-  explicit StoppableSelection(const RemeshSettings& settings) : settings_(settings) {}
+  /// For a triangulation of `cells` cells remeshed in `settings.iterations` passes.
+  StoppableSelection(const RemeshSettings& settings, std::size_t cells)
+      : settings_(settings), most_looks_(settings.most_looks_per_cell_pass * std::max<std::size_t>(cells, 1) *
+                                         static_cast<std::size_t>(std::max(settings.iterations, 1))) {}
   /// The selection as CGAL takes it (copied by value into each step).
   auto map() {
     return [this](Triangulation::Cell_handle c) {
       if (++looks_ % kLooksPerCheck == 0) {
         if (settings_.stop.stop_requested()) throw RemeshStopped{false};
         if (std::chrono::steady_clock::now() > settings_.deadline) throw RemeshStopped{true};
+        if (looks_ > most_looks_)
+          throw RunError("CGAL's remeshing stalled: " + std::to_string(looks_) + " looks at its cells, over " +
+                         std::to_string(settings_.most_looks_per_cell_pass) + " per cell and pass");
       }
       return c->subdomain_index() != 0;
     };
   }
 
 private:
-  static constexpr unsigned kLooksPerCheck = 1024;
+  static constexpr std::size_t kLooksPerCheck = 1024;
   const RemeshSettings& settings_;
-  unsigned looks_ = 0;
+  std::size_t looks_ = 0;
+  const std::size_t most_looks_;
 };
 
 /// One CGAL isotropic remeshing at `length` of the cells `selected` picks
@@ -156,7 +165,7 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
   const std::vector<int> tag_of_patch = build(
       body, settings.feature_angle, [](std::size_t) { return 1; }, tr, handles, patch);
 
-  StoppableSelection selection(settings);
+  StoppableSelection selection(settings, tr.number_of_finite_cells());
   remesh_pass(tr, settings.edge_length, settings.iterations, selection.map());
   // Back to our mesh: the cells of the body (subdomain ≠ 0). CGAL's cell
   // order has no locality; the nodes are numbered along a Hilbert curve and
@@ -284,7 +293,7 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
   std::set<std::array<int, 3>> border;
   for (const mesh::InnerFace& f : mesh::inner_faces(body))
     if (rebuilt[f.tets[0]] != rebuilt[f.tets[1]]) border.insert(f.face);
-  StoppableSelection selection(settings);
+  StoppableSelection selection(settings, tr.number_of_finite_cells());
   if (surface == RegionSurface::kept) {
     CGAL::tetrahedral_isotropic_remeshing(tr, settings.edge_length,
                                           CGAL::parameters::number_of_iterations(settings.iterations)

@@ -31,6 +31,15 @@ struct RemeshSettings {
   /// A stop asked here stops the pass at work (RemeshStopped): a try that is
   /// no longer needed.
   std::stop_token stop;
+  /// A CGAL pass that has looked at its cells more than this many times per
+  /// cell and pass fails (a RunError): one that ends looks 17-80 times (the
+  /// 238 CGAL calls of closed_die_flash, its adaptive run,
+  /// hot_closed_die_flash and 45 increments of conrod). A local region of
+  /// hot_closed_die_flash on two processes kept CGAL's smoothing busy in its
+  /// search for the surface normals until remeshing.time_limit (120 s). A
+  /// count, not a time, so that the same input gives the same mesh on a busy
+  /// machine too.
+  std::size_t most_looks_per_cell_pass = 1000;
   double quality_floor =
       0.0; ///< putting a node back onto the old surface may not leave an element below this (or below what it was)
 };

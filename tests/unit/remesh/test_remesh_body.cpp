@@ -248,6 +248,21 @@ TEST_CASE("A remesh past its deadline or asked to stop stops inside CGAL's pass"
   CHECK(stopped_for([&] { remesh::remesh_body(box, settings); }) == 0);
 }
 
+TEST_CASE("A CGAL pass that looks at its cells more often than any pass that ends fails", "[unit][remesh]") {
+  // The count is checked every 1024 looks: at one look per cell and pass the
+  // box's first check is past it. A failure, not a stop: the caller tries
+  // another length or the whole body.
+  const mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 2.0);
+  remesh::RemeshSettings settings;
+  settings.edge_length = 1.0;
+  settings.most_looks_per_cell_pass = 1;
+  const std::vector<char> all(box.tets.size(), 1);
+  CHECK_THROWS_WITH(remesh::remesh_body(box, settings), Catch::Contains("CGAL's remeshing stalled"));
+  CHECK_THROWS_WITH(remesh::remesh_region(box, all, settings), Catch::Contains("CGAL's remeshing stalled"));
+  settings.most_looks_per_cell_pass = remesh::RemeshSettings{}.most_looks_per_cell_pass;
+  CHECK_NOTHROW(remesh::remesh_body(box, settings));
+}
+
 TEST_CASE("A region inside a kept surface is remeshed in a window cut out of the body and put back whole",
           "[unit][remesh]") {
   // The box of the local remesh above, squeezed near x = 0, its tets with a
