@@ -83,10 +83,11 @@ std::array<int, 3> facet_key(const mesh::Triangle& f) {
 /// around; the clock is read every kLooksPerCheck looks.
 class StoppableSelection {
 public:
-  /// For a triangulation of `cells` cells remeshed in `settings.iterations` passes.
-  StoppableSelection(const RemeshSettings& settings, std::size_t cells)
-      : settings_(settings), most_looks_(settings.most_looks_per_cell_pass * std::max<std::size_t>(cells, 1) *
-                                         static_cast<std::size_t>(std::max(settings.iterations, 1))) {}
+  /// For `tr` remeshed in `settings.iterations` passes.
+  StoppableSelection(const RemeshSettings& settings, const Triangulation& tr)
+      : settings_(settings),
+        most_looks_(settings.most_looks_per_cell_pass * std::max<std::size_t>(tr.number_of_finite_cells(), 1) *
+                    static_cast<std::size_t>(std::max(settings.iterations, 1))) {}
   /// The selection as CGAL takes it (copied by value into each step).
   auto map() {
     return [this](Triangulation::Cell_handle c) {
@@ -165,7 +166,7 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
   const std::vector<int> tag_of_patch = build(
       body, settings.feature_angle, [](std::size_t) { return 1; }, tr, handles, patch);
 
-  StoppableSelection selection(settings, tr.number_of_finite_cells());
+  StoppableSelection selection(settings, tr);
   remesh_pass(tr, settings.edge_length, settings.iterations, selection.map());
   // Back to our mesh: the cells of the body (subdomain ≠ 0). CGAL's cell
   // order has no locality; the nodes are numbered along a Hilbert curve and
@@ -293,7 +294,7 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
   std::set<std::array<int, 3>> border;
   for (const mesh::InnerFace& f : mesh::inner_faces(body))
     if (rebuilt[f.tets[0]] != rebuilt[f.tets[1]]) border.insert(f.face);
-  StoppableSelection selection(settings, tr.number_of_finite_cells());
+  StoppableSelection selection(settings, tr);
   if (surface == RegionSurface::kept) {
     CGAL::tetrahedral_isotropic_remeshing(tr, settings.edge_length,
                                           CGAL::parameters::number_of_iterations(settings.iterations)

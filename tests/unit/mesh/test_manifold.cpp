@@ -2,6 +2,7 @@
 // touch themselves at a node, along an edge or on a face are named.
 #include "anvil/mesh/generators.h"
 #include "anvil/mesh/manifold.h"
+#include "anvil/mesh/tet_geometry.h"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -94,9 +95,7 @@ TEST_CASE("A ball is one piece bounded by one sphere: not two pieces, not a ring
   // The box without its middle cell: a ring (Euler characteristic 0).
   std::vector<char> middle(box.tets.size(), 0);
   for (int e = 0; e < box.tet_count(); ++e) {
-    mesh::Point c = mesh::Point::Zero();
-    for (int v : box.tets[e])
-      c += box.nodes[v] / 4.0;
+    const mesh::Point c = mesh::centroid(box, e);
     middle[e] = c.x() > 1 && c.x() < 2 && c.y() > 1 && c.y() < 2;
   }
   mesh::TetMesh ring = box;
