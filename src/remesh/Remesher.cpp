@@ -190,17 +190,15 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
       {1.0, spec.feature_angle}, {0.95, spec.feature_angle}, {0.9, spec.feature_angle}};
   if (const double wider = std::min(2.0 * spec.feature_angle, kWidestFeatureAngle); wider > spec.feature_angle)
     tries.emplace_back(1.0, wider);
-  // The first try runs alone: it is good enough in nearly every remesh,
-  // and a second CGAL run beside it slows it (docs/remeshing.md). The tries
-  // after it do not depend on each other: as many run at once as this
+  // The tries do not depend on each other: as many run at once as this
   // process has cores, and they are taken up one after the other as if made
   // so, which gives the same mesh on any number of cores. Those beside a try
   // that is good enough are stopped, not waited for.
   const std::size_t at_once = std::max(1, processes::available_cores());
   std::optional<Remeshed> best;
   auto done = [&] { return best && (best->worst >= spec.quality || std::chrono::steady_clock::now() > deadline); };
-  for (std::size_t first = 0, end = 1; first < tries.size() && !done(); first = end) {
-    end = first == 0 ? 1 : std::min(tries.size(), first + at_once);
+  for (std::size_t first = 0; first < tries.size() && !done(); first += at_once) {
+    const std::size_t end = std::min(tries.size(), first + at_once);
     std::stop_source not_needed;
     std::vector<std::future<Remeshed>> beside;
     for (std::size_t k = first + 1; k < end; ++k)
