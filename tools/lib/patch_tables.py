@@ -167,8 +167,10 @@ def krylov(directory, anvil):
     nodal contact on non-matching meshes, whose facet contact rows couple a
     node with many nodes of the other body, for the velocity AMGs an expert
     can pick (ML aggregating on the matrix or on the nodes' geometry, its
-    default with facet contact); one process, so that the counts do not
-    depend on the cores."""
+    default with facet contact); then, where the velocity block is regular
+    (the displacement-driven test, its interface sticking), ML against an
+    exact velocity solve. One process, so that the counts do not depend on
+    the cores."""
     root = doc_figures.ROOT
     amgs = OrderedDict([("ML (default: geometric aggregation with facet contact)", []),
                         ("ML, matrix aggregation", ["-fieldsplit_0_pc_ml_Aux", "false"]),
@@ -176,7 +178,7 @@ def krylov(directory, anvil):
                         ("GAMG", ["-fieldsplit_0_pc_type", "gamg"]),
                         ("BoomerAMG", ["-fieldsplit_0_pc_type", "hypre"])])
 
-    def iterations(lower, upper, formulation, integration, options, case="cases/patch_test_cubes.yaml"):
+    def iterations(lower, upper, formulation, integration, options, case):
         out = os.path.join(directory, "krylov")
         subprocess.run([anvil, "run", os.path.join(root, case), "-o", out, "--np", "1",
                         "--set", "output.picture=false", "--set", "solver.linear_solver=fgmres", "--set",
@@ -188,18 +190,24 @@ def krylov(directory, anvil):
         with open(os.path.join(out, "summary.json")) as f:
             return json.load(f)["krylov_iterations"]
 
-    lines = []
-    for lower, upper in ((2, 16), (4, 16), (2, 8), (16, 2)):
-        for formulation in ("master_slave", "quasi_symmetric"):
-            line = [f"{lower}/{upper}", SHORT[formulation]]
-            for options in amgs.values():
-                nodal, facet = (iterations(lower, upper, formulation, i, options) for i in ("nodal", "facet"))
-                line.append(f"{nodal} / {facet} ({facet / nodal:.2f}x)")
-            lines.append(line)
-            print(" | ".join(line), flush=True)
-    doc_figures.write_block("linear-solve.md", TOOL + " --krylov", "facet krylov", doc_figures.table(
-        ["meshes (lower/upper cells)", "formulation"] + [f"{name}: nodal / facet" for name in amgs], lines))
+    def table(variants, case, extra=()):
+        """nodal / facet iterations of `case` per mesh pair and formulation,
+        a column per variant (name -> anvil options, after `extra`)."""
+        lines = []
+        for lower, upper in ((2, 16), (4, 16), (2, 8), (16, 2)):
+            for formulation in ("master_slave", "quasi_symmetric"):
+                line = [f"{lower}/{upper}", SHORT[formulation]]
+                for options in variants.values():
+                    nodal, facet = (iterations(lower, upper, formulation, i, list(extra) + options, case)
+                                    for i in ("nodal", "facet"))
+                    line.append(f"{nodal} / {facet} ({facet / nodal:.2f}x)")
+                lines.append(line)
+                print(" | ".join(line), flush=True)
+        return doc_figures.table(["meshes (lower/upper cells)", "formulation"] +
+                                 [f"{name}: nodal / facet" for name in variants], lines)
 
+    doc_figures.write_block("linear-solve.md", TOOL + " --krylov", "facet krylov",
+                            table(amgs, "cases/patch_test_cubes.yaml"))
     # The same pairs where the velocity block is regular: the upper cube's
     # top driven by a velocity and the interface sticking hold the uniform
     # contraction of one cube against the dilatation of the other that the
@@ -207,19 +215,9 @@ def krylov(directory, anvil):
     # exact velocity solve (LU) then shows what the rest of the
     # preconditioner makes of the contact rows.
     held = OrderedDict([("ML (default)", []), ("velocity block exact (LU)", ["-fieldsplit_0_pc_type", "lu"])])
-    lines = []
-    for lower, upper in ((2, 16), (4, 16), (2, 8), (16, 2)):
-        for formulation in ("master_slave", "quasi_symmetric"):
-            line = [f"{lower}/{upper}", SHORT[formulation]]
-            for options in held.values():
-                nodal, facet = (iterations(lower, upper, formulation, i,
-                                           ["--set", "contact_pairs[0].friction.law=sticking"] + options,
-                                           "cases/patch_test_cubes_displacement.yaml") for i in ("nodal", "facet"))
-                line.append(f"{nodal} / {facet} ({facet / nodal:.2f}x)")
-            lines.append(line)
-            print(" | ".join(line), flush=True)
-    doc_figures.write_block("linear-solve.md", TOOL + " --krylov", "facet krylov held", doc_figures.table(
-        ["meshes (lower/upper cells)", "formulation"] + [f"{name}: nodal / facet" for name in held], lines))
+    doc_figures.write_block("linear-solve.md", TOOL + " --krylov", "facet krylov held",
+                            table(held, "cases/patch_test_cubes_displacement.yaml",
+                                  ["--set", "contact_pairs[0].friction.law=sticking"]))
 
 
 if __name__ == "__main__":
