@@ -1,5 +1,6 @@
 // anvil: command-line entry point. Catches every error once, prints one
 // clear message and exits non-zero (STYLE "Input and errors").
+#include "anvil/core/blas_kernels.h"
 #include "anvil/core/error.h"
 #include "anvil/core/interrupt.h"
 #include "anvil/core/log.h"
@@ -245,6 +246,7 @@ int main(int argc, char** argv) {
   }
   if (command == "render") return render(argc, argv);
   if (command != "run" && command != "output-dir") return usage_error("unknown command '" + command + "'");
+  if (command == "run") anvil::blas_kernels::pin(argv); // before anything else: it may start this program again
 
   std::string case_file;
   std::vector<std::string> overrides;

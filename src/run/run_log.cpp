@@ -2,6 +2,7 @@
 
 #include "anvil/run/blows.h"
 
+#include "anvil/core/blas_kernels.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
 #include "anvil/scene/damage_peak.h"
@@ -82,10 +83,11 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
   // The threads a process may use (main's tbb::global_control: its share
   // of the cores), not the machine's default.
   const int threads = static_cast<int>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-  log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d process%s x %d thread%s",
+  log::info("solver: %s (asked: %s), Newton tolerance %.1e (|dv|/|v| %.1e), %d process%s x %d thread%s, %s",
             solver::to_string(disc.solver->linear_solver().kind()).c_str(),
             solver::to_string(c.linear_solver.kind).c_str(), c.newton.tolerance, c.newton.increment_tolerance,
-            processes::count(), processes::count() > 1 ? "es" : "", threads, threads > 1 ? "s" : "");
+            processes::count(), processes::count() > 1 ? "es" : "", threads, threads > 1 ? "s" : "",
+            blas_kernels::in_use().c_str());
   if (c.time.enabled) {
     const TimeSpec& t = c.time;
     log::info(

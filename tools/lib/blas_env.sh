@@ -10,7 +10,8 @@
 #   becomes another mesh (hot_conrod's load after 10 increments: 9682.27 N
 #   with the AVX2 kernels, the regression signature; 9684.52 N with the SSE3
 #   ones, 9684.96 N with the AVX-512 ones). Only read at the library's
-#   start, so set before Anvil starts.
+#   start, so set before the program starts. `anvil run` sets it itself
+#   (core/blas_kernels.h); the test programs need it from here.
 export OPENBLAS_NUM_THREADS=${OPENBLAS_NUM_THREADS:-1} OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
 if [ -z "${OPENBLAS_CORETYPE:-}" ] && grep -qw avx2 /proc/cpuinfo 2>/dev/null && grep -qw fma /proc/cpuinfo; then
   export OPENBLAS_CORETYPE=Haswell

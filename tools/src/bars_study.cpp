@@ -5,6 +5,7 @@
 // Prints a Markdown table and writes DIR/bars_study.csv (default
 // out/bars_study); tools/bars_study plots error against degrees of freedom
 // and against wall time (DIR/bars_dofs.png, DIR/bars_time.png).
+#include "anvil/core/blas_kernels.h"
 #include "anvil/core/log.h"
 #include "anvil/io/RunResults.h"
 #include "anvil/run/Simulation.h"
@@ -43,6 +44,7 @@ Result run(int lower_cells, int upper_cells, const std::string& formulation, con
 } // namespace
 
 int main(int argc, char** argv) {
+  anvil::blas_kernels::pin(argv); // the kernels of anvil run (docs/parallel-runs.md)
   const std::string out = argc > 1 ? argv[1] : "out/bars_study";
   if (out == "--help" || out == "-h") {
     std::puts("usage: tools/bars_study [DIR]   (13 runs, a minute or two; writes DIR/bars_study.csv and two plots)");

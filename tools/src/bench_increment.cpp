@@ -26,6 +26,7 @@
 //                warm increment, as a run's later ones (the first also pays
 //                the kernel for each page of memory it touches first)
 #include "anvil/core/Timers.h"
+#include "anvil/core/blas_kernels.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
@@ -92,6 +93,7 @@ constexpr const char* kUsage =
 } // namespace
 
 int main(int argc, char** argv) {
+  anvil::blas_kernels::pin(argv); // the kernels of anvil run (docs/parallel-runs.md)
   if (argc < 4) {
     std::fputs(kUsage, stderr);
     return 2;

@@ -18,6 +18,7 @@
 //       first contact, the profile, the contact width, the deepest master node.
 // Prints Markdown tables and writes DIR/*.csv (default DIR: out/patch_test_table).
 #include "anvil/contact/facet_quadrature.h"
+#include "anvil/core/blas_kernels.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
@@ -237,6 +238,7 @@ void curved_table(const std::string& out) {
 } // namespace
 
 int main(int argc, char** argv) {
+  anvil::blas_kernels::pin(argv); // the kernels of anvil run (docs/parallel-runs.md)
   std::string mode = "cubes", out = "out/patch_test_table";
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];

@@ -2,6 +2,7 @@
 // (its first increments) into OUT_DIR and prints its signature (CSV) on
 // stdout. tools/update_signatures calls it for every case.
 #include "signature.h"
+#include "anvil/core/blas_kernels.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/run/Simulation.h"
@@ -12,6 +13,7 @@
 #include <filesystem>
 
 int main(int argc, char** argv) {
+  anvil::blas_kernels::pin(argv); // the kernels of anvil run (docs/parallel-runs.md)
   if (argc != 3) {
     std::fputs("usage: anvil_signature CASE.yaml OUT_DIR\n", stderr);
     return 2;

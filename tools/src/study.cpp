@@ -29,6 +29,7 @@
 //                    F∞ = F3 + (F3 − F2)/(r^p − 1). Where the three loads do
 //                    not converge monotonically there is no estimate: the
 //                    finest run is the reference, and the study says so.
+#include "anvil/core/blas_kernels.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/io/RunResults.h"
@@ -449,6 +450,7 @@ int study(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
+  anvil::blas_kernels::pin(argv); // the kernels of anvil run (docs/parallel-runs.md)
   try {
     int petsc_argc = 1; // the tool's own arguments are not PETSc's
     solver::PetscSession petsc(petsc_argc, argv);
