@@ -41,9 +41,10 @@ std::string kernels_of_run(const std::string& core, const std::string& name) {
 
 } // namespace
 
-TEST_CASE("anvil run started without OPENBLAS_CORETYPE computes with OpenBLAS's AVX2 kernels where the CPU has them; "
-          "a family the user sets is kept",
-          "[regression]") {
+TEST_CASE(
+    "anvil run started without OPENBLAS_CORETYPE computes with OpenBLAS's AVX2 kernels where the CPU has them, and "
+    "a family the user sets is kept",
+    "[regression]") {
   const std::string unset = kernels_of_run("", "anvil_kernels_unset");
   if (unset == "not OpenBLAS") {
     WARN("the BLAS behind libblas.so.3 is not OpenBLAS: nothing to pin");

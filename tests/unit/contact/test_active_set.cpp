@@ -20,8 +20,9 @@ std::vector<int> members(const ActiveSet& set) {
 
 } // namespace
 
-TEST_CASE("An active set that agrees with its gap velocities at convergence is kept; one beyond the tolerance changes",
-          "[unit][contact]") {
+TEST_CASE(
+    "An active set that agrees with its gap velocities at convergence is kept, and one beyond the tolerance changes",
+    "[unit][contact]") {
   ActiveSet set;
   set.resize(3);
   set.set_tolerance(0.1);

@@ -23,7 +23,7 @@ TEST_CASE("A program gets a hostile argument as one argument and no shell runs i
   std::filesystem::remove_all(folder);
 }
 
-TEST_CASE("A program's exit status comes back; one that cannot start gives -1", "[unit][core]") {
+TEST_CASE("A program's exit status comes back, and one that cannot start gives -1", "[unit][core]") {
   CHECK(anvil::subprocess::run({"true"}) == 0);
   CHECK(anvil::subprocess::run({"false"}) == 1);
   CHECK(anvil::subprocess::run({"anvil-no-such-program"}) == -1);

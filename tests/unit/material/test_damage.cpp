@@ -52,7 +52,7 @@ TEST_CASE("damage weights do not depend on the axes: pure shear turned by 45 deg
   CHECK(weight(DamageCriterion::ayada, shear) == Approx(0.0).margin(1e-12));
 }
 
-TEST_CASE("a hydrostatic stress weighs nothing; names round-trip", "[unit]") {
+TEST_CASE("a hydrostatic stress weighs nothing, and names round-trip", "[unit]") {
   for (const auto& [name, c] : material::damage_criterion_names()) {
     CHECK(weight(c, diagonal(-80.0, -80.0, -80.0)) == 0.0);
     CHECK(material::damage_criterion(name) == c);

@@ -61,7 +61,7 @@ bodies:
 
 } // namespace
 
-TEST_CASE("heat keys: a die in a thermal scene needs its temperature and h; an isothermal scene refuses them",
+TEST_CASE("heat keys: a die in a thermal scene needs its temperature and h, and an isothermal scene refuses them",
           "[unit]") {
   const std::string die = "dies:\n  - {name: top, plane: {point: [0, 0, 1], normal: [0, 0, -1]}, motion: constant, "
                           "velocity: [0, 0, -1]";

@@ -52,7 +52,8 @@ mesh::Triangle add_cap(mesh::TetMesh& box) {
 
 } // namespace
 
-TEST_CASE("A flat tet with three faces on the surface goes with its apex node; the box is as before", "[unit][mesh]") {
+TEST_CASE("A flat tet with three faces on the surface goes with its apex node, and the box is as before",
+          "[unit][mesh]") {
   mesh::TetMesh box = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
   const mesh::TetMesh before = box;
   add_cap(box);

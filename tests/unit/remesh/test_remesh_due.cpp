@@ -239,7 +239,7 @@ TEST_CASE("A body overlapping the dies by more than remeshing.die_overlap of its
 }
 
 TEST_CASE("Surface edges over a die fillet or edge sunk between the nodes are split, their midpoints put onto the "
-          "die; every other node and element keeps its place and fields",
+          "die, and every other node and element keeps its place and fields",
           "[unit][remesh]") {
   // closed_die_flash's upper die lowered into the (undeformed) billet until
   // the first boundary edges have their midpoint a tenth of an element inside

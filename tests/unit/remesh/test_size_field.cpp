@@ -74,7 +74,7 @@ TEST_CASE("The adaptive size field puts three elements across the gap between tw
               size[t[a]] + (remesh::kGradation - 1.0) * (body.nodes[t[a]] - body.nodes[t[b]]).norm() + 1e-12);
 }
 
-TEST_CASE("A size box asks for its size inside and grades by 1.5 around it; a die's box moves with the die",
+TEST_CASE("A size box asks for its size inside and grades by 1.5 around it, and a die's box moves with the die",
           "[unit][remesh]") {
   // cases/upsetting.yaml's quarter cylinder (radius 10, height 15 mm) with
   // the top die lowered by 5 mm: the gap (10 mm) asks for 3.3 mm, above the
