@@ -3,7 +3,8 @@
 // each family rounds otherwise: through a remesh that round-off becomes
 // another mesh (docs/parallel-runs.md, "Threads and round-off"). So a run
 // asks for the AVX2 kernels on every CPU that has AVX2 and FMA, whether it
-// was started by tools/anvil, by hand or by mpirun.
+// was started by tools/anvil, by hand or by mpirun (tools/lib/blas_env.sh
+// asks alike for the test programs, which have no start of their own).
 #pragma once
 #include <string>
 
