@@ -4,6 +4,12 @@
 // bookkeeping, made once per call).
 #include "box_assembly.h"
 
+// Not under AddressSanitizer (tools/sanitize): its own malloc must serve
+// every allocation, and a malloc defined here would come before it, and run
+// before its shadow memory exists (the test binary crashed on start, so
+// ctest found none of its tests). The plain build counts.
+#ifndef __SANITIZE_ADDRESS__
+
 #include <catch2/catch.hpp>
 
 #include <atomic>
@@ -61,3 +67,5 @@ TEST_CASE("The assembly's element loop allocates nothing", "[unit][fem]") {
   CHECK(large == small);
   CHECK(small < 64);
 }
+
+#endif // __SANITIZE_ADDRESS__
