@@ -5,9 +5,9 @@
 #include "box_assembly.h"
 
 // Not under AddressSanitizer (tools/sanitize): its own malloc must serve
-// every allocation, and a malloc defined here would come before it, and run
-// before its shadow memory exists (the test binary crashed on start, so
-// ctest found none of its tests). The plain build counts.
+// every allocation, and a malloc defined here would come before it and run
+// before its shadow memory exists, crashing the test program on start. The
+// plain build counts.
 #ifndef __SANITIZE_ADDRESS__
 
 #include <catch2/catch.hpp>
