@@ -6,34 +6,27 @@
 
 #include "anvil/core/subprocess.h"
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <optional>
 #include <regex>
+#include <string>
+#include <vector>
 
 namespace {
 
 /// The kernels named in the log of `anvil run cases/patch_test.yaml` with
-/// OPENBLAS_CORETYPE set to `core` (unset when empty).
+/// OPENBLAS_CORETYPE set to `core` (unset when empty), through env(1), so
+/// that this process's environment stays as it is.
 std::string kernels_of_run(const std::string& core, const std::string& name) {
   const std::string directory = (std::filesystem::temp_directory_path() / name).string();
   std::filesystem::remove_all(directory);
-  const std::optional<std::string> saved =
-      std::getenv("OPENBLAS_CORETYPE") ? std::optional<std::string>(std::getenv("OPENBLAS_CORETYPE")) : std::nullopt;
+  std::vector<std::string> command = {"env"};
   if (core.empty())
-    unsetenv("OPENBLAS_CORETYPE");
+    command.insert(command.end(), {"-u", "OPENBLAS_CORETYPE"});
   else
-    setenv("OPENBLAS_CORETYPE", core.c_str(), 1);
-  const int status =
-      anvil::subprocess::run({ANVIL_EXECUTABLE, "run", source_path("cases/patch_test.yaml"), "-o", directory});
-  if (saved)
-    setenv("OPENBLAS_CORETYPE", saved->c_str(), 1);
-  else
-    unsetenv("OPENBLAS_CORETYPE");
-  REQUIRE(status == 0);
-  std::ifstream log(directory + "/anvil.log");
-  const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    command.push_back("OPENBLAS_CORETYPE=" + core);
+  command.insert(command.end(), {ANVIL_EXECUTABLE, "run", source_path("cases/patch_test.yaml"), "-o", directory});
+  REQUIRE(anvil::subprocess::run(command) == 0);
+  const std::string text = file_text(directory + "/anvil.log");
   std::smatch kernels;
   REQUIRE(std::regex_search(text, kernels, std::regex("solver: .*, (OpenBLAS \\S+ kernels|not OpenBLAS)")));
   return kernels[1];
