@@ -21,7 +21,11 @@
 // with /body_wear_sizes (per body; all absent before die wear),
 // /remesh_rebuilt_share (per remesh; absent before it was kept),
 // /die_drawing (2: the dies' extent and sampling; absent before chains),
-// scalar attributes on the root group.
+// the linear solver's kept preconditioner in a checkpoint written at a stop
+// (solver::KeptSetUp: /kept_entries with /kept_entries_sizes, one list per
+// process, /kept_patterns, /kept_nodes (n×3), /kept_pressure_mass (n) and
+// /kept_solver (3: the set-up's rate, the iterations beyond it, MUMPS taken
+// over); absent when there is none), scalar attributes on the root group.
 #include "anvil/io/Checkpoint.h"
 
 #include "anvil/core/error.h"
@@ -203,6 +207,17 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
     }
     write_array(file, "outputs", H5T_NATIVE_DOUBLE, outputs.data(), s.outputs.size(), 2);
     write_array(file, "output_files", H5T_NATIVE_CHAR, files.data(), files.size(), 0);
+    if (const solver::KeptSetUp& k = s.kept_setup; !k.empty()) {
+      write_ragged(file, "kept_entries", k.entries);
+      write_array(file, "kept_patterns", H5T_NATIVE_DOUBLE, k.patterns.data(), k.patterns.size(), 0);
+      std::vector<double> at;
+      for (const mesh::Point& p : k.nodes)
+        at.insert(at.end(), p.data(), p.data() + 3);
+      write_array(file, "kept_nodes", H5T_NATIVE_DOUBLE, at.data(), k.nodes.size(), 3);
+      write_array(file, "kept_pressure_mass", H5T_NATIVE_DOUBLE, k.pressure_mass.data(), k.pressure_mass.size(), 0);
+      const double solver[3] = {k.setup_rate, k.extra_iterations, k.direct_fallback ? 1.0 : 0.0};
+      write_array(file, "kept_solver", H5T_NATIVE_DOUBLE, solver, 3, 0);
+    }
     std::string lines;
     for (const std::string& line : fingerprint)
       lines += line + '\n';
@@ -417,6 +432,22 @@ RunState read_state(hid_t file, const std::string& path) {
     read_finite_array(file, path, "damage", damage, s.mesh.tets.size());
     for (auto d = damage.begin(); d != damage.end(); d += static_cast<long>(s.mesh.tets.size()))
       s.damage.emplace_back(d, d + static_cast<long>(s.mesh.tets.size()));
+  }
+  if (H5Lexists(file, "kept_solver", H5P_DEFAULT) > 0) { // written at a stop with a kept preconditioner
+    solver::KeptSetUp& kept = s.kept_setup;
+    std::vector<double> solver, at;
+    read_finite_array(file, path, "kept_solver", solver, 1);
+    read_finite_array(file, path, "kept_patterns", kept.patterns, 1);
+    read_finite_array(file, path, "kept_nodes", at, 3);
+    read_finite_array(file, path, "kept_pressure_mass", kept.pressure_mass, 1);
+    kept.entries = read_ragged(file, path, "kept_entries");
+    const std::size_t kept_nodes = kept.entries.empty() ? 0 : s.mesh.nodes.size();
+    if (solver.size() != 3 || kept.patterns.size() != kept.entries.size() || at.size() != 3 * kept_nodes ||
+        kept.pressure_mass.size() != kept_nodes)
+      throw InputError(path + ": checkpoint datasets of the kept preconditioner do not match the mesh (damaged file)");
+    for (std::size_t i = 0; i < at.size(); i += 3)
+      kept.nodes.emplace_back(at[i], at[i + 1], at[i + 2]);
+    kept.setup_rate = solver[0], kept.extra_iterations = solver[1], kept.direct_fallback = solver[2] != 0.0;
   }
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
       (!s.temperature.empty() && s.temperature.size() != s.mesh.nodes.size()) ||

@@ -40,7 +40,11 @@ double seconds_since(Clock::time_point start) {
 
 void finish(const Scene& scene, const Discretisation& disc, RunState& state, io::RunWriter& writer,
             const solver::NewtonReport& last, Timers& timers, Clock::time_point start) {
+  // The checkpoint at a stop carries the preconditioner the next increment
+  // would keep, so that --resume goes on exactly (solver/KeptSetUp.h).
+  if (disc.solver) state.kept_setup = solver::gather_kept(disc.solver->kept_set_up());
   writer.write(scene, disc, state, true, timers);
+  state.kept_setup = {};
   const double total = seconds_since(start);
   processes::on_root([&] {
     if (scene.input.time.enabled) {
@@ -133,6 +137,8 @@ RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
   processes::on_root([&] { prepare_output_folder(out); });
   log::open_file(out + "/anvil.log", options.resume);
   Discretisation disc = discretise(scene, state, timers);
+  if (options.resume && disc.solver) disc.solver->resume_with(std::move(state.kept_setup));
+  state.kept_setup = {}; // a chain's next operation starts with a solver of its own
   log_header(scene, disc, state, options);
   const auto hand_over = [&] {
     if (part) *part = std::move(state);
@@ -216,6 +222,7 @@ RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
                      "); the last good increment (" + std::to_string(state.increment) +
                      ") is written and checkpointed in " + out);
     }
+    disc.solver->increment_ended();
     last = inc.report;
     last_step = inc.time_step;
     const double heat_before = timers.seconds("effect heat");
@@ -244,8 +251,8 @@ RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
         disc = discretise(scene, state, timers);
       }
     }
-    // A run resumed from a checkpoint starts with a new linear solver (no kept
-    // preconditioner): so does this one, and --resume stays exact.
+    // The periodic checkpoint carries no preconditioner: the run sets its own
+    // up anew after it, as a run resumed from it does, and --resume stays exact.
     if (writer.write(scene, disc, state, false, timers)) disc.solver->restart_linear_solver();
   }
   log::info("stop: %s at increment %d, t = %.6g s", stop.reason.c_str(), state.increment, state.time);

@@ -397,7 +397,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     }
     if (linear_solver_.iterative())
       note += "  (" + std::to_string(linear_solver_.iterations()) + " " + to_string(linear_solver_.kind()) +
-              " iterations, tolerance " + format_tolerance(forcing) + ")";
+              " iterations" + (linear_solver_.kept_preconditioner() ? "" : " on a new set-up") + ", tolerance " +
+              format_tolerance(forcing) + ")";
     if (settings.verbose)
       log::detail("    newton %2d  force residual %.3e  div residual %.3e  |dv|/|v| %.3e  step %.3g%s", it,
                   record.force_residual, record.flux_residual, record.increment, record.step, note.c_str());

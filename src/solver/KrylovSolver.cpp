@@ -279,11 +279,27 @@ void KrylovSolver::set_operator(const fem::SparseMatrix& a, const SaddlePointDat
   Impl& s = *impl_;
   const bool made = s.matrix.wrap(a) || !s.ksp; // a new matrix, or a restart: a new KSP
   if (made) s.create();
-  Mat m = s.matrix.mat();
   if (reuse && !made) {
     check(KSPSetReusePreconditioner(s.ksp, PETSC_TRUE), "reusing the preconditioner");
     return;
   }
+  set_up(data);
+}
+
+void KrylovSolver::set_up_from(const fem::SparseMatrix& a, std::span<const double> entries,
+                               const SaddlePointData& data) {
+  Impl& s = *impl_;
+  if (s.matrix.wrap(a) || !s.ksp) s.create();
+  // On one process the Mat reads a's own array: its entries are put back after.
+  const std::vector<double> own(a.valuePtr(), a.valuePtr() + a.nonZeros());
+  s.matrix.put(entries);
+  set_up(data);
+  s.matrix.put(own);
+}
+
+void KrylovSolver::set_up(const SaddlePointData& data) {
+  Impl& s = *impl_;
+  Mat m = s.matrix.mat();
   PC pc = nullptr;
   check(KSPGetPC(s.ksp, &pc), "building the preconditioner");
   if (s.schur == SchurApproximation::mass) {

@@ -2,6 +2,7 @@
 
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/core/processes.h"
 #include "anvil/solver/BlockPreconditioner.h"
 #include "anvil/solver/MumpsSolver.h"
 
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -103,6 +105,8 @@ void LinearSolver::restart() {
   setup_rate_ = 0.0;
   refresh_ = true;
   reused_ = false;
+  boundary_ = {};
+  boundary_source_ = {};
 }
 
 namespace {
@@ -135,6 +139,22 @@ double decades(const KrylovOutcome& k) {
 double rate(const KrylovOutcome& k) {
   return k.iterations / decades(k);
 }
+
+/// A 52-bit hash (FNV-1a, exact in a double) of `a`'s pattern.
+double pattern_hash(const fem::SparseMatrix& a) {
+  std::uint64_t h = 14695981039346656037ull;
+  auto add = [&h](std::uint64_t v) {
+    h ^= v;
+    h *= 1099511628211ull;
+  };
+  add(static_cast<std::uint64_t>(a.rows()));
+  add(static_cast<std::uint64_t>(a.nonZeros()));
+  for (Eigen::Index r = 0; r <= a.outerSize(); ++r)
+    add(static_cast<std::uint64_t>(a.outerIndexPtr()[r]));
+  for (Eigen::Index k = 0; k < a.nonZeros(); ++k)
+    add(static_cast<std::uint64_t>(a.innerIndexPtr()[k]));
+  return static_cast<double>(h >> 12);
+}
 } // namespace
 
 void LinearSolver::set_krylov_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse) {
@@ -143,6 +163,91 @@ void LinearSolver::set_krylov_operator(const fem::SparseMatrix& a, const SaddleP
   if (reuse) return;
   ++setups_;
   setup_rate_ = 0.0; // measured by the next solve
+  if (!settings_.reuse_preconditioner) return;
+  // The set-up kept at the boundary keeps its source until the next
+  // increment_ended (a swap: the copy below reuses the older storage).
+  if (boundary_.kept && !boundary_.replaced) {
+    std::swap(source_, boundary_source_);
+    boundary_.replaced = true;
+  }
+  source_.entries.assign(a.valuePtr(), a.valuePtr() + a.nonZeros());
+  source_.pattern = pattern_hash(a);
+  source_.nodes.assign(data.nodes.begin(), data.nodes.end());
+  source_.pressure_mass.assign(data.pressure_mass.data(), data.pressure_mass.data() + data.pressure_mass.size());
+}
+
+void LinearSolver::increment_ended() {
+  boundary_.kept = kind_ == LinearSolverKind::fgmres && settings_.reuse_preconditioner && analysed_ && !refresh_;
+  boundary_.direct = kind_ == LinearSolverKind::mumps && resolve(settings_.kind, unknowns_) == LinearSolverKind::fgmres;
+  boundary_.setup_rate = setup_rate_;
+  boundary_.extra_iterations = extra_iterations_;
+  if (boundary_.replaced) boundary_source_ = SetUpSource{}; // its memory back
+  boundary_.replaced = false;
+}
+
+void LinearSolver::resume_with(KeptSetUp kept) {
+  // Stopped again before an increment ends, the run checkpoints this record again.
+  const auto p = static_cast<std::size_t>(partition_.process);
+  boundary_ = {.kept = p < kept.entries.size() && p < kept.patterns.size(),
+               .replaced = true,
+               .direct = kept.direct_fallback,
+               .setup_rate = kept.setup_rate,
+               .extra_iterations = kept.extra_iterations};
+  if (boundary_.kept) boundary_source_ = {kept.entries[p], kept.patterns[p], kept.nodes, kept.pressure_mass};
+  resumed_ = std::move(kept);
+}
+
+KeptSetUp LinearSolver::kept_set_up() const {
+  KeptSetUp kept;
+  kept.direct_fallback = boundary_.direct;
+  if (!boundary_.kept) return kept;
+  const SetUpSource& source = boundary_.replaced ? boundary_source_ : source_;
+  kept.entries = {source.entries};
+  kept.patterns = {source.pattern};
+  kept.nodes = source.nodes;
+  kept.pressure_mass = source.pressure_mass;
+  kept.setup_rate = boundary_.setup_rate;
+  kept.extra_iterations = boundary_.extra_iterations;
+  return kept;
+}
+
+bool LinearSolver::set_up_as_resumed(const fem::SparseMatrix& a, const SaddlePointData& data) {
+  const KeptSetUp kept = std::move(*resumed_);
+  resumed_.reset();
+  if (kept.empty()) return false;
+  if (kept.direct_fallback) {
+    take_over_direct();
+    return false;
+  }
+  if (!settings_.reuse_preconditioner) return false;
+  const auto p = static_cast<std::size_t>(partition_.process);
+  const bool fits = kept.entries.size() == static_cast<std::size_t>(partition_.processes) &&
+                    kept.patterns.size() == kept.entries.size() && kept.patterns[p] == pattern_hash(a) &&
+                    kept.entries[p].size() == static_cast<std::size_t>(a.nonZeros()) &&
+                    kept.nodes.size() == data.nodes.size() &&
+                    kept.pressure_mass.size() == static_cast<std::size_t>(data.pressure_mass.size());
+  // Set up together or not at all: each process checks its own part.
+  if (processes::minimum(fits ? 1 : 0) == 0) {
+    log::info("    linear solver: the checkpoint's preconditioner was set up on another matrix pattern (other "
+              "processes or contact couplings); set up anew");
+    return false;
+  }
+  const Eigen::Map<const Eigen::VectorXd> mass(kept.pressure_mass.data(),
+                                               static_cast<Eigen::Index>(kept.pressure_mass.size()));
+  const Eigen::VectorXd pressure_mass = mass;
+  backend_->krylov->set_up_from(a, kept.entries[p], SaddlePointData{kept.nodes, pressure_mass});
+  ++setups_;
+  source_ = {kept.entries[p], kept.patterns[p], kept.nodes, kept.pressure_mass};
+  set_krylov_operator(a, data, true);
+  setup_rate_ = kept.setup_rate;
+  extra_iterations_ = kept.extra_iterations;
+  return true;
+}
+
+void LinearSolver::take_over_direct() {
+  backend_->krylov.reset();
+  backend_->mumps.emplace(partition_, timers_);
+  kind_ = LinearSolverKind::mumps;
 }
 
 bool LinearSolver::factorize(const fem::SparseMatrix& a, const SaddlePointData& data) {
@@ -152,7 +257,9 @@ bool LinearSolver::factorize(const fem::SparseMatrix& a, const SaddlePointData& 
   Backend& b = *backend_;
   switch (kind_) {
   case LinearSolverKind::fgmres: {
-    set_krylov_operator(a, data, settings_.reuse_preconditioner && analysed_ && !refresh_);
+    const bool resumed = resumed_ && set_up_as_resumed(a, data);
+    if (kind_ == LinearSolverKind::mumps) return factorize(a, data); // the run it resumes had taken MUMPS
+    if (!resumed) set_krylov_operator(a, data, settings_.reuse_preconditioner && analysed_ && !refresh_);
     refresh_ = false;
     if (!analysed_) ++analyses_;
     analysed_ = true;
@@ -228,9 +335,7 @@ bool LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double 
     log::info("    linear solver: FGMRES stopped after %d iterations (%s, residual reduced to %.2e of %.2e asked); "
               "MUMPS (direct) takes over for the rest of this mesh",
               k.iterations, k.reason.c_str(), k.reduction, relative_tolerance);
-    b.krylov.reset();
-    b.mumps.emplace(partition_, timers_);
-    kind_ = LinearSolverKind::mumps;
+    take_over_direct();
     ++setups_;
     if (!b.mumps->factorize(*matrix_)) return false;
     b.mumps->solve(rhs, x);

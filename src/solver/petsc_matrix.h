@@ -14,6 +14,8 @@
 
 #include <petscmat.h>
 
+#include <algorithm>
+#include <span>
 #include <vector>
 
 namespace anvil::solver::petsc {
@@ -62,6 +64,19 @@ public:
       check(MatAssemblyEnd(mat_, MAT_FINAL_ASSEMBLY), "updating the tangent matrix");
     }
     return moved;
+  }
+  /// Gives the wrapped Mat other `entries`, in the order of the last
+  /// wrapped matrix's (on one process the Mat reads that matrix's array:
+  /// they are written there).
+  void put(std::span<const double> entries) {
+    if (partition_.distributed()) {
+      check(MatSetValuesCOO(mat_, entries.data(), INSERT_VALUES), "sending the tangent's entries");
+      return;
+    }
+    PetscScalar* values = nullptr;
+    check(MatSeqAIJGetArray(mat_, &values), "writing the tangent's entries");
+    std::copy(entries.begin(), entries.end(), values);
+    check(MatSeqAIJRestoreArray(mat_, &values), "writing the tangent's entries");
   }
   Mat mat() const { return mat_; }
 

@@ -43,6 +43,8 @@ void on_root(const std::function<void()>& work);
 /// The same for work with a yes-or-no answer: rank 0's answer on every process.
 bool on_root_answer(const std::function<bool()>& work);
 
+/// Every process's `values`, in rank order, on rank 0 (empty on the others).
+std::vector<std::vector<double>> gather(std::span<const double> values);
 /// `bytes` from rank 0 to every process (resized on the others).
 void broadcast(std::string& bytes);
 /// `values` from rank 0 to every process (of the same size on each).

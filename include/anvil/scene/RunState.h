@@ -5,6 +5,7 @@
 #pragma once
 #include "anvil/fem/Assembler.h"
 #include "anvil/mesh/TetMesh.h"
+#include "anvil/solver/KeptSetUp.h"
 
 #include <Eigen/Core>
 #include <array>
@@ -178,6 +179,9 @@ struct RunState {
   /// has the same vertices and wears on. 0: not drawn yet.
   double die_extent = 0.0, die_sampling = 0.0;
   std::vector<OutputFrame> outputs; ///< the VTK series written so far (io::VtkSeries)
+  /// The linear solver's kept preconditioner, in a checkpoint written at a
+  /// stop (solver::KeptSetUp); empty while the run goes on.
+  solver::KeptSetUp kept_setup;
   /// mm³ per body of its mesh inside the dies (die::overlap_volume), measured
   /// whenever the mesh or the dies move; not stored: measured again on resume.
   std::vector<double> inside_dies;

@@ -97,7 +97,10 @@ public:
   const fem::DofMap& dofs() const { return assembler_.dofs(); }
   int free_count() const { return dofs().free_count(); }
   const LinearSolver& linear_solver() const { return linear_solver_; }
-  void restart_linear_solver() { linear_solver_.restart(); } ///< see LinearSolver::restart
+  void restart_linear_solver() { linear_solver_.restart(); }                        ///< see LinearSolver::restart
+  KeptSetUp kept_set_up() const { return linear_solver_.kept_set_up(); }            ///< see LinearSolver
+  void resume_with(KeptSetUp kept) { linear_solver_.resume_with(std::move(kept)); } ///< see LinearSolver
+  void increment_ended() { linear_solver_.increment_ended(); }                      ///< see LinearSolver
   /// The elements are integrated by the rule of this degree (fem::tet_quadrature: 5 or 6).
   void set_quadrature_degree(int degree) { assembler_.set_quadrature_degree(degree); }
 

@@ -58,6 +58,10 @@ public:
   /// the next call). With `reuse`, the preconditioner of an earlier call is
   /// kept (the same pattern is required); otherwise it is set up again.
   void set_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse);
+  /// Takes `a` as set_operator does, with its preconditioner set up from
+  /// other `entries` in a's pattern and order (a kept set-up a checkpoint
+  /// carried, KeptSetUp); the next set_operator with `reuse` keeps it.
+  void set_up_from(const fem::SparseMatrix& a, std::span<const double> entries, const SaddlePointData& data);
   /// Back to a new solver's state on the same matrix: the Krylov solver and
   /// its preconditioner are made anew at the next set_operator; the matrix
   /// and its pattern are kept.
@@ -71,6 +75,9 @@ public:
   int setups() const { return setups_; }
 
 private:
+  /// Sets the preconditioner up from the matrix in place.
+  void set_up(const SaddlePointData& data);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   int setups_ = 0;

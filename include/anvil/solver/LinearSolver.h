@@ -7,6 +7,7 @@
 #pragma once
 #include "anvil/core/Timers.h"
 #include "anvil/fem/Assembler.h"
+#include "anvil/solver/KeptSetUp.h"
 #include "anvil/solver/KrylovSolver.h"
 
 #include <memory>
@@ -86,16 +87,32 @@ public:
   /// up again.
   void operator_changed() { refresh_ = true; }
   /// Back to the state of a new solver: no kept preconditioner, no MUMPS
-  /// fallback. A run resumed from a checkpoint starts with a new solver; the
-  /// uninterrupted run restarts its own at each checkpoint, so both solve the
-  /// next increment alike (a kept preconditioner changes an inexact solve).
+  /// fallback. The run restarts its solver after each periodic checkpoint, as
+  /// a run resumed from it starts with a new one, so both solve the next
+  /// increment alike (a kept preconditioner changes an inexact solve); a
+  /// checkpoint written at a stop carries the kept one instead (KeptSetUp).
   /// The Krylov solver keeps its matrix: the pattern holds no numbers.
   void restart();
+  /// The preconditioner the first factorize() after the last accepted
+  /// increment kept or would keep, as this process holds it, for a
+  /// checkpoint written at a stop (KeptSetUp; gather_kept collects the
+  /// processes'); empty when it sets up anew anyway.
+  KeptSetUp kept_set_up() const;
+  /// The run resumes from a checkpoint that carried `kept` (gathered): the
+  /// first factorize() sets the preconditioner up from its entries and keeps
+  /// it, as the uninterrupted run kept its own, unless this process's
+  /// pattern is not the one they were taken on (logged: set up anew).
+  void resume_with(KeptSetUp kept);
+  /// An increment was accepted: kept_set_up() describes the solver as it
+  /// is now until the next call, whatever the next increment does to it.
+  void increment_ended();
 
   /// The solver in use (mumps after a fallback).
   LinearSolverKind kind() const { return kind_; }
   bool iterative() const { return kind_ == LinearSolverKind::fgmres || kind_ == LinearSolverKind::minres; }
   int analyses() const { return analyses_; }
+  /// The last solve ran on a preconditioner set up before its factorize().
+  bool kept_preconditioner() const { return reused_; }
   /// Iterations of the last solve (0 for direct solvers).
   int iterations() const { return iterations_; }
   /// Preconditioner set-ups (fgmres) or factorisations (direct) so far.
@@ -104,6 +121,11 @@ public:
 private:
   /// Hands `a` to the Krylov solver, its preconditioner kept (`reuse`) or set up anew.
   void set_krylov_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse);
+  /// factorize() of the first tangent after a resume (resumed_): false when
+  /// the kept set-up does not fit `a` and a new one is due.
+  bool set_up_as_resumed(const fem::SparseMatrix& a, const SaddlePointData& data);
+  /// FGMRES stagnated: MUMPS solves for the rest of this mesh.
+  void take_over_direct();
 
   struct Backend;
   LinearSolverSettings settings_;
@@ -122,6 +144,26 @@ private:
   double extra_iterations_ = 0.0; ///< beyond setup_rate_'s, over the solves on the kept set-up
   bool refresh_ = true;           ///< the next factorize() sets the preconditioner up again
   bool reused_ = false;           ///< the last factorize() kept an earlier preconditioner
+  /// What a set-up was made from (kept_set_up).
+  struct SetUpSource {
+    std::vector<double> entries; ///< the tangent's, in its order
+    double pattern = 0.0;        ///< pattern_hash of the tangent
+    std::vector<mesh::Point> nodes;
+    std::vector<double> pressure_mass;
+  };
+  /// The solver as the last accepted increment left it (increment_ended):
+  /// a Ctrl-C abandons an increment part-way, and the checkpoint is of the
+  /// state before it.
+  struct Boundary {
+    bool kept = false;     ///< the next factorize() would keep the set-up in use
+    bool replaced = false; ///< a set-up since: boundary_source_ holds the kept one's source
+    bool direct = false;   ///< MUMPS had taken over
+    double setup_rate = 0.0, extra_iterations = 0.0;
+  };
+  SetUpSource source_;          ///< of the set-up in use
+  SetUpSource boundary_source_; ///< of the set-up kept at the boundary, once another replaced it
+  Boundary boundary_;
+  std::optional<KeptSetUp> resumed_; ///< from the checkpoint, until the first factorize()
 };
 
 } // namespace anvil::solver
