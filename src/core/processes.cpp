@@ -95,23 +95,22 @@ std::vector<std::vector<double>> gather(std::span<const double> values) {
   if (root()) all.emplace_back(values.begin(), values.end());
   if (count() == 1) return all;
   constexpr std::size_t kPiece = std::size_t{1} << 28; // MPI counts are int: large vectors go in pieces
-  auto pieces = [&](double* data, std::size_t size, auto move) {
-    for (std::size_t first = 0; first < size; first += kPiece)
-      move(data + first, static_cast<int>(std::min(kPiece, size - first)));
+  auto piece = [](std::size_t size, std::size_t first) {
+    return static_cast<int>(size - first < kPiece ? size - first : kPiece);
   };
   if (!root()) {
     std::uint64_t size = values.size();
     MPI_Send(&size, 1, MPI_UINT64_T, 0, 0, MPI_COMM_WORLD);
-    pieces(const_cast<double*>(values.data()), values.size(),
-           [](double* at, int n) { MPI_Send(at, n, MPI_DOUBLE, 0, 0, MPI_COMM_WORLD); });
+    for (std::size_t first = 0; first < values.size(); first += kPiece)
+      MPI_Send(values.data() + first, piece(values.size(), first), MPI_DOUBLE, 0, 0, MPI_COMM_WORLD);
     return all;
   }
   for (int from = 1; from < count(); ++from) {
     std::uint64_t size = 0;
     MPI_Recv(&size, 1, MPI_UINT64_T, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     std::vector<double>& got = all.emplace_back(size);
-    pieces(got.data(), got.size(),
-           [from](double* at, int n) { MPI_Recv(at, n, MPI_DOUBLE, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE); });
+    for (std::size_t first = 0; first < got.size(); first += kPiece)
+      MPI_Recv(got.data() + first, piece(got.size(), first), MPI_DOUBLE, from, 0, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
   }
   return all;
 }

@@ -188,7 +188,8 @@ void LinearSolver::increment_ended() {
 void LinearSolver::resume_with(KeptSetUp kept) {
   // Stopped again before an increment ends, the run checkpoints this record again.
   const auto p = static_cast<std::size_t>(partition_.process);
-  boundary_ = {.kept = p < kept.entries.size() && p < kept.patterns.size(),
+  boundary_ = {.kept = kept.entries.size() == static_cast<std::size_t>(partition_.processes) &&
+                       kept.patterns.size() == kept.entries.size(),
                .replaced = true,
                .direct = kept.direct_fallback,
                .setup_rate = kept.setup_rate,
