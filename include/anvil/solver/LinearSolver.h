@@ -96,12 +96,14 @@ public:
   /// The preconditioner the first factorize() after the last accepted
   /// increment kept or would keep, as this process holds it, for a
   /// checkpoint written at a stop (KeptSetUp; gather_kept collects the
-  /// processes'); empty when it sets up anew anyway.
+  /// processes'); empty when it sets up anew anyway, or saying that MUMPS
+  /// had taken over.
   KeptSetUp kept_set_up() const;
   /// The run resumes from a checkpoint that carried `kept` (gathered): the
   /// first factorize() sets the preconditioner up from its entries and keeps
-  /// it, as the uninterrupted run kept its own, unless this process's
-  /// pattern is not the one they were taken on (logged: set up anew).
+  /// it, as the uninterrupted run kept its own, unless a process's pattern
+  /// is not the one they were taken on (every process then sets up anew,
+  /// logged). A record of MUMPS's takeover makes MUMPS solve from the start.
   void resume_with(KeptSetUp kept);
   /// An increment was accepted: kept_set_up() describes the solver as it
   /// is now until the next call, whatever the next increment does to it.
