@@ -93,6 +93,22 @@ struct ImageCapture {
 /// memory (the core driver without a backing store): the disk is written by
 /// write_file_atomically alone, so a full disk is one clear error and HDF5
 /// is never left with a file it failed to close (it crashes at exit then).
+/// Points as a flat (x, y, z, x, …) array, and back.
+std::vector<double> flattened(const std::vector<mesh::Point>& points) {
+  std::vector<double> xyz;
+  xyz.reserve(3 * points.size());
+  for (const mesh::Point& p : points)
+    xyz.insert(xyz.end(), p.data(), p.data() + 3);
+  return xyz;
+}
+std::vector<mesh::Point> points(const std::vector<double>& xyz) {
+  std::vector<mesh::Point> out;
+  out.reserve(xyz.size() / 3);
+  for (std::size_t i = 0; i + 2 < xyz.size(); i += 3)
+    out.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+  return out;
+}
+
 std::string checkpoint_image(const RunState& s, const std::vector<std::string>& fingerprint) {
   ImageCapture capture;
   {
@@ -140,9 +156,7 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
     write_array(file, "remesh_die_overlap", H5T_NATIVE_DOUBLE, die_overlaps.data(), die_overlaps.size(), 0);
     write_array(file, "remesh_rebuilt_share", H5T_NATIVE_DOUBLE, rebuilt_shares.data(), rebuilt_shares.size(), 0);
 
-    std::vector<double> nodes;
-    for (const mesh::Point& p : s.mesh.nodes)
-      nodes.insert(nodes.end(), p.data(), p.data() + 3);
+    const std::vector<double> nodes = flattened(s.mesh.nodes);
     write_array(file, "nodes", H5T_NATIVE_DOUBLE, nodes.data(), s.mesh.nodes.size(), 3);
     std::vector<long long> tets, faces;
     for (const mesh::Tet& t : s.mesh.tets)
@@ -210,9 +224,7 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
     if (const solver::KeptSetUp& k = s.kept_setup; !k.empty()) {
       write_ragged(file, "kept_entries", k.entries);
       write_array(file, "kept_patterns", H5T_NATIVE_DOUBLE, k.patterns.data(), k.patterns.size(), 0);
-      std::vector<double> at;
-      for (const mesh::Point& p : k.nodes)
-        at.insert(at.end(), p.data(), p.data() + 3);
+      const std::vector<double> at = flattened(k.nodes);
       write_array(file, "kept_nodes", H5T_NATIVE_DOUBLE, at.data(), k.nodes.size(), 3);
       write_array(file, "kept_pressure_mass", H5T_NATIVE_DOUBLE, k.pressure_mass.data(), k.pressure_mass.size(), 0);
       const double solver[3] = {k.setup_rate, k.extra_iterations, k.direct_fallback ? 1.0 : 0.0};
@@ -294,8 +306,7 @@ RunState read_state(hid_t file, const std::string& path) {
   per_remesh_value("remesh_die_overlap", "a volume", &RemeshRecord::die_overlap_after);
   per_remesh_value("remesh_rebuilt_share", "a share", &RemeshRecord::rebuilt_share);
   read_finite_array(file, path, "nodes", nodes, 3);
-  for (std::size_t i = 0; i < nodes.size(); i += 3)
-    s.mesh.nodes.emplace_back(nodes[i], nodes[i + 1], nodes[i + 2]);
+  s.mesh.nodes = points(nodes);
   const long long node_count = s.mesh.node_count();
   const auto node_indices = [&](const char* name, const std::vector<long long>& indices, std::size_t per_record) {
     for (std::size_t i = 0; i < indices.size(); ++i)
@@ -445,8 +456,7 @@ RunState read_state(hid_t file, const std::string& path) {
     if (solver.size() != 3 || kept.patterns.size() != kept.entries.size() || at.size() != 3 * kept_nodes ||
         kept.pressure_mass.size() != kept_nodes)
       throw InputError(path + ": checkpoint datasets of the kept preconditioner do not match the mesh (damaged file)");
-    for (std::size_t i = 0; i < at.size(); i += 3)
-      kept.nodes.emplace_back(at[i], at[i + 1], at[i + 2]);
+    kept.nodes = points(at);
     kept.setup_rate = solver[0], kept.extra_iterations = solver[1], kept.direct_fallback = solver[2] != 0.0;
   }
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||

@@ -186,16 +186,20 @@ void LinearSolver::increment_ended() {
 }
 
 void LinearSolver::resume_with(KeptSetUp kept) {
-  // Stopped again before an increment ends, the run checkpoints this record again.
+  // This process's part becomes the boundary's, as if the run had just
+  // accepted the checkpoint's increment: stopped again before an increment
+  // ends, the run checkpoints it again.
+  resuming_ = settings_.reuse_preconditioner && !kept.entries.empty();
   const auto p = static_cast<std::size_t>(partition_.process);
-  boundary_ = {.kept = kept.entries.size() == static_cast<std::size_t>(partition_.processes) &&
+  boundary_ = {.kept = resuming_ && kept.entries.size() == static_cast<std::size_t>(partition_.processes) &&
                        kept.patterns.size() == kept.entries.size(),
-               .replaced = true,
+               .replaced = false,
                .direct = kept.direct_fallback,
                .setup_rate = kept.setup_rate,
                .extra_iterations = kept.extra_iterations};
-  if (boundary_.kept) boundary_source_ = {kept.entries[p], kept.patterns[p], kept.nodes, kept.pressure_mass};
-  resumed_ = std::move(kept);
+  if (boundary_.kept)
+    source_ = {std::move(kept.entries[p]), kept.patterns[p], std::move(kept.nodes), std::move(kept.pressure_mass)};
+  if (boundary_.direct) take_over_direct(); // the run it resumes had MUMPS solve
 }
 
 KeptSetUp LinearSolver::kept_set_up() const {
@@ -213,35 +217,25 @@ KeptSetUp LinearSolver::kept_set_up() const {
 }
 
 bool LinearSolver::set_up_as_resumed(const fem::SparseMatrix& a, const SaddlePointData& data) {
-  const KeptSetUp kept = std::move(*resumed_);
-  resumed_.reset();
-  if (kept.empty()) return false;
-  if (kept.direct_fallback) {
-    take_over_direct();
-    return false;
-  }
-  if (!settings_.reuse_preconditioner) return false;
-  const auto p = static_cast<std::size_t>(partition_.process);
-  const bool fits = kept.entries.size() == static_cast<std::size_t>(partition_.processes) &&
-                    kept.patterns.size() == kept.entries.size() && kept.patterns[p] == pattern_hash(a) &&
-                    kept.entries[p].size() == static_cast<std::size_t>(a.nonZeros()) &&
-                    kept.nodes.size() == data.nodes.size() &&
-                    kept.pressure_mass.size() == static_cast<std::size_t>(data.pressure_mass.size());
+  resuming_ = false;
+  const bool fits = boundary_.kept && source_.pattern == pattern_hash(a) &&
+                    source_.entries.size() == static_cast<std::size_t>(a.nonZeros()) &&
+                    source_.nodes.size() == data.nodes.size() &&
+                    source_.pressure_mass.size() == static_cast<std::size_t>(data.pressure_mass.size());
   // Set up together or not at all: each process checks its own part.
   if (processes::minimum(fits ? 1 : 0) == 0) {
     log::info("    linear solver: the checkpoint's preconditioner was set up on another matrix pattern (other "
               "processes or contact couplings); set up anew");
     return false;
   }
-  const Eigen::Map<const Eigen::VectorXd> mass(kept.pressure_mass.data(),
-                                               static_cast<Eigen::Index>(kept.pressure_mass.size()));
+  const Eigen::Map<const Eigen::VectorXd> mass(source_.pressure_mass.data(),
+                                               static_cast<Eigen::Index>(source_.pressure_mass.size()));
   const Eigen::VectorXd pressure_mass = mass;
-  backend_->krylov->set_up_from(a, kept.entries[p], SaddlePointData{kept.nodes, pressure_mass});
+  backend_->krylov->set_up_from(a, source_.entries, SaddlePointData{source_.nodes, pressure_mass});
   ++setups_;
-  source_ = {kept.entries[p], kept.patterns[p], kept.nodes, kept.pressure_mass};
   set_krylov_operator(a, data, true);
-  setup_rate_ = kept.setup_rate;
-  extra_iterations_ = kept.extra_iterations;
+  setup_rate_ = boundary_.setup_rate;
+  extra_iterations_ = boundary_.extra_iterations;
   return true;
 }
 
@@ -258,9 +252,8 @@ bool LinearSolver::factorize(const fem::SparseMatrix& a, const SaddlePointData& 
   Backend& b = *backend_;
   switch (kind_) {
   case LinearSolverKind::fgmres: {
-    const bool resumed = resumed_ && set_up_as_resumed(a, data);
-    if (kind_ == LinearSolverKind::mumps) return factorize(a, data); // the run it resumes had taken MUMPS
-    if (!resumed) set_krylov_operator(a, data, settings_.reuse_preconditioner && analysed_ && !refresh_);
+    if (!(resuming_ && set_up_as_resumed(a, data)))
+      set_krylov_operator(a, data, settings_.reuse_preconditioner && analysed_ && !refresh_);
     refresh_ = false;
     if (!analysed_) ++analyses_;
     analysed_ = true;

@@ -123,7 +123,7 @@ public:
 private:
   /// Hands `a` to the Krylov solver, its preconditioner kept (`reuse`) or set up anew.
   void set_krylov_operator(const fem::SparseMatrix& a, const SaddlePointData& data, bool reuse);
-  /// factorize() of the first tangent after a resume (resumed_): false when
+  /// factorize() of the first tangent after a resume (resuming_): false when
   /// the kept set-up does not fit `a` and a new one is due.
   bool set_up_as_resumed(const fem::SparseMatrix& a, const SaddlePointData& data);
   /// FGMRES stagnated: MUMPS solves for the rest of this mesh.
@@ -165,7 +165,7 @@ private:
   SetUpSource source_;          ///< of the set-up in use
   SetUpSource boundary_source_; ///< of the set-up kept at the boundary, once another replaced it
   Boundary boundary_;
-  std::optional<KeptSetUp> resumed_; ///< from the checkpoint, until the first factorize()
+  bool resuming_ = false; ///< a checkpoint's set-up came with the resume: the first factorize() tries it
 };
 
 } // namespace anvil::solver
