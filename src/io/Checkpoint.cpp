@@ -25,7 +25,10 @@
 // (solver::KeptSetUp: /kept_entries with /kept_entries_sizes, one list per
 // process, /kept_patterns, /kept_nodes (n×3), /kept_pressure_mass (n) and
 // /kept_solver (3: the set-up's rate, the iterations beyond it, MUMPS taken
-// over); absent when there is none), scalar attributes on the root group.
+// over); absent when there is none), the remesh check the stop put off in a
+// checkpoint written at a remeshing run's stop criterion (scene::RemeshCheck:
+// /remesh_check_rate (m) and /remesh_check_step (1); absent otherwise), scalar
+// attributes on the root group.
 #include "anvil/io/Checkpoint.h"
 
 #include "anvil/core/error.h"
@@ -229,6 +232,10 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
       write_array(file, "kept_pressure_mass", H5T_NATIVE_DOUBLE, k.pressure_mass.data(), k.pressure_mass.size(), 0);
       const double solver[3] = {k.setup_rate, k.extra_iterations, k.direct_fallback ? 1.0 : 0.0};
       write_array(file, "kept_solver", H5T_NATIVE_DOUBLE, solver, 3, 0);
+    }
+    if (const scene::RemeshCheck& r = s.remesh_check_at_stop; !r.empty()) {
+      write_array(file, "remesh_check_rate", H5T_NATIVE_DOUBLE, r.rate.data(), r.rate.size(), 0);
+      write_array(file, "remesh_check_step", H5T_NATIVE_DOUBLE, &r.time_step, 1, 0);
     }
     std::string lines;
     for (const std::string& line : fingerprint)
@@ -458,6 +465,16 @@ RunState read_state(hid_t file, const std::string& path) {
       throw InputError(path + ": checkpoint datasets of the kept preconditioner do not match the mesh (damaged file)");
     kept.nodes = points(at);
     kept.setup_rate = solver[0], kept.extra_iterations = solver[1], kept.direct_fallback = solver[2] != 0.0;
+  }
+  if (H5Lexists(file, "remesh_check_step", H5P_DEFAULT) > 0) { // written at a remeshing run's stop
+    scene::RemeshCheck& check = s.remesh_check_at_stop;
+    std::vector<double> step;
+    read_finite_array(file, path, "remesh_check_step", step, 1);
+    read_finite_array(file, path, "remesh_check_rate", check.rate, 1);
+    if (step.size() != 1 || !(step[0] > 0.0) || check.rate.size() != s.mesh.tets.size())
+      throw InputError(path +
+                       ": checkpoint datasets of the remesh check at the stop do not match the mesh (damaged file)");
+    check.time_step = step[0];
   }
   if (3 * s.mesh.tet_count() != s.unknowns.bubble.size() || 4 * s.mesh.node_count() != s.unknowns.nodal.size() ||
       (!s.temperature.empty() && s.temperature.size() != s.mesh.nodes.size()) ||

@@ -26,6 +26,8 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <span>
+#include <utility>
 
 namespace anvil::run {
 
@@ -45,6 +47,7 @@ void finish(const Scene& scene, const Discretisation& disc, RunState& state, io:
   if (disc.solver) state.kept_setup = solver::gather_kept(disc.solver->kept_set_up());
   writer.write(scene, disc, state, true, timers);
   state.kept_setup = {};
+  state.remesh_check_at_stop = {};
   const double total = seconds_since(start);
   processes::on_root([&] {
     if (scene.input.time.enabled) {
@@ -206,6 +209,19 @@ RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
     hand_over();
     return {stop.reason, true};
   }
+  // After every increment but the one that meets the stop criterion, whose
+  // check a checkpoint at the stop carries for a run resumed past it.
+  const auto remesh_if_due = [&](double time_step, std::span<const double> rate) {
+    const std::vector<remesh::RemeshDue> due = remesh::remesh_due(scene, state, time_step);
+    if (due.empty()) return;
+    remesh_checking_load(scene, state, due, disc.touching_die(state.unknowns.nodal), rate, clock.next_step(state),
+                         timers);
+    disc = discretise(scene, state, timers);
+  };
+  if (!state.remesh_check_at_stop.empty() && !clock.stop(state)) {
+    const RemeshCheck check = std::exchange(state.remesh_check_at_stop, {});
+    if (c.remeshing.enabled) remesh_if_due(check.time_step, check.rate);
+  }
   double last_step = clock.next_step(state).length; // s, of the last increment accepted
   while (!(stop = clock.stop(state))) {
     if (const int signal = interrupt::requested()) return interrupted(signal);
@@ -243,13 +259,11 @@ RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
     log_progress(scene, disc, state, inc, time_left.update(clock.progress(state), seconds_since(start)),
                  (timers.seconds("effect heat") - heat_before) / seconds_since(increment_start));
     if (c.detect_folds) watch_folds(scene, disc, state, timers);
-    if (c.remeshing.enabled && !clock.stop(state)) {
-      const std::vector<remesh::RemeshDue> due = remesh::remesh_due(scene, state, inc.time_step);
-      if (!due.empty()) {
-        remesh_checking_load(scene, state, due, disc.touching_die(state.unknowns.nodal), inc.fields.rate,
-                             clock.next_step(state), timers);
-        disc = discretise(scene, state, timers);
-      }
+    if (c.remeshing.enabled) {
+      if (clock.stop(state))
+        state.remesh_check_at_stop = {inc.time_step, inc.fields.rate};
+      else
+        remesh_if_due(inc.time_step, inc.fields.rate);
     }
     // The periodic checkpoint carries no preconditioner: the run sets its own
     // up anew after it, as a run resumed from it does, and --resume stays exact.

@@ -226,3 +226,30 @@ TEST_CASE("a run with die wear resumed from a checkpoint carries the wear of eac
     CHECK(a.wear[d] == b.wear[d]); // the same operations on the same numbers
   }
 }
+
+TEST_CASE("a run stopped where a remesh was due and resumed further remeshes as the uninterrupted run",
+          "[regression]") {
+  // cases/upsetting_75.yaml on a coarse mesh, whole and stopped by
+  // time.max_increments at the increment after which the whole run made its
+  // last remesh (a whole one, the first of two); the stop puts that remesh
+  // off and its checkpoint carries the check, which the resumed run makes
+  // first.
+  const auto [a, b] = whole_and_resumed(
+      source_path("cases/upsetting_75.yaml"),
+      {"bodies[0].mesh.element_size=2", "remeshing.element_size=2", "remeshing.check_load=false",
+       "time.stop.stroke=8.4", "output.vtk=false"},
+      [](const anvil::scene::RunState& whole) { return whole.remeshes.at(1).increment; }, "anvil_remesh_resume");
+  REQUIRE(a.increment == b.increment);
+  REQUIRE(a.remeshes.size() == b.remeshes.size());
+  for (std::size_t r = 0; r < a.remeshes.size(); ++r) {
+    INFO("remesh " << r + 1);
+    CHECK(a.remeshes[r].increment == b.remeshes[r].increment);
+    CHECK(a.remeshes[r].nodes_after == b.remeshes[r].nodes_after);
+  }
+  REQUIRE(a.loads.size() == b.loads.size());
+  for (std::size_t i = 0; i < a.loads.size(); ++i) {
+    INFO("load record " << i);
+    CHECK(a.loads[i].force == b.loads[i].force); // the same operations on the same numbers
+  }
+  CHECK(a.equivalent_strain == b.equivalent_strain);
+}

@@ -138,6 +138,18 @@ struct HeatBudget {
   double imbalance() const { return stored - (plastic + friction - to_dies - to_environment); }
 };
 
+/// The remesh check after the increment that met the stop criterion, which
+/// the loop does not make (its remesh would be wasted): that increment's Δt
+/// (s) and strain rate per element (1/s), as remesh::remesh_due and the
+/// transfer take them. A checkpoint written at the stop carries it, and a run
+/// resumed past that stop makes the check first, as the uninterrupted run
+/// made it after that increment.
+struct RemeshCheck {
+  double time_step = 0.0;
+  std::vector<double> rate;
+  bool empty() const { return rate.empty(); }
+};
+
 struct RunState {
   int increment = 0;
   double time = 0.0; ///< s
@@ -182,6 +194,9 @@ struct RunState {
   /// The linear solver's kept preconditioner, in a checkpoint written at a
   /// stop (solver::KeptSetUp); empty while the run goes on.
   solver::KeptSetUp kept_setup;
+  /// In a checkpoint written at the stop criterion of a remeshing run; empty
+  /// while the run goes on.
+  RemeshCheck remesh_check_at_stop;
   /// mm³ per body of its mesh inside the dies (die::overlap_volume), measured
   /// whenever the mesh or the dies move; not stored: measured again on resume.
   std::vector<double> inside_dies;
