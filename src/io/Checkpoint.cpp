@@ -92,10 +92,6 @@ struct ImageCapture {
   static herr_t keep(void*) { return 0; }
 };
 
-/// The checkpoint of `s` as the bytes of an HDF5 file. HDF5 builds it in
-/// memory (the core driver without a backing store): the disk is written by
-/// write_file_atomically alone, so a full disk is one clear error and HDF5
-/// is never left with a file it failed to close (it crashes at exit then).
 /// Points as a flat (x, y, z, x, …) array, and back.
 std::vector<double> flattened(const std::vector<mesh::Point>& points) {
   std::vector<double> xyz;
@@ -112,6 +108,10 @@ std::vector<mesh::Point> points(const std::vector<double>& xyz) {
   return out;
 }
 
+/// The checkpoint of `s` as the bytes of an HDF5 file. HDF5 builds it in
+/// memory (the core driver without a backing store): the disk is written by
+/// write_file_atomically alone, so a full disk is one clear error and HDF5
+/// is never left with a file it failed to close (it crashes at exit then).
 std::string checkpoint_image(const RunState& s, const std::vector<std::string>& fingerprint) {
   ImageCapture capture;
   {

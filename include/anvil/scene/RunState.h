@@ -141,7 +141,7 @@ struct HeatBudget {
 /// The remesh check after the increment that met the stop criterion, which
 /// the loop does not make (its remesh would be wasted): that increment's Δt
 /// (s) and strain rate per element (1/s), as remesh::remesh_due and the
-/// transfer take them. A checkpoint written at the stop carries it, and a run
+/// remesh take them. A checkpoint written at the stop carries it, and a run
 /// resumed past that stop makes the check first, as the uninterrupted run
 /// made it after that increment.
 struct RemeshCheck {
