@@ -27,7 +27,8 @@
 // /kept_solver (3: the set-up's rate, the iterations beyond it, MUMPS taken
 // over); absent when there is none), the remesh check the stop put off in a
 // checkpoint written at a remeshing run's stop criterion (scene::RemeshCheck:
-// /remesh_check_rate (m) and /remesh_check_step (1); absent otherwise), scalar
+// /remesh_check_rate (m), /remesh_check_step (1) and /remesh_check_touching
+// (n, int); absent otherwise), scalar
 // attributes on the root group.
 #include "anvil/io/Checkpoint.h"
 
@@ -236,6 +237,7 @@ std::string checkpoint_image(const RunState& s, const std::vector<std::string>& 
     if (const scene::RemeshCheck& r = s.remesh_check_at_stop; !r.empty()) {
       write_array(file, "remesh_check_rate", H5T_NATIVE_DOUBLE, r.rate.data(), r.rate.size(), 0);
       write_array(file, "remesh_check_step", H5T_NATIVE_DOUBLE, &r.time_step, 1, 0);
+      write_array(file, "remesh_check_touching", H5T_NATIVE_INT, r.touching_die.data(), r.touching_die.size(), 0);
     }
     std::string lines;
     for (const std::string& line : fingerprint)
@@ -471,7 +473,11 @@ RunState read_state(hid_t file, const std::string& path) {
     std::vector<double> step;
     read_finite_array(file, path, "remesh_check_step", step, 1);
     read_finite_array(file, path, "remesh_check_rate", check.rate, 1);
-    if (step.size() != 1 || !(step[0] > 0.0) || check.rate.size() != s.mesh.tets.size())
+    read_array(file, path, "remesh_check_touching", H5T_NATIVE_INT, check.touching_die, 1);
+    const bool dies_known = std::all_of(check.touching_die.begin(), check.touching_die.end(),
+                                        [&](int die) { return die >= -1 && die < static_cast<int>(s.dies.size()); });
+    if (step.size() != 1 || !(step[0] > 0.0) || check.rate.size() != s.mesh.tets.size() ||
+        check.touching_die.size() != s.mesh.nodes.size() || !dies_known)
       throw InputError(path +
                        ": checkpoint datasets of the remesh check at the stop do not match the mesh (damaged file)");
     check.time_step = step[0];

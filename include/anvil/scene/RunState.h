@@ -140,13 +140,15 @@ struct HeatBudget {
 
 /// The remesh check after the increment that met the stop criterion, which
 /// the loop does not make (its remesh would be wasted): that increment's Δt
-/// (s) and strain rate per element (1/s), as remesh::remesh_due and the
-/// remesh take them. A checkpoint written at the stop carries it, and a run
-/// resumed past that stop makes the check first, as the uninterrupted run
-/// made it after that increment.
+/// (s), strain rate per element (1/s) and the die each node pressed on (−1:
+/// none), as remesh::remesh_due and the remesh take them; a resumed run has
+/// no contact solution of its own to find the last. A checkpoint written at
+/// the stop carries it, and a run resumed past that stop makes the check
+/// first, as the uninterrupted run made it after that increment.
 struct RemeshCheck {
   double time_step = 0.0;
   std::vector<double> rate;
+  std::vector<int> touching_die;
   bool empty() const { return rate.empty(); }
 };
 
