@@ -311,8 +311,8 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     // field takes CGAL's levels below); short of those, the whole body is
     // remeshed freely. A trigger that fits the dies (a die corner, the
     // overlap, poor elements the region could not mend) goes on remeshing
-    // freely: there the fit of the sunk die features moves the load most,
-    // and keeping the contact surface did not lower it (docs/remeshing.md).
+    // freely: keeping the contact surface did not lower its load jump on
+    // the hub flange (docs/remeshing.md).
     std::optional<LocalRemesh> local;
     std::string whole;
     Region region = Region::due;
