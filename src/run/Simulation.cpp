@@ -210,16 +210,21 @@ RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
     return {stop.reason, true};
   }
   // After every increment but the one that meets the stop criterion, whose
-  // check a checkpoint at the stop carries for a run resumed past it.
-  const auto remesh_if_due = [&](double time_step, std::span<const double> rate, std::span<const int> touching_die) {
+  // check a checkpoint at the stop carries for a run resumed past it, with
+  // the die each node pressed on (`touching_at_stop`; otherwise from this
+  // increment's contact solution).
+  const auto remesh_if_due = [&](double time_step, std::span<const double> rate,
+                                 const std::vector<int>* touching_at_stop) {
     const std::vector<remesh::RemeshDue> due = remesh::remesh_due(scene, state, time_step);
     if (due.empty()) return;
+    const std::vector<int> touching_die =
+        touching_at_stop ? *touching_at_stop : disc.touching_die(state.unknowns.nodal);
     remesh_checking_load(scene, state, due, touching_die, rate, clock.next_step(state), timers);
     disc = discretise(scene, state, timers);
   };
   if (!state.remesh_check_at_stop.empty() && !clock.stop(state)) {
     const RemeshCheck check = std::exchange(state.remesh_check_at_stop, {});
-    if (c.remeshing.enabled) remesh_if_due(check.time_step, check.rate, check.touching_die);
+    if (c.remeshing.enabled) remesh_if_due(check.time_step, check.rate, &check.touching_die);
   }
   double last_step = clock.next_step(state).length; // s, of the last increment accepted
   while (!(stop = clock.stop(state))) {
@@ -262,7 +267,7 @@ RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
       if (clock.stop(state))
         state.remesh_check_at_stop = {inc.time_step, inc.fields.rate, disc.touching_die(state.unknowns.nodal)};
       else
-        remesh_if_due(inc.time_step, inc.fields.rate, disc.touching_die(state.unknowns.nodal));
+        remesh_if_due(inc.time_step, inc.fields.rate, nullptr);
     }
     // The periodic checkpoint carries no preconditioner: the run sets its own
     // up anew after it, as a run resumed from it does, and --resume stays exact.
