@@ -1,8 +1,9 @@
 """One case run by build/anvil for a study tool, and what it wrote.
 
-run_case(tool, case, out, settings, anvil) runs cases/<case>.yaml with `anvil`
-(build/anvil unless given) into `out` with the --set `settings` (no picture),
-quietly, and returns its summary.json with
+run_case(tool, case, out, settings, anvil, resume) runs cases/<case>.yaml with
+`anvil` (build/anvil unless given) into `out` with the --set `settings` (no
+picture), quietly (with resume, on from the checkpoint in `out`, the settings
+allowed to change), and returns its summary.json with
 "stopped": the last line the run said when it stopped early (empty when it
 reached its stop), so a tool can report the run rather than drop it.
 """
@@ -15,8 +16,9 @@ import doc_figures
 ROOT = doc_figures.ROOT
 
 
-def run_case(tool, case, out, settings=(), anvil=os.path.join(ROOT, "build", "anvil")):
-    command = [anvil, "run", os.path.join(ROOT, "cases", case + ".yaml"), "-o", out, "--set", "output.picture=false"]
+def run_case(tool, case, out, settings=(), anvil=os.path.join(ROOT, "build", "anvil"), resume=False):
+    where = ["--resume", out, "--allow-changes"] if resume else ["-o", out]
+    command = [anvil, "run", os.path.join(ROOT, "cases", case + ".yaml"), *where, "--set", "output.picture=false"]
     for s in settings:
         command += ["--set", s]
     print(f"{tool}: {case} ...", flush=True)
