@@ -39,27 +39,13 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
     planes.emplace_back(axis, old.nodes[face[0]][axis]);
   }
   const double on_plane = 1e-6 * element_size;
-  // What touched a die still does. Nodal contact gave each old node that
-  // pressed on a die its tributary share of the faces around it (the part
-  // of each face nearest it in barycentric terms); a new node in that share
-  // is put onto the die from outside too, rather than leave a gap the next
-  // increment must close. At the edge of a contact zone a new node on a
-  // face between a pressing node and a free one, a few hundredths of a
-  // millimetre off the die, would otherwise carry nothing for an increment
-  // where the old node carried its share (docs/remeshing.md, the aged mesh).
+  // What touched a die still does: a node on an old face whose three nodes
+  // pressed on a die is put onto it from outside too, rather than leave a
+  // gap the next increment must close.
   const contact::SurfaceSearch old_surface(old.nodes, old.boundary_faces);
-  auto in_share_touching = [&](const mesh::Point& x, int die) {
-    const contact::SurfaceSearch::Closest on = old_surface.closest(x);
-    const mesh::Triangle& face = old.boundary_faces[on.face];
-    const Eigen::Vector3d normal = mesh::area_vector(old, face);
-    int nearest = 0; // the node of largest barycentric coordinate: sub-area opposite it
-    double largest = -std::numeric_limits<double>::infinity();
-    for (int k = 0; k < 3; ++k) {
-      const double area =
-          normal.dot((old.nodes[face[(k + 1) % 3]] - on.point).cross(old.nodes[face[(k + 2) % 3]] - on.point));
-      if (area > largest) largest = area, nearest = k;
-    }
-    return touching_die[face[nearest]] == die;
+  auto on_face_touching = [&](const mesh::Point& x, int die) {
+    const mesh::Triangle& face = old.boundary_faces[old_surface.closest(x).face];
+    return std::all_of(face.begin(), face.end(), [&](int node) { return touching_die[node] == die; });
   };
   const double widest_gap = 0.25 * element_size;
   PutBack done;
@@ -76,7 +62,7 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
       const die::DieSurface& surface = *scene.dies[d].surface;
       const die::SurfaceProjection p = surface.project(fresh.nodes[i] - shift);
       const bool inside = p.distance < 0.0 && p.distance >= -element_size;
-      const bool across_gap = p.distance > 0.0 && p.distance <= widest_gap && in_share_touching(start, int(d));
+      const bool across_gap = p.distance > 0.0 && p.distance <= widest_gap && on_face_touching(start, int(d));
       if (!inside && !across_gap) continue;
       const mesh::Point onto = shift + die::project_keeping(surface, x - shift, free, one_pass);
       if (!guard.move(fresh, int(i), onto, quality_floor)) continue;

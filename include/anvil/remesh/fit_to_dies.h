@@ -24,9 +24,7 @@ struct PutBack {
 /// Puts boundary nodes of `fresh`, the new mesh of body `body`, onto the dies
 /// at `dies_now`: those inside a die (by less than `element_size`, mm), and
 /// those within a quarter element of a die where the old mesh `old` touched
-/// it (`touching_die`, per node of `old`: the die it presses on, or −1): in
-/// the share of an old boundary face nearest (in barycentric terms) one of
-/// its nodes that pressed on that die, the part nodal contact gave that node.
+/// it (`touching_die`, per node of `old`: the die it presses on, or −1).
 /// Nodes on a symmetry plane of the body stay on it. A move that would leave
 /// an element around the node worse than `quality_floor` (or than it was) is
 /// not made: the next increment's contact takes that node. With `movable`

@@ -106,41 +106,6 @@ TEST_CASE("A gap below a quarter element is closed only where the old surface to
   CHECK(remesh::put_onto_dies(fresh, wide, b.touching_top(true), b.scene, 0, b.state.dies, kElement, 0.0).closed == 0);
 }
 
-TEST_CASE("Across a gap, a node is closed in the share of an old node that pressed on the die, not beside it",
-          "[unit][remesh]") {
-  // The old top face 0.4 mm below the top die, its nodes with x < 5 mm
-  // pressing on it: a contact zone whose edge runs across the face. A new
-  // node on an old face edge from a pressing node i to a free node j is
-  // closed where it lies in i's share (nearer i), and left where it lies in
-  // j's; a face with a free node no longer keeps the whole face open.
-  Billet b;
-  const mesh::TetMesh old = b.with_top_moved(-0.2 * kElement);
-  auto inner = [&](int i) {
-    const mesh::Point& x = old.nodes[i];
-    return x.x() > 1e-9 && x.y() > 1e-9 && x.head<2>().norm() < 10.0 - 1e-6 &&
-           std::abs(x.z() - (kTop - 0.2 * kElement)) < 1e-9;
-  };
-  std::vector<int> touching(old.node_count(), -1);
-  for (int i : b.top_nodes)
-    if (inner(i) && old.nodes[i].x() < 5.0) touching[i] = 0;
-  // An edge of a top face from a pressing inner node to a free inner node.
-  int from = -1, to = -1;
-  for (const mesh::Triangle& face : old.boundary_faces)
-    for (int k = 0; k < 3 && from < 0; ++k) {
-      const int i = face[k], j = face[(k + 1) % 3];
-      if (inner(i) && inner(j) && touching[i] == 0 && touching[j] < 0 && inner(face[(k + 2) % 3])) from = i, to = j;
-    }
-  REQUIRE(from >= 0);
-  for (const double along : {0.3, 0.7}) {
-    mesh::TetMesh fresh = old;
-    fresh.nodes[from] = old.nodes[from] + along * (old.nodes[to] - old.nodes[from]);
-    remesh::put_onto_dies(fresh, old, touching, b.scene, 0, b.state.dies, kElement, 0.0);
-    INFO("the new node " << along << " of the way from the pressing node to the free one");
-    CHECK(fresh.nodes[from].z() == Approx(along < 0.5 ? kTop : kTop - 0.2 * kElement).epsilon(1e-12));
-    CHECK(fresh.nodes[to].z() == Approx(kTop - 0.2 * kElement).epsilon(1e-12)); // free: stays
-  }
-}
-
 TEST_CASE("A put-back that would leave an element worse than the quality floor and than it was is not made",
           "[unit][remesh]") {
   Billet b;
