@@ -14,9 +14,10 @@ import subprocess
 import doc_figures
 
 ROOT = doc_figures.ROOT
+ANVIL = os.path.join(ROOT, "build", "anvil")  # this checkout's build
 
 
-def run_case(tool, case, out, settings=(), anvil=os.path.join(ROOT, "build", "anvil"), resume=False):
+def run_case(tool, case, out, settings=(), anvil=ANVIL, resume=False):
     where = ["--resume", out, "--allow-changes"] if resume else ["-o", out]
     command = [anvil, "run", os.path.join(ROOT, "cases", case + ".yaml"), *where, "--set", "output.picture=false"]
     for s in settings:
