@@ -1,6 +1,8 @@
 // anvil_signature CASE.yaml OUT_DIR: runs a case as the regression test does
-// (its first increments) into OUT_DIR and prints its signature (CSV) on
-// stdout. tools/update_signatures calls it for every case.
+// (its first increments) into OUT_DIR and writes its signature (CSV) to
+// OUT_DIR/signature.csv, not to stdout, where libraries print too (ML's
+// geometric aggregation, on nodes of two bodies in contact at one place).
+// tools/update_signatures calls it for every case.
 #include "signature.h"
 #include "anvil/core/blas_kernels.h"
 #include "anvil/core/error.h"
@@ -11,6 +13,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
 
 int main(int argc, char** argv) {
   anvil::blas_kernels::pin(argv); // the kernels of anvil run (docs/parallel-runs.md)
@@ -22,7 +27,11 @@ int main(int argc, char** argv) {
   anvil::solver::PetscSession petsc(petsc_argc, argv);
   try {
     anvil::log::set_quiet(true);
-    std::fputs(signature::to_csv(signature::of_run(signature::run(argv[1], argv[2]))).c_str(), stdout);
+    const std::string csv = signature::to_csv(signature::of_run(signature::run(argv[1], argv[2])));
+    std::ofstream out(std::filesystem::path(argv[2]) / "signature.csv");
+    out << csv;
+    out.close();
+    if (!out) throw std::runtime_error(std::string("cannot write ") + argv[2] + "/signature.csv");
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "anvil_signature: %s: %s\n", argv[1], e.what());
