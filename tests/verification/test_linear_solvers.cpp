@@ -188,15 +188,20 @@ TEST_CASE("A kept preconditioner gone stale is stopped at its budget and set up 
   CHECK(before_stop < wide.second);
 }
 
-TEST_CASE("Facet contact between bodies: ML aggregating on the geometry takes fewer Krylov iterations, same answer",
+TEST_CASE("Facet contact between bodies: the velocity AMG's defaults keep facet near nodal contact's Krylov "
+          "iterations, same answer",
           "[verification]") {
   // The unit-cube patch test, 2 cells under 16, quasi-symmetric facet
   // contact: the fine cube's facet rows couple each node weakly with many
-  // nodes of the coarse one. Measured (tools/patch_test --krylov): 78 Krylov
-  // iterations on the default, geometric aggregation, and 143 with ML's
-  // matrix aggregation (-fieldsplit_0_pc_ml_Aux false); the test asks for a
-  // quarter fewer. Both solves reach the Newton tolerance of this linear
-  // problem, so the support force agrees to 1e-6 of it.
+  // nodes of the coarse one. With facet contact ML aggregates on the nodes'
+  // geometry and smooths with SOR. Measured (tools/patch_test --krylov):
+  // 47 Krylov iterations on those defaults, 61 with ML's matrix aggregation
+  // (-fieldsplit_0_pc_ml_Aux false), 78 with point-block Jacobi smoothing
+  // (-fieldsplit_0_mg_levels_pc_type pbjacobi), 56 for nodal contact on its
+  // defaults. The test asks for a tenth fewer than either alternative and
+  // at most issue 45's 1.3 times nodal contact's. All solves reach the
+  // Newton tolerance of this linear problem, so the support force agrees to
+  // 1e-6 of it.
   auto run = [](std::vector<std::string> overrides, const std::string& name) { // the caller's come last, and win
     overrides.insert(overrides.begin(), {"solver.linear_solver=fgmres", "bodies[0].mesh.element_size=0.5",
                                          "bodies[1].mesh.element_size=0.0625", "contact_pairs[0].integration=facet",
@@ -205,18 +210,25 @@ TEST_CASE("Facet contact between bodies: ML aggregating on the geometry takes fe
   };
   const double nodal_before =
       run({"contact_pairs[0].integration=nodal"}, "anvil_solvers_nodal").summary_number("krylov_iterations");
-  const RunOutputs geometric = run({}, "anvil_solvers_geometric");
+  const RunOutputs defaults = run({}, "anvil_solvers_facet");
   const RunOutputs matrix = run({"solver.petsc_options=-fieldsplit_0_pc_ml_Aux false"}, "anvil_solvers_matrix");
-  const double geometric_its = geometric.summary_number("krylov_iterations");
+  const RunOutputs jacobi =
+      run({"solver.petsc_options=-fieldsplit_0_mg_levels_pc_type pbjacobi"}, "anvil_solvers_pbjacobi");
+  const double its = defaults.summary_number("krylov_iterations");
   const double matrix_its = matrix.summary_number("krylov_iterations");
-  INFO("Krylov iterations: geometric " << geometric_its << ", matrix " << matrix_its);
-  CHECK(geometric_its <= 0.75 * matrix_its);
-  const double f_geometric = geometric.loads("support").back().force.z();
-  const double f_matrix = matrix.loads("support").back().force.z();
-  CHECK(std::abs(f_geometric - f_matrix) <= 1e-6 * std::abs(f_matrix));
+  const double jacobi_its = jacobi.summary_number("krylov_iterations");
+  INFO("Krylov iterations: facet on the defaults " << its << ", matrix aggregation " << matrix_its
+                                                   << ", point-block Jacobi " << jacobi_its << ", nodal "
+                                                   << nodal_before);
+  CHECK(its <= 0.9 * matrix_its);
+  CHECK(its <= 0.9 * jacobi_its);
+  CHECK(its <= 1.3 * nodal_before);
+  const double f = defaults.loads("support").back().force.z();
+  for (const RunOutputs* other : {&matrix, &jacobi})
+    CHECK(std::abs(other->loads("support").back().force.z() - f) <= 1e-6 * std::abs(f));
   // The options were the facet run's alone: nodal contact in the same
-  // process aggregates on the matrix as before it (56 iterations; 62 on the
-  // geometry).
+  // process aggregates on the matrix and smooths with point-block Jacobi as
+  // before it (56 iterations).
   CHECK(run({"contact_pairs[0].integration=nodal"}, "anvil_solvers_nodal").summary_number("krylov_iterations") ==
         nodal_before);
 }

@@ -46,10 +46,10 @@ struct KrylovOutcome {
 class KrylovSolver {
 public:
   /// On the rows of `partition`; the matrix's creation timed in `timers`
-  /// (both must outlive the solver). With `geometric_aggregation`, ML
-  /// aggregates the velocity block on a distance Laplacian of the nodes
-  /// (its auxiliary matrix) instead of the block's own couplings.
-  KrylovSolver(SchurApproximation schur, bool geometric_aggregation, const fem::Partition& partition, Timers& timers);
+  /// (both must outlive the solver). With `facet_contact`, ML aggregates
+  /// the velocity block on a distance Laplacian of the nodes (its auxiliary
+  /// matrix) instead of the block's own couplings, and smooths it with SOR.
+  KrylovSolver(SchurApproximation schur, bool facet_contact, const fem::Partition& partition, Timers& timers);
   ~KrylovSolver();
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;
