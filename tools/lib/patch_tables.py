@@ -175,8 +175,9 @@ def krylov(directory, anvil):
     root = doc_figures.ROOT
     sor, jacobi = ["-fieldsplit_0_mg_levels_pc_type", "sor"], ["-fieldsplit_0_mg_levels_pc_type", "pbjacobi"]
     matrix, geometric = ["-fieldsplit_0_pc_ml_Aux", "false"], ["-fieldsplit_0_pc_ml_Aux", "true"]
+    facet_defaults_for_both = ("ML, geometric aggregation, SOR", geometric + sor)
     amgs = OrderedDict([("ML (default: with facet contact, geometric aggregation and SOR)", []),
-                        ("ML, geometric aggregation, SOR", geometric + sor),
+                        facet_defaults_for_both,
                         ("ML, matrix aggregation, SOR", matrix + sor),
                         ("ML, matrix aggregation, point-block Jacobi", matrix + jacobi),
                         ("ML, geometric aggregation, point-block Jacobi", geometric + jacobi),
@@ -195,7 +196,9 @@ def krylov(directory, anvil):
         with open(os.path.join(out, "summary.json")) as f:
             return json.load(f)["krylov_iterations"]
 
-    def table(variants, case, extra=(), pairs=((2, 16), (4, 16), (2, 8), (16, 2))):
+    pairs = ((2, 16), (4, 16), (2, 8), (16, 2))  # cells an edge, lower/upper
+
+    def table(variants, case, extra=(), pairs=pairs):
         """nodal / facet iterations of `case` per mesh pair (cells an edge,
         lower/upper) and formulation, a column per variant (name -> anvil
         options, after `extra`)."""
@@ -214,14 +217,14 @@ def krylov(directory, anvil):
 
     doc_figures.write_block("linear-solve.md", TOOL + " --krylov", "facet krylov",
                             table(amgs, "cases/patch_test_cubes.yaml",  # 8/32: too large for the exact solve below
-                                  pairs=((2, 16), (4, 16), (2, 8), (16, 2), (8, 32))))
+                                  pairs=pairs + ((8, 32),)))
     # The same pairs where the velocity block is regular: the upper cube's
     # top driven by a velocity and the interface sticking hold the uniform
     # contraction of one cube against the dilatation of the other that the
     # pressure-loaded, frictionless test leaves to the pressure alone. An
     # exact velocity solve (LU) then shows what the rest of the
     # preconditioner makes of the contact rows.
-    held = OrderedDict([("ML (default)", []), ("ML, geometric aggregation, SOR", geometric + sor),
+    held = OrderedDict([("ML (default)", []), facet_defaults_for_both,
                         ("velocity block exact (LU)", ["-fieldsplit_0_pc_type", "lu"])])
     doc_figures.write_block("linear-solve.md", TOOL + " --krylov", "facet krylov held",
                             table(held, "cases/patch_test_cubes_displacement.yaml",

@@ -7,15 +7,13 @@
 #include "anvil/core/blas_kernels.h"
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
+#include "anvil/io/atomic_file.h"
 #include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
 #include "anvil/solver/PetscSession.h"
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <stdexcept>
-#include <string>
 
 int main(int argc, char** argv) {
   anvil::blas_kernels::pin(argv); // the kernels of anvil run (docs/parallel-runs.md)
@@ -27,11 +25,8 @@ int main(int argc, char** argv) {
   anvil::solver::PetscSession petsc(petsc_argc, argv);
   try {
     anvil::log::set_quiet(true);
-    const std::string csv = signature::to_csv(signature::of_run(signature::run(argv[1], argv[2])));
-    std::ofstream out(std::filesystem::path(argv[2]) / "signature.csv");
-    out << csv;
-    out.close();
-    if (!out) throw std::runtime_error(std::string("cannot write ") + argv[2] + "/signature.csv");
+    anvil::io::write_file_atomically((std::filesystem::path(argv[2]) / "signature.csv").string(),
+                                     signature::to_csv(signature::of_run(signature::run(argv[1], argv[2]))));
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "anvil_signature: %s: %s\n", argv[1], e.what());
