@@ -140,6 +140,30 @@ std::vector<std::vector<int>> tets_around_nodes(const TetMesh& mesh) {
   return around;
 }
 
+std::vector<int> connected_parts(const TetMesh& mesh) {
+  // Union-find over the tets' nodes, each root the smallest node of its set.
+  std::vector<int> root(mesh.nodes.size());
+  for (std::size_t v = 0; v < root.size(); ++v)
+    root[v] = static_cast<int>(v);
+  auto find = [&root](int v) {
+    while (root[v] != v)
+      v = root[v] = root[root[v]];
+    return v;
+  };
+  for (const Tet& t : mesh.tets)
+    for (int k = 1; k < 4; ++k) {
+      const int a = find(t[0]), b = find(t[k]);
+      if (a != b) root[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<int> part(root.size(), -1);
+  int parts = 0;
+  for (std::size_t v = 0; v < root.size(); ++v) {
+    const int r = find(static_cast<int>(v));
+    part[v] = r == static_cast<int>(v) ? parts++ : part[r];
+  }
+  return part;
+}
+
 Eigen::AlignedBox3d bounding_box(const TetMesh& mesh) {
   Eigen::AlignedBox3d box;
   for (const Point& x : mesh.nodes)

@@ -99,7 +99,8 @@ IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> pr
                                  const LinearSolverSettings& linear, Timers& timers)
     : partition_(fem::partition_mesh(mesh, processes::count(), processes::rank())),
       assembler_(mesh, fem::DofMap(std::move(prescribed)), partition_),
-      linear_solver_(linear, assembler_.dofs().free_count(), partition_, timers), timers_(timers) {
+      linear_solver_(linear, assembler_.dofs().free_count(), partition_, timers), timers_(timers),
+      parts_(mesh::connected_parts(mesh)) {
   if (!partition_.distributed()) return;
   owned_nodes_.resize(mesh.nodes.size());
   for (int node = 0; node < mesh.node_count(); ++node)
@@ -338,7 +339,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     bool solved = false;
     {
       Timers::Scope scope(timers_, "solver setup");
-      solved = linear_solver_.factorize(assembler_.tangent(), SaddlePointData{mesh.nodes, assembler_.pressure_mass()});
+      solved = linear_solver_.factorize(assembler_.tangent(),
+                                        SaddlePointData{mesh.nodes, assembler_.pressure_mass(), parts_});
     }
     if (solved) {
       Timers::Scope scope(timers_, "solve");

@@ -62,6 +62,15 @@ constexpr const char* kGeometricAggregation =
 /// iterations but more time, and nodal contact keeps point-block Jacobi.
 constexpr const char* kFacetSmoothing = "-fieldsplit_0_mg_levels_pc_type sor";
 
+/// How far apart ML sees two bodies, per body index, as a share of the
+/// scene's extent: enough that coinciding nodes of two bodies get a finite
+/// weight, far too little to change which couplings are strong. At 1e-4 the
+/// patch pairs' and hertz_cylinder's Krylov iterations were those of the
+/// bodies in place; further apart they changed (1e-2: fewer on most patch
+/// pairs, more on hertz_cylinder; 10 extents, every aggregate in one body:
+/// 1.1-5.5 times the iterations).
+constexpr double kBodiesApart = 1e-4;
+
 /// Whether the boolean option `name` is given and true.
 bool option_is_true(const char* name) {
   PetscBool value = PETSC_FALSE;
@@ -95,6 +104,7 @@ struct KrylovSolver::Impl {
   Mat schur_preconditioner = nullptr; ///< mass: Ŝ = A11 − diag(M_p/η)
   Vec pressure_mass = nullptr;
   Vec coordinates = nullptr;
+  std::vector<PetscReal> ml_points;        ///< this process's nodes as ML aggregates them (ml_points_at)
   std::optional<PetscReal> user_tolerance; ///< -ksp_rtol's: it replaces the Newton-driven tolerance
   PetscInt max_iterations = 0;             ///< after the options (500, or -ksp_max_it)
   bool set_up = false;                     ///< the splits' solvers exist
@@ -209,13 +219,28 @@ struct KrylovSolver::Impl {
       MatDestroy(&a);
       MatDestroy(&p);
     }
-    PetscInt n = 0;
-    check(VecGetLocalSize(coordinates, &n), "giving the velocity AMG the coordinates");
-    PetscScalar* x = nullptr;
-    check(VecGetArray(coordinates, &x), "giving the velocity AMG the coordinates");
-    const PetscErrorCode given = PCSetCoordinates(ml, 3, n / 3, x);
-    check(VecRestoreArray(coordinates, &x), "giving the velocity AMG the coordinates");
-    check(given, "giving the velocity AMG the coordinates");
+    check(PCSetCoordinates(ml, 3, static_cast<PetscInt>(ml_points.size() / 3), ml_points.data()),
+          "giving the velocity AMG the coordinates");
+  }
+
+  /// The owned nodes at `data`'s coordinates, each body moved along x by
+  /// its index times kBodiesApart of the scene's extent. ML's auxiliary
+  /// matrix weighs a coupling by 1/d², d the distance between its nodes, and
+  /// a contact pair couples nodes of two bodies that can coincide (the line
+  /// of first contact of a cylinder on a block, the corners of non-matching
+  /// cubes), where ML took 1/0 and printed the nodes on stdout.
+  void ml_points_at(const SaddlePointData& data) {
+    Eigen::AlignedBox3d box;
+    for (const mesh::Point& x : data.nodes)
+      box.extend(x);
+    const double apart = kBodiesApart * box.diagonal().norm();
+    ml_points.resize(3 * static_cast<std::size_t>(partition.owned_count()));
+    for (int i = 0; i < partition.owned_count(); ++i) {
+      const int node = partition.node[partition.first + i];
+      const int part = data.parts.empty() ? 0 : data.parts[node];
+      for (int c = 0; c < 3; ++c)
+        ml_points[3 * static_cast<std::size_t>(i) + c] = data.nodes[node][c] + (c == 0 ? part * apart : 0.0);
+    }
   }
 
   /// Builds the splits' preconditioners now (the multigrid hierarchies), not
@@ -348,6 +373,7 @@ void KrylovSolver::set_up(const SaddlePointData& data) {
   // options, again at each one.
   std::optional<ScopedPetscOptions> smoothing;
   if (s.sor_smoothing) smoothing.emplace(kFacetSmoothing, "anvil's smoothing for facet contact");
+  if (s.ml_coordinates) s.ml_points_at(data);
   if (!first && s.ml_coordinates) s.give_ml_coordinates(split_solver(pc, 0, "setting up the preconditioner"), true);
   check(KSPSetUp(s.ksp), "setting up the preconditioner");
   if (first) s.choose_schur_pc(pc);

@@ -231,7 +231,7 @@ bool LinearSolver::set_up_as_resumed(const fem::SparseMatrix& a, const SaddlePoi
   const Eigen::Map<const Eigen::VectorXd> mass(source_.pressure_mass.data(),
                                                static_cast<Eigen::Index>(source_.pressure_mass.size()));
   const Eigen::VectorXd pressure_mass = mass;
-  backend_->krylov->set_up_from(a, source_.entries, SaddlePointData{source_.nodes, pressure_mass});
+  backend_->krylov->set_up_from(a, source_.entries, SaddlePointData{source_.nodes, pressure_mass, data.parts});
   ++setups_;
   set_krylov_operator(a, data, true);
   setup_rate_ = boundary_.setup_rate;

@@ -87,6 +87,12 @@ struct MeshRange {
   bool has_node(int node) const { return node >= first_node && node < first_node + node_count; }
 };
 
+/// For each node, the connected part of `mesh` it lies in (tets joined
+/// through shared nodes), numbered from 0 in the order of their first nodes:
+/// a scene's bodies, solved as one mesh, are its parts. A node no tet uses
+/// is a part of its own.
+std::vector<int> connected_parts(const TetMesh& mesh);
+
 /// The smallest box holding every node of `mesh` (mm).
 Eigen::AlignedBox3d bounding_box(const TetMesh& mesh);
 

@@ -28,6 +28,7 @@ namespace anvil::solver {
 struct SaddlePointData {
   std::span<const mesh::Point> nodes;   ///< current coordinates (rigid-body modes), mm
   const Eigen::VectorXd& pressure_mass; ///< M_p/η lumped per node (Assembler::pressure_mass)
+  std::span<const int> parts;           ///< per node, its body (mesh::connected_parts); empty: one body
 };
 
 /// How the pressure block of the preconditioner approximates the Schur complement.
@@ -48,7 +49,8 @@ public:
   /// On the rows of `partition`; the matrix's creation timed in `timers`
   /// (both must outlive the solver). With `facet_contact`, ML aggregates
   /// the velocity block on a distance Laplacian of the nodes (its auxiliary
-  /// matrix) instead of the block's own couplings, and smooths it with SOR.
+  /// matrix, within each body) instead of the block's own couplings, and
+  /// smooths it with SOR.
   KrylovSolver(SchurApproximation schur, bool facet_contact, const fem::Partition& partition, Timers& timers);
   ~KrylovSolver();
   KrylovSolver(const KrylovSolver&) = delete;

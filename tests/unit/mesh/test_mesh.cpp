@@ -100,3 +100,21 @@ TEST_CASE("inner faces: each face two tets share, once, with both tets", "[unit]
     }
   CHECK(inner.front().tets[0] != inner.front().tets[1]);
 }
+
+TEST_CASE("connected parts: each body of an appended mesh is one part, numbered by its first node", "[unit]") {
+  // Three boxes appended, the second touching the first along a face (its
+  // nodes coincide with the first's, but no tet joins them): three parts.
+  mesh::TetMesh scene = mesh::make_box({0, 0, 0}, {1, 1, 1}, 0.5);
+  const mesh::MeshRange second = mesh::append(scene, mesh::make_box({0, 0, 1}, {1, 1, 2}, 0.5));
+  const mesh::MeshRange third = mesh::append(scene, mesh::make_box({3, 0, 0}, {4, 1, 1}, 0.5));
+  const std::vector<int> parts = mesh::connected_parts(scene);
+  REQUIRE(parts.size() == scene.nodes.size());
+  for (int v = 0; v < scene.node_count(); ++v)
+    CHECK(parts[v] == (third.has_node(v) ? 2 : second.has_node(v) ? 1 : 0));
+  // A tet joining the first and third boxes makes them one part, numbered 0;
+  // the second box becomes part 1.
+  scene.tets.push_back({0, 1, 2, third.first_node});
+  const std::vector<int> joined = mesh::connected_parts(scene);
+  for (int v = 0; v < scene.node_count(); ++v)
+    CHECK(joined[v] == (second.has_node(v) ? 1 : 0));
+}
