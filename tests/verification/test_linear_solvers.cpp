@@ -165,11 +165,11 @@ TEST_CASE("A kept preconditioner gone stale is stopped at its budget and set up 
     solver::LinearSolver solver(settings, static_cast<int>(rhs.size()), partition, timers);
     Solves out{0, 0, 0};
     if (from_first) {
-      REQUIRE(solver.factorize(first, {p.mesh.nodes, first_mass}));
+      REQUIRE(solver.factorize(first, {p.mesh.nodes, first_mass, {}}));
       REQUIRE(solver.solve(rhs, x, kTolerance));
       out.first = solver.iterations();
     }
-    REQUIRE(solver.factorize(second, {p.mesh.nodes, second_mass}));
+    REQUIRE(solver.factorize(second, {p.mesh.nodes, second_mass, {}}));
     REQUIRE(solver.solve(rhs, x, kTolerance));
     REQUIRE(solver.kind() == solver::LinearSolverKind::fgmres);
     CHECK((rhs - second * x).norm() <= 10.0 * kTolerance * rhs.norm()); // to the tolerance, up to round-off
