@@ -164,9 +164,9 @@ std::vector<int> connected_parts(const TetMesh& mesh) {
   return part;
 }
 
-Eigen::AlignedBox3d bounding_box(const TetMesh& mesh) {
+Eigen::AlignedBox3d bounding_box(std::span<const Point> points) {
   Eigen::AlignedBox3d box;
-  for (const Point& x : mesh.nodes)
+  for (const Point& x : points)
     box.extend(x);
   return box;
 }

@@ -230,10 +230,7 @@ struct KrylovSolver::Impl {
   /// of first contact of a cylinder on a block, the corners of non-matching
   /// cubes), where ML took 1/0 and printed the nodes on stdout.
   void ml_points_at(const SaddlePointData& data) {
-    Eigen::AlignedBox3d box;
-    for (const mesh::Point& x : data.nodes)
-      box.extend(x);
-    const double apart = kBodiesApart * box.diagonal().norm();
+    const double apart = kBodiesApart * mesh::bounding_box(data.nodes).diagonal().norm();
     ml_points.resize(3 * static_cast<std::size_t>(partition.owned_count()));
     for (int i = 0; i < partition.owned_count(); ++i) {
       const int node = partition.node[partition.first + i];
@@ -373,8 +370,10 @@ void KrylovSolver::set_up(const SaddlePointData& data) {
   // options, again at each one.
   std::optional<ScopedPetscOptions> smoothing;
   if (s.sor_smoothing) smoothing.emplace(kFacetSmoothing, "anvil's smoothing for facet contact");
-  if (s.ml_coordinates) s.ml_points_at(data);
-  if (!first && s.ml_coordinates) s.give_ml_coordinates(split_solver(pc, 0, "setting up the preconditioner"), true);
+  if (s.ml_coordinates) {
+    s.ml_points_at(data);
+    if (!first) s.give_ml_coordinates(split_solver(pc, 0, "setting up the preconditioner"), true);
+  }
   check(KSPSetUp(s.ksp), "setting up the preconditioner");
   if (first) s.choose_schur_pc(pc);
   s.set_up = true;

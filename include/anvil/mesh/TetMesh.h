@@ -4,6 +4,7 @@
 #include <Eigen/Geometry> // cross products on Point
 #include <algorithm>
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -93,8 +94,12 @@ struct MeshRange {
 /// is a part of its own.
 std::vector<int> connected_parts(const TetMesh& mesh);
 
+/// The smallest box holding every point of `points` (mm).
+Eigen::AlignedBox3d bounding_box(std::span<const Point> points);
 /// The smallest box holding every node of `mesh` (mm).
-Eigen::AlignedBox3d bounding_box(const TetMesh& mesh);
+inline Eigen::AlignedBox3d bounding_box(const TetMesh& mesh) {
+  return bounding_box(std::span<const Point>(mesh.nodes));
+}
 
 /// The range of a mesh that is one body: all of it.
 MeshRange whole_range(const TetMesh& mesh);

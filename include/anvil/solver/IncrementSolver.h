@@ -127,7 +127,7 @@ private:
   fem::Assembler assembler_;
   LinearSolver linear_solver_;
   Timers& timers_;
-  std::vector<int> parts_; ///< per node, its body (mesh::connected_parts): the velocity AMG's aggregates keep to one
+  std::vector<int> parts_; ///< per node, its body (mesh::connected_parts), for SaddlePointData
   Eigen::VectorXd residual_;
   Eigen::VectorXd nodal_term_residual_; ///< the nodal terms' part of residual_
   Eigen::VectorXd element_residual_;    ///< the elements' part of residual_ (with nodal terms only)

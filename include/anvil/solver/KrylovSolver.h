@@ -49,8 +49,7 @@ public:
   /// On the rows of `partition`; the matrix's creation timed in `timers`
   /// (both must outlive the solver). With `facet_contact`, ML aggregates
   /// the velocity block on a distance Laplacian of the nodes (its auxiliary
-  /// matrix, within each body) instead of the block's own couplings, and
-  /// smooths it with SOR.
+  /// matrix) instead of the block's own couplings, and smooths it with SOR.
   KrylovSolver(SchurApproximation schur, bool facet_contact, const fem::Partition& partition, Timers& timers);
   ~KrylovSolver();
   KrylovSolver(const KrylovSolver&) = delete;
