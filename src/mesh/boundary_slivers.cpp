@@ -23,7 +23,7 @@ Edge edge(int a, int b) {
 /// One pass over the tets: removes those that qualify and touch no node of
 /// another removed in the pass (each decision sees the surface as it is).
 /// Returns how many it removed.
-int peel_once(TetMesh& mesh, double below) {
+int peel_once(TetMesh& mesh, double below, double ears_below) {
   std::map<Triangle, int> face_of; // sorted vertices -> boundary face
   std::set<Edge> boundary_edges;
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
@@ -37,6 +37,17 @@ int peel_once(TetMesh& mesh, double below) {
     for (int v : t)
       ++uses[v];
 
+  std::vector<std::vector<int>> around; // the tets at each node, made when an ear asks
+  // Whether the tet across face `inner` of tet `e` is below `below`.
+  auto covers_poorer = [&](int e, const Triangle& inner) {
+    if (around.empty()) around = tets_around_nodes(mesh);
+    for (int other : around[inner[0]]) {
+      const Tet& o = mesh.tets[other];
+      if (other != e && std::count(o.begin(), o.end(), inner[1]) && std::count(o.begin(), o.end(), inner[2]))
+        return quality(mesh, other) < below;
+    }
+    return false;
+  };
   std::vector<char> removed(mesh.tets.size(), 0), touched(mesh.nodes.size(), 0);
   std::vector<Triangle> tagged = mesh.boundary_faces;
   std::vector<int> tags = mesh.boundary_tags;
@@ -50,7 +61,8 @@ int peel_once(TetMesh& mesh, double below) {
   int count = 0;
   for (int e = 0; e < mesh.tet_count(); ++e) {
     const Tet& t = mesh.tets[e];
-    if (touched[t[0]] || touched[t[1]] || touched[t[2]] || touched[t[3]] || quality(mesh, e) >= below) continue;
+    const double q = quality(mesh, e);
+    if (touched[t[0]] || touched[t[1]] || touched[t[2]] || touched[t[3]] || q >= std::max(below, ears_below)) continue;
     std::array<int, 4> boundary_face{-1, -1, -1, -1}; // per local face k (opposite vertex k)
     int on_boundary = 0;
     for (int k = 0; k < 4; ++k) {
@@ -63,6 +75,11 @@ int peel_once(TetMesh& mesh, double below) {
       while (boundary_face[apex] >= 0)
         ++apex;
       if (uses[t[apex]] != 1) continue;
+      // An ear above `below` goes only where it covers a poorer tet.
+      const Triangle inner{t[kFaceVertices[apex][0]], t[kFaceVertices[apex][1]], t[kFaceVertices[apex][2]]};
+      if (q >= below && (q >= ears_below || !covers_poorer(e, inner))) continue;
+    } else if (q >= below) {
+      continue;
     } else if (on_boundary == 2) {
       // The inner faces share the edge of the two nodes the boundary faces are opposite to.
       std::array<int, 2> ends{};
@@ -112,13 +129,13 @@ int peel_once(TetMesh& mesh, double below) {
 
 } // namespace
 
-int peel_boundary_slivers(TetMesh& mesh, double below) {
+int peel_boundary_slivers(TetMesh& mesh, double below, double ears_below) {
   int peeled = 0;
   // A pass uncovers at most the tets under the ones it removed; a few passes
   // reach every sliver stacked on a crease.
   constexpr int kMostPasses = 8;
   for (int pass = 0; pass < kMostPasses; ++pass) {
-    const int now = peel_once(mesh, below);
+    const int now = peel_once(mesh, below, ears_below);
     if (now == 0) break;
     peeled += now;
   }

@@ -217,7 +217,8 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
   settle_on_old_surface(out, body, patch, tag_of_patch, std::vector<char>(out.nodes.size(), 1), mesh::volume(body),
                         settings.quality_floor);
   const double volume = mesh::volume(out);
-  if (const int peeled = mesh::peel_boundary_slivers(out, kPeelShare * settings.quality_floor); peeled > 0)
+  if (const int peeled = mesh::peel_boundary_slivers(out, kPeelShare * settings.quality_floor, settings.quality_floor);
+      peeled > 0)
     log::info("    remeshing: %d flat tets on creases of the surface taken off (volume %+.2e %%)", peeled,
               100.0 * (mesh::volume(out) / volume - 1.0));
   // A flat tet the peel cannot take (all six edges on the surface: three of

@@ -12,11 +12,15 @@ namespace anvil::mesh {
 /// faces on the boundary, where the surface stays a manifold: with two, the
 /// edge their other faces share must not be on the boundary already; with
 /// three, the node they share must be in no other tet (it goes with the
-/// tet). Each tet removed takes its volume off the body (a flat tet's is
-/// about quality × edge³) and turns its other faces into boundary faces,
-/// tagged as the removed face that faces most the same way. Repeated while
-/// the tets it uncovers qualify. Returns how many tets it removed; the
+/// tet). A tet of the second kind (an ear) below `ears_below` goes too
+/// where it covers a tet below `below`: that tet may be held by the ear
+/// alone (on the connecting rod, a flat tet on a strip of the symmetry
+/// plane a fiftieth of a millimetre wide, which every CGAL try kept). Each
+/// tet removed takes its volume off the body (a flat tet's is about
+/// quality × edge³) and turns its other faces into boundary faces, tagged
+/// as the removed face that faces most the same way. Repeated while the
+/// tets it uncovers qualify. Returns how many tets it removed; the
 /// boundary is rebuilt when any.
-int peel_boundary_slivers(TetMesh& mesh, double below);
+int peel_boundary_slivers(TetMesh& mesh, double below, double ears_below);
 
 } // namespace anvil::mesh

@@ -61,8 +61,8 @@ TEST_CASE("A flat tet with three faces on the surface goes with its apex node, a
   const double q = mesh::quality(box, box.tet_count() - 1);
   REQUIRE(q < 0.01);
 
-  CHECK(mesh::peel_boundary_slivers(box, q) == 0); // not below the bound: kept
-  CHECK(mesh::peel_boundary_slivers(box, 2.0 * q) == 1);
+  CHECK(mesh::peel_boundary_slivers(box, q, 0.0) == 0); // not below the bound: kept
+  CHECK(mesh::peel_boundary_slivers(box, 2.0 * q, 0.0) == 1);
   CHECK(box.nodes == before.nodes);
   CHECK(box.tets == before.tets);
   CHECK(box.boundary_faces.size() == before.boundary_faces.size());
@@ -78,7 +78,7 @@ TEST_CASE("A flat tet with two faces on the surface uncovers its other two, tagg
   REQUIRE(mesh::quality(m, 2) < 0.01);
   const double volume = mesh::volume(m), sliver = mesh::signed_volume(m, 2);
 
-  CHECK(mesh::peel_boundary_slivers(m, 0.05) == 1);
+  CHECK(mesh::peel_boundary_slivers(m, 0.05, 0.0) == 1);
   REQUIRE(m.tet_count() == 2);
   CHECK(m.node_count() == 5);
   CHECK(mesh::fault(m).empty());
@@ -104,7 +104,7 @@ TEST_CASE("A flat tet whose removal would pinch the surface stays", "[unit][mesh
   REQUIRE(mesh::fault(box).empty());
   const mesh::TetMesh capped = box;
 
-  CHECK(mesh::peel_boundary_slivers(box, 0.05) == 0);
+  CHECK(mesh::peel_boundary_slivers(box, 0.05, 0.0) == 0);
   CHECK(box.tets == capped.tets);
 }
 
@@ -121,6 +121,38 @@ TEST_CASE("An uncovered face takes no flat tag whose plane it is off", "[unit][m
       break;
     }
 
-  CHECK(mesh::peel_boundary_slivers(m, 0.05) == 1);
+  CHECK(mesh::peel_boundary_slivers(m, 0.05, 0.0) == 1);
   CHECK(top_faces_tagged(m, 7) == 2);
+}
+
+TEST_CASE("An ear above the bound goes where it covers a poorer flat tet, which then goes too", "[unit][mesh]") {
+  // The cap of the first test (flat, two faces on the surface once covered)
+  // under an ear on its face f0 f1 p: the cap's inner faces share the box's
+  // edge f0 f1, so it cannot go while the ear holds it, and the ear (three
+  // faces on the surface around a node of its own) is above the bound.
+  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
+  const mesh::TetMesh before = box;
+  const mesh::Triangle f = add_cap(box);
+  const int p = box.node_count() - 1;
+  const mesh::Point normal = mesh::area_vector(box, f).normalized();
+  const mesh::Point middle = 0.5 * (box.nodes[f[0]] + box.nodes[f[1]]);
+  const mesh::Point away = (middle - box.nodes[f[2]]).normalized();
+  // The ear's apex above the edge f0 f1, leaning off the cap: the ear is fair, not flat.
+  box.nodes.push_back(middle + 0.2 * away + 0.5 * normal);
+  box.tets.push_back(oriented(box, {f[0], f[1], p, box.node_count() - 1}));
+  mesh::build_boundary(box, before.boundary_faces, before.boundary_tags);
+  REQUIRE(mesh::fault(box).empty());
+  const double cap = mesh::quality(box, box.tet_count() - 2), ear = mesh::quality(box, box.tet_count() - 1);
+  REQUIRE(cap < 0.05);
+  REQUIRE(ear > 0.05);
+  REQUIRE(ear < 0.5);
+  const mesh::TetMesh capped = box;
+
+  CHECK(mesh::peel_boundary_slivers(box, 0.05, ear) == 0); // the ear not below its bound: both stay
+  CHECK(box.tets == capped.tets);
+  CHECK(mesh::peel_boundary_slivers(box, 0.05, 0.5) == 2);
+  CHECK(box.nodes == before.nodes);
+  CHECK(box.tets == before.tets);
+  CHECK(mesh::volume(box) == Approx(mesh::volume(before)).epsilon(1e-14));
+  CHECK(mesh::fault(box).empty());
 }
