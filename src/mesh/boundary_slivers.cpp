@@ -61,8 +61,9 @@ int peel_once(TetMesh& mesh, double below, double ears_below) {
   int count = 0;
   for (int e = 0; e < mesh.tet_count(); ++e) {
     const Tet& t = mesh.tets[e];
+    if (touched[t[0]] || touched[t[1]] || touched[t[2]] || touched[t[3]]) continue;
     const double q = quality(mesh, e);
-    if (touched[t[0]] || touched[t[1]] || touched[t[2]] || touched[t[3]] || q >= std::max(below, ears_below)) continue;
+    if (q >= std::max(below, ears_below)) continue;
     std::array<int, 4> boundary_face{-1, -1, -1, -1}; // per local face k (opposite vertex k)
     int on_boundary = 0;
     for (int k = 0; k < 4; ++k) {
