@@ -67,7 +67,7 @@ int peel_once(TetMesh& mesh, double below, double ears_below) {
     std::array<int, 4> boundary_face{-1, -1, -1, -1}; // per local face k (opposite vertex k)
     int on_boundary = 0;
     for (int k = 0; k < 4; ++k) {
-      const auto found = face_of.find(sorted({t[kFaceVertices[k][0]], t[kFaceVertices[k][1]], t[kFaceVertices[k][2]]}));
+      const auto found = face_of.find(sorted(tet_face(t, k)));
       if (found != face_of.end()) boundary_face[k] = found->second, ++on_boundary;
     }
     int apex = -1; // with three boundary faces: the node they share, opposite the inner face
@@ -76,9 +76,8 @@ int peel_once(TetMesh& mesh, double below, double ears_below) {
       while (boundary_face[apex] >= 0)
         ++apex;
       if (uses[t[apex]] != 1) continue;
-      // An ear above `below` goes only where it covers a poorer tet.
-      const Triangle inner{t[kFaceVertices[apex][0]], t[kFaceVertices[apex][1]], t[kFaceVertices[apex][2]]};
-      if (q >= below && (q >= ears_below || !covers_poorer(e, inner))) continue;
+      // An ear above `below` (and so below `ears_below`) goes only where it covers a poorer tet.
+      if (q >= below && !covers_poorer(e, tet_face(t, apex))) continue;
     } else if (q >= below) {
       continue;
     } else if (on_boundary == 2) {
@@ -99,7 +98,7 @@ int peel_once(TetMesh& mesh, double below, double ears_below) {
     bool all_fit = true;
     for (int k = 0; k < 4 && all_fit; ++k) {
       if (boundary_face[k] >= 0) continue;
-      const Triangle inner{t[kFaceVertices[k][0]], t[kFaceVertices[k][1]], t[kFaceVertices[k][2]]};
+      const Triangle inner = tet_face(t, k);
       const Point out = -area_vector(mesh, inner);
       int tag = 0;
       double best = -std::numeric_limits<double>::infinity();

@@ -150,7 +150,7 @@ void remove_with_tags(TetMesh& mesh, const std::vector<char>& remove) {
     const Tet& t = mesh.tets[e];
     std::array<Triangle, 4> faces;
     for (int k = 0; k < 4; ++k)
-      faces[k] = {t[kFaceVertices[k][0]], t[kFaceVertices[k][1]], t[kFaceVertices[k][2]]};
+      faces[k] = tet_face(t, k);
     for (const Triangle& face : faces) {
       if (boundary_face(face) >= 0) continue; // goes with the tet
       // Uncovered (unless another removed tet is behind it: build_boundary

@@ -20,7 +20,7 @@ constexpr int kPasses = 4;
 /// The face of `t` opposite its vertex `v`, its normal pointing out of `t`.
 mesh::Triangle face_opposite(const mesh::Tet& t, int v) {
   const int k = static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
-  return {t[mesh::kFaceVertices[k][0]], t[mesh::kFaceVertices[k][1]], t[mesh::kFaceVertices[k][2]]};
+  return mesh::tet_face(t, k);
 }
 
 /// One mending, not yet made: elements replaced by others, surface

@@ -34,6 +34,11 @@ struct TetMesh {
 /// ordered with its normal pointing out; face k is opposite vertex k.
 inline constexpr int kFaceVertices[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
+/// Face k of `t` (opposite its vertex k), its normal pointing out of `t`.
+inline Triangle tet_face(const Tet& t, int k) {
+  return {t[kFaceVertices[k][0]], t[kFaceVertices[k][1]], t[kFaceVertices[k][2]]};
+}
+
 /// A face's vertices in increasing order: the same key for any order or
 /// orientation of its vertices.
 inline Triangle sorted(Triangle f) {
