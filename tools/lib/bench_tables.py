@@ -19,7 +19,7 @@ from collections import OrderedDict
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import doc_figures  # noqa: E402
 
-LINE = re.compile(r"(?:(?P<label>[^:]+):\s+)?(?P<problem>\w+)\s+nodes\s+(?P<nodes>\d+)\s+"
+LINE = re.compile(r"(?:(?P<label>.+?):\s+)?(?P<problem>\w+)\s+nodes\s+(?P<nodes>\d+)\s+"
                   r"unknowns\s+(?P<unknowns>\d+)\s+(?P<solver>\w+)\s+newton.*?"
                   r"per solve: assembly\s+(?P<assembly>[\d.]+) s\s+setup\s+(?P<setup>[\d.]+) s"
                   r"\s+solve\s+(?P<solve>[\d.]+) s\s+total\s+(?P<total>[\d.]+) s\s+krylov\s+(?P<krylov>[\d.]+).*?"
