@@ -144,11 +144,43 @@ adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<co
   for (int k = 0; k < 3; ++k)
     cells[k] = std::max(1, static_cast<int>(std::ceil((high[k] - low[k]) / smallest)));
   const mesh::Point spacing = (high - low).cwiseQuotient(mesh::Point(cells[0], cells[1], cells[2]));
-  std::vector<double> sample(std::size_t(cells[0] + 1) * (cells[1] + 1) * (cells[2] + 1));
+  // The grid cell that holds x along axis k (the field's own rule, below).
+  auto cell_along = [low, spacing, cells](double x, int k) {
+    const double u = std::clamp((x - low[k]) / spacing[k], 0.0, double(cells[k]));
+    return std::pair{std::min(static_cast<int>(u), cells[k] - 1), u};
+  };
+  auto sample_index = [cells](int i, int j, int k) {
+    return (std::size_t(k) * (cells[1] + 1) + j) * (cells[0] + 1) + i;
+  };
+  // The field is asked inside the body only, so only the corners of the grid
+  // cells within one cell of an element are ever read. The others lie
+  // outside, many far from the body, where locating a sample takes a box
+  // query as wide as its distance to the mesh (VTK's is quadratic in the
+  // elements the box holds): they keep the coarse size, unread.
+  std::vector<char> needed(std::size_t(cells[0] + 1) * (cells[1] + 1) * (cells[2] + 1), 0);
+  for (const mesh::Tet& t : old.tets) {
+    std::array<int, 3> first{}, last{};
+    for (int k = 0; k < 3; ++k) {
+      double lowest = old.nodes[t[0]][k], highest = lowest;
+      for (int v : t)
+        lowest = std::min(lowest, old.nodes[v][k]), highest = std::max(highest, old.nodes[v][k]);
+      first[k] = std::max(cell_along(lowest, k).first - 1, 0);
+      last[k] = std::min(cell_along(highest, k).first + 2, cells[k]); // the far corner of the cell beyond
+    }
+    for (int k = first[2]; k <= last[2]; ++k)
+      for (int j = first[1]; j <= last[1]; ++j)
+        for (int i = first[0]; i <= last[0]; ++i)
+          needed[sample_index(i, j, k)] = 1;
+  }
+  std::vector<double> sample(needed.size(), coarse);
   std::size_t next = 0;
   for (int k = 0; k <= cells[2]; ++k)
     for (int j = 0; j <= cells[1]; ++j)
       for (int i = 0; i <= cells[0]; ++i) {
+        if (!needed[next]) {
+          ++next;
+          continue;
+        }
         const mesh::Point x = low + mesh::Point(i, j, k).cwiseProduct(spacing);
         const Location at = in_old.locate(x);
         double h = 0.0;
@@ -158,19 +190,19 @@ adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<co
           h = std::min(h, box_size + (kGradation - 1.0) * user_box.exteriorDistance(x));
         sample[next++] = h;
       }
-  return [low, spacing, cells, sample = std::move(sample)](const mesh::Point& x, double scale) {
+  return [cell_along, sample_index, sample = std::move(sample)](const mesh::Point& x, double scale) {
     std::array<int, 3> cell{};
     std::array<double, 3> t{};
     for (int k = 0; k < 3; ++k) {
-      const double u = std::clamp((x[k] - low[k]) / spacing[k], 0.0, double(cells[k]));
-      cell[k] = std::min(static_cast<int>(u), cells[k] - 1);
-      t[k] = u - cell[k];
+      const auto [c, u] = cell_along(x[k], k);
+      cell[k] = c;
+      t[k] = u - c;
     }
     double h = 0.0;
     for (int c = 0; c < 8; ++c) {
       const int di = c & 1, dj = (c >> 1) & 1, dk = (c >> 2) & 1;
       const double w = (di ? t[0] : 1.0 - t[0]) * (dj ? t[1] : 1.0 - t[1]) * (dk ? t[2] : 1.0 - t[2]);
-      h += w * sample[(std::size_t(cell[2] + dk) * (cells[1] + 1) + (cell[1] + dj)) * (cells[0] + 1) + cell[0] + di];
+      h += w * sample[sample_index(cell[0] + di, cell[1] + dj, cell[2] + dk)];
     }
     return scale * h;
   };

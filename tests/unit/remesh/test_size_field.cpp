@@ -3,6 +3,7 @@
 #include "test_common.h"
 
 #include "anvil/core/Timers.h"
+#include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/size_field.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Scene.h"
@@ -100,4 +101,27 @@ TEST_CASE("A size box asks for its size inside and grades by 1.5 around it, and 
   CHECK(size({5, 5, 9.5}, 1.0) == Approx(1.35).epsilon(1e-9)); // 1.5 mm above it: 0.6 + 0.5 × 1.5
   CHECK(size({5, 5, 12}, 1.0) == Approx(2.0).epsilon(1e-9));   // where the box was: the coarse size
   CHECK(size({1, 1, 1}, 0.9) == Approx(0.45).epsilon(1e-9));   // a try's scale
+}
+
+TEST_CASE("The size field reads only samples it has located: a box over the whole body gives its size everywhere in it",
+          "[unit][remesh]") {
+  // The quarter cylinder of cases/upsetting.yaml (radius 10, height 15 mm)
+  // under one size box of 0.5 mm a millimetre wider all round. The grid
+  // locates only the samples near the body's elements; those it leaves (the
+  // corner beyond the radius, up to 4 mm from the surface) keep the coarse
+  // 2 mm. Every sample the field reads near the body is the box's 0.5 mm, so
+  // a node or centroid that read an unlocated sample would get more.
+  Timers timers;
+  scene::Case input = scene::read_case(source_path("cases/upsetting.yaml"), {"bodies[].mesh.element_size=2"});
+  input.remeshing.size_boxes = {{Eigen::AlignedBox3d(mesh::Point(-1, -1, -1), mesh::Point(11, 11, 16)), 0.5, -1}};
+  const scene::Scene scene(input, timers);
+  const scene::RunState state = scene::initial_state(scene);
+  const mesh::TetMesh& body = state.mesh;
+  const remesh::PointLocator in_body(body);
+  const auto size =
+      remesh::adaptive_size(body, in_body, std::vector<double>(body.tets.size(), 0.0), scene, state.dies, 2.0, 0.25);
+  for (const mesh::Point& x : body.nodes)
+    CHECK(size(x, 1.0) == Approx(0.5).epsilon(1e-12));
+  for (int e = 0; e < body.tet_count(); ++e)
+    CHECK(size(mesh::centroid(body, e), 1.0) == Approx(0.5).epsilon(1e-12));
 }
