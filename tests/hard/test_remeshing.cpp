@@ -174,7 +174,7 @@ TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshe
 TEST_CASE("Closed-die forging with the adaptive size field reaches closure, remeshes keep volume and strain integral",
           "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash_adaptive",
-                                       {"remeshing.size=adaptive", "remeshing.check_load=false"}); // 8 min
+                                       {"remeshing.size=adaptive", "remeshing.check_load=false"}); // 7 min
   check_remeshes_keep_volume_and_strain(run);
   // The 0.3 % aimed at for the volume over the run and for what lies inside
   // the dies at closure: measured mesh +0.14 %, material -0.03 %, inside
