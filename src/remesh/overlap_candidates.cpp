@@ -1,5 +1,7 @@
 #include "anvil/remesh/overlap_candidates.h"
 
+#include "anvil/mesh/tet_geometry.h"
+
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/box_intersection_d.h>
@@ -16,10 +18,8 @@ std::vector<Box> tet_boxes(const mesh::TetMesh& m) {
   std::vector<Box> boxes;
   boxes.reserve(m.tets.size());
   for (int e = 0; e < m.tet_count(); ++e) {
-    mesh::Point low = m.nodes[m.tets[e][0]], high = low;
-    for (int k = 1; k < 4; ++k)
-      low = low.cwiseMin(m.nodes[m.tets[e][k]]), high = high.cwiseMax(m.nodes[m.tets[e][k]]);
-    boxes.emplace_back(CGAL::Bbox_3(low.x(), low.y(), low.z(), high.x(), high.y(), high.z()), e);
+    const Eigen::AlignedBox3d b = mesh::bounding_box(m, e);
+    boxes.emplace_back(CGAL::Bbox_3(b.min().x(), b.min().y(), b.min().z(), b.max().x(), b.max().y(), b.max().z()), e);
   }
   return boxes;
 }

@@ -158,14 +158,12 @@ adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<co
   // query as wide as its distance to the mesh (VTK's is quadratic in the
   // elements the box holds): they keep the coarse size, unread.
   std::vector<char> needed(std::size_t(cells[0] + 1) * (cells[1] + 1) * (cells[2] + 1), 0);
-  for (const mesh::Tet& t : old.tets) {
+  for (int e = 0; e < old.tet_count(); ++e) {
+    const Eigen::AlignedBox3d b = mesh::bounding_box(old, e);
     std::array<int, 3> first{}, last{};
     for (int k = 0; k < 3; ++k) {
-      double lowest = old.nodes[t[0]][k], highest = lowest;
-      for (int v : t)
-        lowest = std::min(lowest, old.nodes[v][k]), highest = std::max(highest, old.nodes[v][k]);
-      first[k] = std::max(cell_along(lowest, k).first - 1, 0);
-      last[k] = std::min(cell_along(highest, k).first + 2, cells[k]); // the far corner of the cell beyond
+      first[k] = std::max(cell_along(b.min()[k], k).first - 1, 0);
+      last[k] = std::min(cell_along(b.max()[k], k).first + 2, cells[k]); // the far corner of the cell beyond
     }
     for (int k = first[2]; k <= last[2]; ++k)
       for (int j = first[1]; j <= last[1]; ++j)
@@ -173,14 +171,10 @@ adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<co
           needed[sample_index(i, j, k)] = 1;
   }
   std::vector<double> sample(needed.size(), coarse);
-  std::size_t next = 0;
   for (int k = 0; k <= cells[2]; ++k)
     for (int j = 0; j <= cells[1]; ++j)
       for (int i = 0; i <= cells[0]; ++i) {
-        if (!needed[next]) {
-          ++next;
-          continue;
-        }
+        if (!needed[sample_index(i, j, k)]) continue;
         const mesh::Point x = low + mesh::Point(i, j, k).cwiseProduct(spacing);
         const Location at = in_old.locate(x);
         double h = 0.0;
@@ -188,7 +182,7 @@ adaptive_size(const mesh::TetMesh& old, const PointLocator& in_old, std::span<co
           h += at.weights[a] * size[old.tets[at.tet][a]];
         for (const auto& [user_box, box_size] : boxes)
           h = std::min(h, box_size + (kGradation - 1.0) * user_box.exteriorDistance(x));
-        sample[next++] = h;
+        sample[sample_index(i, j, k)] = h;
       }
   return [cell_along, sample_index, sample = std::move(sample)](const mesh::Point& x, double scale) {
     std::array<int, 3> cell{};

@@ -3,6 +3,7 @@
 #include "anvil/mesh/TetMesh.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace anvil::mesh {
 
@@ -17,6 +18,14 @@ inline double signed_volume(const TetMesh& mesh, int tet) {
 inline Point centroid(const TetMesh& mesh, int tet) {
   const Tet& t = mesh.tets[tet];
   return 0.25 * (mesh.nodes[t[0]] + mesh.nodes[t[1]] + mesh.nodes[t[2]] + mesh.nodes[t[3]]);
+}
+
+/// The smallest axis-aligned box holding the tet.
+inline Eigen::AlignedBox3d bounding_box(const TetMesh& mesh, int tet) {
+  Eigen::AlignedBox3d out(mesh.nodes[mesh.tets[tet][0]]);
+  for (int k = 1; k < 4; ++k)
+    out.extend(mesh.nodes[mesh.tets[tet][k]]);
+  return out;
 }
 
 /// Volume-edge ratio 6√2 V / l_rms³: 1 for the regular tet, → 0 when flat,
