@@ -63,10 +63,10 @@ constexpr double kLevelRetryScale = 0.95;
 /// After the size field's levels, cells below this quality are rebuilt.
 constexpr double kPoorAfterLevels = 0.25;
 
-/// Flat tets that neither the peel nor CGAL can take, below this share of
-/// settings.quality_floor, are mended (surface_mending.h, flat_tet_mending.h):
-/// a third, where the remesher refuses a result (remesh/Remesher.cpp).
-constexpr double kMendShare = 1.0 / 3.0;
+/// Flat tets on the surface below this share of settings.quality_floor are
+/// taken off the new mesh (mesh/boundary_slivers.h): a third, where the
+/// remesher refuses a result (remesh/Remesher.cpp).
+constexpr double kPeelShare = 1.0 / 3.0;
 
 /// Face key as build_triangulation looks it up: the smallest index first, the rest in order.
 std::array<int, 3> facet_key(const mesh::Triangle& f) {
@@ -216,20 +216,16 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
   mesh::build_boundary(out, tagged, tags);
   settle_on_old_surface(out, body, patch, tag_of_patch, std::vector<char>(out.nodes.size(), 1), mesh::volume(body),
                         settings.quality_floor);
-  // Tets on creases of the surface below the trigger are taken off: CGAL
-  // holds their four nodes on patch borders, so no retry at another length
-  // lifts them (the connecting rod: the same tet, 0.142 down to 0.084, in
-  // every try of six whole remeshes running), and a result below the
-  // trigger is due again at once.
   const double volume = mesh::volume(out);
-  if (const int peeled = mesh::peel_boundary_slivers(out, settings.quality_floor, settings.quality_floor); peeled > 0)
-    log::info("    remeshing: %d tets below the trigger on creases of the surface taken off (volume %+.2e %%)", peeled,
+  if (const int peeled = mesh::peel_boundary_slivers(out, kPeelShare * settings.quality_floor, settings.quality_floor);
+      peeled > 0)
+    log::info("    remeshing: %d flat tets on creases of the surface taken off (volume %+.2e %%)", peeled,
               100.0 * (mesh::volume(out) / volume - 1.0));
   // A flat tet the peel cannot take (all six edges on the surface: three of
   // its nodes nearly in a line on a patch border CGAL keeps, as on the hot
   // connecting rod's symmetry plane) is mended on the surface instead, by a
   // flip or a collapse of a surface edge.
-  if (const SurfaceMending mended = mend_surface(out, {}, kMendShare * settings.quality_floor, kFlatSurface);
+  if (const SurfaceMending mended = mend_surface(out, {}, kPeelShare * settings.quality_floor, kFlatSurface);
       mended.flips + mended.collapses > 0)
     log::info("    remeshing: flat tets on the surface mended (%d edges flipped, %d collapsed; quality %.3g -> %.3g)",
               mended.flips, mended.collapses, mended.worst_before, mended.worst_after);
@@ -429,7 +425,7 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
   // CGAL leaves flat tets of four border nodes, which it may not move,
   // where the border is planar (near closure on the adaptive hot connecting
   // rod, in most levels).
-  if (const int mended = mesh::mend_flat_tets(out.mesh, out.kept_tets, kMendShare * settings.quality_floor);
+  if (const int mended = mesh::mend_flat_tets(out.mesh, out.kept_tets, kPeelShare * settings.quality_floor);
       mended > 0) {
     out.old_node.resize(out.mesh.nodes.size(), -1);
     log::detail("    remeshing: %d flat tets taken out of a rebuilt region", mended);
