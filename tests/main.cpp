@@ -19,6 +19,10 @@ int main(int argc, char** argv) {
   anvil::solver::PetscSession petsc(petsc_argc, petsc_argv);
   Catch::Session session;
   if (const int wrong = session.applyCommandLine(argc, argv); wrong != 0) return wrong;
+  // A listing runs no test (and its reader may stop reading it: ctest's
+  // check that a program lists its tests, grep -q).
+  const Catch::Config& asked = session.config();
+  if (asked.listTests() || asked.listTestNamesOnly() || asked.listTags() || asked.listReporters()) return session.run();
   // The tests write their runs under a folder of this program's own, given
   // to them as TMPDIR (std::filesystem::temp_directory_path, and the anvil
   // processes a test starts): with fixed names under /tmp, two test programs
@@ -37,12 +41,9 @@ int main(int argc, char** argv) {
   anvil::processes::broadcast(scratch);
   if (scratch.empty()) return 1;
   setenv("TMPDIR", scratch.c_str(), 1);
-  // A listing returns how many it listed, no failure.
-  const Catch::Config& asked = session.config();
-  const bool listing = asked.listTests() || asked.listTestNamesOnly() || asked.listTags() || asked.listReporters();
   const int failed = session.run();
   // Taken together, after every process's tests: none is still writing there.
-  const bool all_passed = anvil::processes::maximum(listing ? 0 : failed) == 0;
+  const bool all_passed = anvil::processes::maximum(failed) == 0;
   if (anvil::processes::root()) {
     std::error_code ignored;
     if (all_passed || std::filesystem::is_empty(scratch, ignored))
