@@ -9,7 +9,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 using namespace anvil;
 
@@ -25,9 +24,9 @@ boundary:
   - {name: top, type: sticking_plate, tag: 6, velocity: [0, 0, -1]}
 )";
 
-/// A folder of this process's own: ctest runs test cases side by side.
+/// The case files' folder, inside the test program's own (tests/main.cpp).
 std::filesystem::path scratch() {
-  return std::filesystem::temp_directory_path() / ("anvil_case_tests_" + std::to_string(getpid()));
+  return std::filesystem::temp_directory_path() / "anvil_case_tests";
 }
 
 std::string write_case(const std::string& name, std::string text) {
