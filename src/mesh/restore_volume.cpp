@@ -1,5 +1,7 @@
 #include "anvil/mesh/restore_volume.h"
 
+#include "anvil/mesh/tet_geometry.h"
+
 namespace anvil::mesh {
 
 double restore_volume(TetMesh& mesh, double target, const std::vector<char>& movable) {
@@ -10,16 +12,47 @@ double restore_volume(TetMesh& mesh, double target, const std::vector<char>& mov
     for (int v : face)
       normal[v] += third;
   }
-  double area = 0.0;
-  for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
-    if (movable[v]) area += normal[v].norm();
-  if (area <= 0.0) return 0.0;
+  // A tet the move would invert keeps its nodes where they are and the
+  // others move further: a flat tet on the surface, its nodes' normals
+  // apart across a crease (CGAL leaves some at quality 1e-3), turns inside
+  // out under a move of a hundredth of its edge, and the remesher refuses
+  // the mesh (on a trial path of the connecting rod, every try of a whole
+  // remesh was refused for such a tet, and the run stalled).
+  std::vector<char> moves = movable;
+  std::vector<int> moving_tets;
+  for (int e = 0; e < mesh.tet_count(); ++e)
+    for (int v : mesh.tets[e])
+      if (moves[v]) {
+        moving_tets.push_back(e);
+        break;
+      }
+  std::vector<Point> before;
   double distance = 0.0;
   for (int pass = 0; pass < 2; ++pass) { // the second pass removes the second-order rest
-    const double shift = (target - volume(mesh)) / area;
-    for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
-      if (movable[v]) mesh.nodes[v] += shift * normal[v].normalized();
-    distance += shift;
+    for (;;) {
+      double area = 0.0;
+      for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
+        if (moves[v]) area += normal[v].norm();
+      if (area <= 0.0) return distance;
+      const double shift = (target - volume(mesh)) / area;
+      before = mesh.nodes;
+      for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
+        if (moves[v]) mesh.nodes[v] += shift * normal[v].normalized();
+      bool inverted = false;
+      for (int e : moving_tets) {
+        const Tet& t = mesh.tets[e];
+        if (signed_volume(mesh, e) > 0.0 ||
+            signed_volume(before[t[0]], before[t[1]], before[t[2]], before[t[3]]) <= 0.0)
+          continue;
+        for (int v : t)
+          if (moves[v]) moves[v] = 0, inverted = true;
+      }
+      if (!inverted) {
+        distance += shift;
+        break;
+      }
+      mesh.nodes = before; // again without the nodes just held (each round holds at least one)
+    }
   }
   return distance;
 }
