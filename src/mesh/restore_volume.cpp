@@ -19,6 +19,9 @@ double restore_volume(TetMesh& mesh, double target, const std::vector<char>& mov
   // the mesh (on a trial path of the connecting rod, every try of a whole
   // remesh was refused for such a tet, and the run stalled).
   std::vector<char> moves = movable;
+  std::vector<Point> unit(normal.size());
+  for (std::size_t v = 0; v < normal.size(); ++v)
+    unit[v] = normal[v].normalized();
   std::vector<int> moving_tets;
   for (int e = 0; e < mesh.tet_count(); ++e)
     for (int v : mesh.tets[e])
@@ -26,7 +29,6 @@ double restore_volume(TetMesh& mesh, double target, const std::vector<char>& mov
         moving_tets.push_back(e);
         break;
       }
-  std::vector<Point> before;
   double distance = 0.0;
   for (int pass = 0; pass < 2; ++pass) { // the second pass removes the second-order rest
     for (;;) {
@@ -35,23 +37,24 @@ double restore_volume(TetMesh& mesh, double target, const std::vector<char>& mov
         if (moves[v]) area += normal[v].norm();
       if (area <= 0.0) return distance;
       const double shift = (target - volume(mesh)) / area;
-      before = mesh.nodes;
-      for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
-        if (moves[v]) mesh.nodes[v] += shift * normal[v].normalized();
-      bool inverted = false;
+      auto moved = [&](int v) -> Point { return moves[v] ? Point(mesh.nodes[v] + shift * unit[v]) : mesh.nodes[v]; };
+      std::vector<int> held; // judged on this round's move, then held together
       for (int e : moving_tets) {
         const Tet& t = mesh.tets[e];
-        if (signed_volume(mesh, e) > 0.0 ||
-            signed_volume(before[t[0]], before[t[1]], before[t[2]], before[t[3]]) <= 0.0)
+        if (signed_volume(mesh, e) <= 0.0 || signed_volume(moved(t[0]), moved(t[1]), moved(t[2]), moved(t[3])) > 0.0)
           continue;
         for (int v : t)
-          if (moves[v]) moves[v] = 0, inverted = true;
+          if (moves[v]) held.push_back(v);
       }
-      if (!inverted) {
-        distance += shift;
-        break;
+      if (!held.empty()) { // again without them (each round holds at least one node)
+        for (int v : held)
+          moves[v] = 0;
+        continue;
       }
-      mesh.nodes = before; // again without the nodes just held (each round holds at least one)
+      for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
+        if (moves[v]) mesh.nodes[v] += shift * unit[v];
+      distance += shift;
+      break;
     }
   }
   return distance;
