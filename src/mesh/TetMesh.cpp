@@ -108,6 +108,16 @@ double boundary_area(const TetMesh& mesh) {
   return a;
 }
 
+std::vector<Point> node_area_vectors(const TetMesh& mesh) {
+  std::vector<Point> share(mesh.nodes.size(), Point::Zero());
+  for (const Triangle& f : mesh.boundary_faces) {
+    const Point third = area_vector(mesh, f) / 3.0;
+    for (int v : f)
+      share[v] += third;
+  }
+  return share;
+}
+
 std::vector<InnerFace> inner_faces(const TetMesh& mesh) {
   std::vector<std::pair<Triangle, int>> faces; // (sorted face, tet)
   faces.reserve(4 * mesh.tets.size());

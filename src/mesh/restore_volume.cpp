@@ -5,13 +5,7 @@
 namespace anvil::mesh {
 
 double restore_volume(TetMesh& mesh, double target, const std::vector<char>& movable) {
-  std::vector<Point> normal(mesh.nodes.size(),
-                            Point::Zero()); // Σ face area vectors / 3: the node's share of the surface
-  for (const Triangle& face : mesh.boundary_faces) {
-    const Point third = area_vector(mesh, face) / 3.0;
-    for (int v : face)
-      normal[v] += third;
-  }
+  const std::vector<Point> normal = node_area_vectors(mesh);
   // A tet the move would invert keeps its nodes where they are and the
   // others move further: a flat tet on the surface, its nodes' normals
   // apart across a crease (CGAL leaves some at quality 1e-3), turns inside
@@ -31,12 +25,13 @@ double restore_volume(TetMesh& mesh, double target, const std::vector<char>& mov
       }
   double distance = 0.0;
   for (int pass = 0; pass < 2; ++pass) { // the second pass removes the second-order rest
+    const double missing = target - volume(mesh);
     for (;;) {
       double area = 0.0;
       for (std::size_t v = 0; v < mesh.nodes.size(); ++v)
         if (moves[v]) area += normal[v].norm();
       if (area <= 0.0) return distance;
-      const double shift = (target - volume(mesh)) / area;
+      const double shift = missing / area;
       auto moved = [&](int v) -> Point { return moves[v] ? Point(mesh.nodes[v] + shift * unit[v]) : mesh.nodes[v]; };
       std::vector<int> held; // judged on this round's move, then held together
       for (int e : moving_tets) {

@@ -70,6 +70,9 @@ void validate(const TetMesh& mesh, const std::string& source);
 double volume(const TetMesh& mesh);
 /// Sum of the boundary faces' areas (mm²).
 double boundary_area(const TetMesh& mesh);
+/// Each node's share of the surface (mm²): a third of the area vectors of
+/// its boundary faces, summed, pointing out; zero off the surface.
+std::vector<Point> node_area_vectors(const TetMesh& mesh);
 
 /// 1 for each node on a boundary face of `mesh`, else 0.
 std::vector<char> boundary_node_flags(const TetMesh& mesh);

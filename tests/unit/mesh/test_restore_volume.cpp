@@ -68,11 +68,8 @@ TEST_CASE("A flat tet on the surface that the move would invert keeps its nodes,
   // Moved as one, every node by the same shift, the cap inverts.
   mesh::TetMesh uniform = body;
   {
-    std::vector<mesh::Point> normal(uniform.nodes.size(), mesh::Point::Zero());
+    const std::vector<mesh::Point> normal = mesh::node_area_vectors(uniform);
     double area = 0.0;
-    for (const mesh::Triangle& f : uniform.boundary_faces)
-      for (int v : f)
-        normal[v] += mesh::area_vector(uniform, f) / 3.0;
     for (std::size_t v = 0; v < normal.size(); ++v)
       if (top_nodes[v]) area += normal[v].norm();
     const double shift = (target - mesh::volume(uniform)) / area;
