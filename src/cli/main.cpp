@@ -295,10 +295,18 @@ int main(int argc, char** argv) {
     }
   }
 
-  // Every core by default: a run not started by mpirun starts itself under it.
+  // The case is read before mpirun or PETSc starts (about half a second on
+  // one process): an input error is said at once, and once.
+  std::optional<anvil::scene::Chain> chain_read;
   if (!anvil::processes::under_launcher()) {
     const int processes = processes_wanted(processes_option);
     if (processes == 0) return 2;
+    try {
+      chain_read = anvil::scene::read_chain(case_file, overrides);
+    } catch (const std::exception& e) {
+      return report(e, true);
+    }
+    // Every core by default: a run not started by mpirun starts itself under it.
     if (processes > 1) {
       if (anvil::subprocess::on_path("mpirun")) return run_on_processes(processes, argc, argv);
       std::fprintf(stderr, "anvil: mpirun is not installed: the run uses one process (of the %d asked for)\n",
@@ -323,7 +331,8 @@ int main(int argc, char** argv) {
   bool picture_mirror = false;
   try {
     // Every process reads the case and runs the same time loop (docs/design.md §2).
-    const anvil::scene::Chain chain = anvil::scene::read_chain(case_file, overrides);
+    const anvil::scene::Chain chain =
+        chain_read ? std::move(*chain_read) : anvil::scene::read_chain(case_file, overrides);
     const anvil::scene::Case& c = chain.operations.front().input;
     const anvil::run::RunEnd end =
         chain.is_chain() ? anvil::run::run_chain(chain, options) : anvil::run::run(c, options);

@@ -330,10 +330,7 @@ void add_body_wear(const Scene& scene, const Discretisation& disc, const Eigen::
     return;
   const mesh::TetMesh& mesh = state.mesh;
   const contact::BodyContact& pairs = *disc.pair_contact;
-  std::vector<char> on_boundary(mesh.nodes.size(), 0);
-  for (const mesh::Triangle& f : mesh.boundary_faces)
-    for (int node : f)
-      on_boundary[node] = 1;
+  const std::vector<char> on_boundary = mesh::boundary_node_flags(mesh);
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const std::optional<contact::WearLaw>& law = scene.bodies[b].wear;
     if (!law) continue;
