@@ -1,6 +1,7 @@
 #include "anvil/solver/PetscSession.h"
 
 #include "anvil/core/error.h"
+#include "anvil/core/processes.h"
 #include "petsc_check.h"
 
 #include <petscsys.h>
@@ -75,6 +76,11 @@ void one_blas_thread() {
 } // namespace
 
 PetscSession::PetscSession(int& argc, char**& argv) {
+  // A process started without a launcher is an MPI singleton, for which
+  // Open MPI starts a daemon in case it spawns processes; Anvil never does,
+  // and the daemon costs each start about 0.2 s (a test program: 0.68 s
+  // against 0.45 s). A value the user set is kept.
+  if (!processes::under_launcher()) setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
   if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) throw RunError("PETSc (MPI) could not be initialised");
   g_active = true;
   PetscPushErrorHandler(keep_message, nullptr);
