@@ -285,33 +285,27 @@ int main(int argc, char** argv) {
     }
   }
   if (case_file.empty()) return usage_error("'" + command + "' needs a case file");
-  if (command == "output-dir") {
-    try {
-      const anvil::scene::Chain chain = anvil::scene::read_chain(case_file, overrides);
-      std::puts(anvil::run::output_directory(chain.operations.front().input, options).c_str());
-      return 0;
-    } catch (const std::exception& e) {
-      return report(e, true);
-    }
-  }
-
-  // The case is read before mpirun or PETSc starts (about half a second on
-  // one process): an input error is said at once, and once.
+  // Outside a launcher the case is read before mpirun or PETSc starts (about
+  // half a second on one process): an input error is said at once, and once.
+  const bool launched = anvil::processes::under_launcher();
+  const int processes = command == "run" && !launched ? processes_wanted(processes_option) : 1;
+  if (processes == 0) return 2;
   std::optional<anvil::scene::Chain> chain_read;
-  if (!anvil::processes::under_launcher()) {
-    const int processes = processes_wanted(processes_option);
-    if (processes == 0) return 2;
+  if (!launched || command == "output-dir") {
     try {
       chain_read = anvil::scene::read_chain(case_file, overrides);
     } catch (const std::exception& e) {
       return report(e, true);
     }
-    // Every core by default: a run not started by mpirun starts itself under it.
-    if (processes > 1) {
-      if (anvil::subprocess::on_path("mpirun")) return run_on_processes(processes, argc, argv);
-      std::fprintf(stderr, "anvil: mpirun is not installed: the run uses one process (of the %d asked for)\n",
-                   processes);
-    }
+  }
+  if (command == "output-dir") {
+    std::puts(anvil::run::output_directory(chain_read->operations.front().input, options).c_str());
+    return 0;
+  }
+  // Every core by default: a run not started by mpirun starts itself under it.
+  if (processes > 1) {
+    if (anvil::subprocess::on_path("mpirun")) return run_on_processes(processes, argc, argv);
+    std::fprintf(stderr, "anvil: mpirun is not installed: the run uses one process (of the %d asked for)\n", processes);
   }
 
   int petsc_argc = static_cast<int>(petsc_arguments.size());
