@@ -382,14 +382,12 @@ void KrylovSolver::set_up(const SaddlePointData& data) {
 }
 
 KrylovOutcome KrylovSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance,
-                                  int max_iterations, bool from_x) {
+                                  int max_iterations) {
   Impl& s = *impl_;
   check(KSPSetTolerances(s.ksp, s.user_tolerance.value_or(relative_tolerance), PETSC_DEFAULT, PETSC_DEFAULT,
                          std::min<PetscInt>(max_iterations, s.max_iterations)),
         "setting the Krylov tolerance");
-  // PETSc's default test stays relative to |b| from a start of x's.
-  check(KSPSetInitialGuessNonzero(s.ksp, from_x ? PETSC_TRUE : PETSC_FALSE), "setting the Krylov start");
-  if (!from_x) x.setZero(b.size());
+  x.setZero(b.size());
   check(KSPSolve(s.ksp, s.rhs.in(b), s.solution.in(x)), "solving the linear system");
   s.solution.out(x);
   KrylovOutcome out;

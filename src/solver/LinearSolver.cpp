@@ -134,6 +134,12 @@ double decades(const KrylovOutcome& k) {
   return decades(k.reduction);
 }
 
+/// Iterations per decade of residual reduction: comparable between solves
+/// to different tolerances.
+double rate(const KrylovOutcome& k) {
+  return k.iterations / decades(k);
+}
+
 /// A 52-bit hash (FNV-1a, exact in a double) of `a`'s pattern.
 double pattern_hash(const fem::SparseMatrix& a) {
   std::uint64_t h = 14695981039346656037ull;
@@ -303,22 +309,16 @@ bool LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x, double 
                                : std::numeric_limits<int>::max();
     KrylovOutcome k = b.krylov->solve(rhs, x, relative_tolerance, budget);
     iterations_ = k.iterations;
-    double start = 1.0;            // the residual (of |b|) the solve on this set-up started from
     if (!k.converged && reused_) { // a kept preconditioner may have gone stale: set it up again first
       log::detail("    linear solver: the kept preconditioner stopped after %d iterations (%s); set up again",
                   k.iterations, k.reason.c_str());
       set_krylov_operator(*matrix_, *data_, false);
-      // The new set-up goes on from where the stale one stopped (FGMRES's
-      // residual never rises): in the connecting rod's flash the stopped
-      // solves had come a long way, a fifth of its Krylov iterations.
-      const bool go_on = k.reason == "DIVERGED_ITS" && k.reduction < 1.0;
-      if (go_on) start = k.reduction;
-      k = b.krylov->solve(rhs, x, relative_tolerance, std::numeric_limits<int>::max(), go_on);
+      k = b.krylov->solve(rhs, x, relative_tolerance);
       iterations_ += k.iterations;
     }
     if (k.converged) {
       if (setup_rate_ == 0.0) {
-        setup_rate_ = std::max(k.iterations / decades(k.reduction / start), 1e-3);
+        setup_rate_ = std::max(rate(k), 1e-3);
         extra_iterations_ = 0.0;
       } else {
         extra_iterations_ += std::max(0.0, k.iterations - setup_rate_ * decades(k));

@@ -67,11 +67,11 @@ public:
   /// its preconditioner are made anew at the next set_operator; the matrix
   /// and its pattern are kept.
   void restart();
-  /// x = A⁻¹ b to `relative_tolerance` of |b|, from zero or, `from_x`, from
-  /// x's value; not converged after `max_iterations` or the solver's own
-  /// limit (500, or -ksp_max_it), whichever is fewer.
+  /// x = A⁻¹ b to `relative_tolerance` of |b| (x's start value is ignored),
+  /// not converged after `max_iterations` or the solver's own limit (500, or
+  /// -ksp_max_it), whichever is fewer.
   KrylovOutcome solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance,
-                      int max_iterations = std::numeric_limits<int>::max(), bool from_x = false);
+                      int max_iterations = std::numeric_limits<int>::max());
   /// Preconditioner set-ups so far.
   int setups() const { return setups_; }
 
