@@ -106,6 +106,7 @@ Eigen::Vector3d relative_velocity(const ContactPoint& p, const Eigen::VectorXd& 
 void BodyContact::search(const mesh::TetMesh& mesh, double search_distance) {
   nodes_.clear();
   points_.clear();
+  dual_ = FrictionDual{}; // set again when Newton starts
   const ContactBoundary boundary(mesh, symmetry_faces_);
   std::vector<FacetPoint> facet_points;
   for (std::size_t q = 0; q < pairs_.size(); ++q) {
@@ -287,8 +288,16 @@ const std::vector<double>& BodyContact::gaps(const Eigen::VectorXd& nodal) {
   return gap_;
 }
 
+const std::vector<Eigen::Vector3d>& BodyContact::slidings(const Eigen::VectorXd& nodal) {
+  sliding_.resize(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    sliding_[i] = sliding(points_[i], nodal);
+  return sliding_;
+}
+
 void BodyContact::start(const Eigen::VectorXd& nodal) {
   active_.start(gaps(nodal));
+  dual_.start(slidings(nodal), increment_.regularisation);
 }
 bool BodyContact::consistent(const Eigen::VectorXd& nodal) {
   return active_.consistent(gaps(nodal));
@@ -297,6 +306,7 @@ bool BodyContact::linear() const {
   return std::all_of(pairs_.begin(), pairs_.end(), [](const BodyPair& p) { return is_linear(p.friction); });
 }
 std::string BodyContact::accept(const Eigen::VectorXd& nodal) {
+  dual_.accept(slidings(nodal));
   return active_.accept(gaps(nodal), "pair constraints");
 }
 
@@ -313,7 +323,8 @@ Eigen::Vector3d BodyContact::sliding(const ContactPoint& p, const Eigen::VectorX
   return sense * (Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose()) * relative_velocity(p, nodal);
 }
 
-bool BodyContact::point_friction(const ContactPoint& p, const Eigen::VectorXd& nodal, FrictionStress& f) const {
+bool BodyContact::point_friction(int i, const Eigen::VectorXd& nodal, FrictionStress& f) const {
+  const ContactPoint& p = points_[i];
   const FrictionLaw& law = pairs_[p.pair].friction;
   if (law.kind == FrictionKind::frictionless || law.kind == FrictionKind::sticking) return false;
   double sigma_n = 0.0;
@@ -324,9 +335,11 @@ bool BodyContact::point_friction(const ContactPoint& p, const Eigen::VectorXd& n
       sigma_n += w.weight * stress_[w.multiplier];
     }
   if (!touching) return false;
-  f = friction_stress(law, {sliding(p, nodal), sigma_n, weaker_side(increment_.flow_stress, p),
-                            weaker_side(increment_.consistency, p), increment_.regularisation, increment_.penalty,
-                            tangent_sensitivity_floor_});
+  const Eigen::Vector3d w = sliding(p, nodal);
+  const Eigen::Vector3d direction = dual_.empty() ? w : dual_.direction(i, w);
+  f = friction_stress(law, {w, sigma_n, weaker_side(increment_.flow_stress, p), weaker_side(increment_.consistency, p),
+                            increment_.regularisation, increment_.penalty, tangent_sensitivity_floor_,
+                            dual_.empty() ? nullptr : &direction});
   return true;
 }
 
@@ -334,7 +347,7 @@ void BodyContact::friction_power(const Eigen::VectorXd& nodal, std::vector<doubl
   power.assign(points_.size(), 0.0);
   for (std::size_t i = 0; i < points_.size(); ++i) {
     FrictionStress f;
-    if (point_friction(points_[i], nodal, f))
+    if (point_friction(static_cast<int>(i), nodal, f))
       power[i] = points_[i].share * points_[i].area * f.stress.dot(sliding(points_[i], nodal));
   }
 }
@@ -391,9 +404,10 @@ void BodyContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, s
           blocks->push_back({summed_nodes[a], summed_nodes[b], sliding_sum[6 * a + b]});
     summing = false;
   };
-  for (const ContactPoint& p : points_) {
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const ContactPoint& p = points_[i];
     FrictionStress f;
-    if (!point_friction(p, nodal, f)) continue;
+    if (!point_friction(static_cast<int>(i), nodal, f)) continue;
     const double sense = p.on_slave ? 1.0 : -1.0;
     const Eigen::Matrix3d tangent_projector = Eigen::Matrix3d::Identity() - p.normal * p.normal.transpose();
     // w = sense P (Σ M_i v_i − Σ N_j v_j): coefficient of node a in w is c_a P.

@@ -41,7 +41,9 @@ FrictionStress friction_stress(const FrictionLaw& law, const FrictionInput& in) 
   // Along w the consistent tangent is q times the secant one (zero for
   // Tresca and Coulomb): a floor on q stiffens it there, τ itself unchanged.
   const double q_t = std::max(q, in.tangent_sensitivity_floor);
-  out.d_sliding = c * (sq1 * Eigen::Matrix3d::Identity() + (q_t - 1.0) * sq1 / (s * s) * (w * w.transpose()));
+  const Eigen::Matrix3d along = in.direction ? 0.5 * s * (*in.direction * w.transpose() + w * in.direction->transpose())
+                                             : Eigen::Matrix3d(w * w.transpose());
+  out.d_sliding = c * (sq1 * Eigen::Matrix3d::Identity() + (q_t - 1.0) * sq1 / (s * s) * along);
   if (coulomb_uncapped) out.d_normal_pressure = law.coefficient * sq1 * w;
   return out;
 }

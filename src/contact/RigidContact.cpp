@@ -27,6 +27,7 @@ std::vector<double> boundary_node_areas(const mesh::TetMesh& mesh, std::span<con
 void RigidContact::search(const mesh::TetMesh& mesh, const std::vector<DieView>& dies, double search_distance) {
   dies_ = dies;
   candidates_.clear();
+  dual_ = FrictionDual{}; // set again when Newton starts
   const std::vector<double> area = boundary_node_areas(mesh);
   std::vector<int> boundary;
   for (int node = 0; node < mesh.node_count(); ++node)
@@ -72,9 +73,17 @@ const std::vector<double>& RigidContact::gaps(const Eigen::VectorXd& nodal) {
   return gap_;
 }
 
+const std::vector<Eigen::Vector3d>& RigidContact::slidings(const Eigen::VectorXd& nodal) {
+  sliding_.resize(candidates_.size());
+  for (std::size_t i = 0; i < candidates_.size(); ++i)
+    sliding_[i] = sliding(candidates_[i], nodal);
+  return sliding_;
+}
+
 void RigidContact::start(const Eigen::VectorXd& nodal) {
   active_.set_tolerance(increment_.gap_tolerance);
   active_.start(gaps(nodal));
+  dual_.start(slidings(nodal), increment_.regularisation);
 }
 
 bool RigidContact::consistent(const Eigen::VectorXd& nodal) {
@@ -86,6 +95,7 @@ bool RigidContact::linear() const {
 }
 
 std::string RigidContact::accept(const Eigen::VectorXd& nodal) {
+  dual_.accept(slidings(nodal));
   return active_.accept(gaps(nodal), "contact nodes");
 }
 
@@ -103,7 +113,7 @@ void RigidContact::add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, 
     Eigen::Vector3d r = -c.area * sigma_n * n;
     Eigen::Matrix3d k = c.area * rho * n * n.transpose();
     if (dies_[c.die].friction.kind != FrictionKind::frictionless) {
-      const FrictionStress f = friction(c, nodal, sigma_n);
+      const FrictionStress f = friction(static_cast<int>(i), nodal, sigma_n);
       r += c.area * f.stress;
       k += c.area * (f.d_sliding * tangent_projector - rho * f.d_normal_pressure * n.transpose());
     }
@@ -117,16 +127,20 @@ Eigen::Vector3d RigidContact::sliding(const ContactCandidate& c, const Eigen::Ve
   return (Eigen::Matrix3d::Identity() - c.normal * c.normal.transpose()) * relative;
 }
 
-FrictionStress RigidContact::friction(const ContactCandidate& c, const Eigen::VectorXd& nodal, double sigma_n) const {
+FrictionStress RigidContact::friction(int i, const Eigen::VectorXd& nodal, double sigma_n) const {
+  const ContactCandidate& c = candidates_[i];
+  const Eigen::Vector3d w = sliding(c, nodal);
+  const Eigen::Vector3d direction = dual_.empty() ? w : dual_.direction(i, w);
   return friction_stress(dies_[c.die].friction,
-                         {sliding(c, nodal), sigma_n, increment_.flow_stress[c.node], increment_.consistency[c.node],
-                          increment_.regularisation, increment_.penalty, tangent_sensitivity_floor_});
+                         {w, sigma_n, increment_.flow_stress[c.node], increment_.consistency[c.node],
+                          increment_.regularisation, increment_.penalty, tangent_sensitivity_floor_,
+                          dual_.empty() ? nullptr : &direction});
 }
 
 double RigidContact::friction_power(int i, const Eigen::VectorXd& nodal) const {
   const ContactCandidate& c = candidates_[i];
   if (!active_[i] || dies_[c.die].friction.kind == FrictionKind::frictionless) return 0.0;
-  return c.area * friction(c, nodal, increment_.penalty * gap_velocity(c, nodal)).stress.dot(sliding(c, nodal));
+  return c.area * friction(i, nodal, increment_.penalty * gap_velocity(c, nodal)).stress.dot(sliding(c, nodal));
 }
 
 std::vector<Eigen::Vector3d> RigidContact::die_forces(const Eigen::VectorXd& nodal) const {

@@ -2,6 +2,7 @@
 
 #include "anvil/core/error.h"
 #include "anvil/core/processes.h"
+#include "anvil/fem/tet_quadrature.h"
 
 #include <tbb/parallel_for.h>
 
@@ -206,10 +207,13 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
   }
   std::fill(bad_.begin(), bad_.end(), 0);
   double* values = tangent_.valuePtr();
+  const std::size_t points = tet_quadrature(quadrature_degree_).size();
+  if (dual_) dual_trial_.resize(points * tets_.size());
   for (const std::vector<ElementChunk>& colour : colours_) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, colour.size(), 1), [&](const auto& range) {
       MiniElementInput in;
       MiniElementSystem system;
+      ElementDual dual;
       for (std::size_t chunk = range.begin(); chunk != range.end(); ++chunk)
         for (int k = colour[chunk].first; k < colour[chunk].end; ++k) {
           const int e = partition_.elements[k];
@@ -223,6 +227,15 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
           in.state = states.empty() ? material::PointState{} : states[e];
           in.tangent_sensitivity_floor = tangent_sensitivity_floor_;
           in.quadrature_degree = quadrature_degree_;
+          if (dual_) {
+            for (int a = 0; a < 4; ++a)
+              dual.nodal_velocity[a] = dual_at_.nodal.segment<3>(kDofsPerNode * t[a]);
+            dual.bubble_velocity = dual_at_.bubble.segment<3>(3 * e);
+            dual.step = dual_step_;
+            dual.last = dual_last_.empty() ? nullptr : dual_last_.data() + points * k;
+            dual.trial = dual_trial_.data() + points * k;
+            in.dual = &dual;
+          }
           if (!mini_element(in, *laws[e], with_tangent, body_force, system)) {
             bad_[k] = 1;
             bubble_sq_[k] = 0.0;
@@ -264,6 +277,23 @@ AssemblyResult Assembler::assemble(const mesh::TetMesh& mesh, const ElementLaws&
     if (with_tangent) processes::sum({pressure_mass_.data(), static_cast<std::size_t>(pressure_mass_.size())});
   }
   return result;
+}
+
+void Assembler::start_dual(const BodyUnknowns* at) {
+  dual_ = at != nullptr;
+  dual_last_.clear();
+  dual_step_ = 0.0;
+  if (dual_)
+    dual_at_ = *at;
+  else
+    dual_trial_.clear();
+}
+
+void Assembler::accept_dual(const BodyUnknowns& at) {
+  if (!dual_) return;
+  dual_at_ = at;
+  dual_last_.swap(dual_trial_);
+  dual_step_ = 0.0;
 }
 
 void Assembler::bubble_increment(const mesh::TetMesh& mesh, const Eigen::VectorXd& delta,

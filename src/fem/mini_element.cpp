@@ -101,6 +101,7 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
   const double volume = g.volume;
   out.volume = volume;
   const Vec6 strain_l = linear_strain(g, in.nodal_velocity);
+  const Vec6 strain_l_last = in.dual ? linear_strain(g, in.dual->nodal_velocity) : Vec6::Zero();
 
   // Quadrature of the viscous (or elastic) term (docs/design.md §2). Per point only
   // sums of scalars, 3-vectors and the rank-one parts are accumulated; the
@@ -116,7 +117,9 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
   Eigen::Matrix<double, 12, 1> r_l_force = Eigen::Matrix<double, 12, 1>::Zero();
   Vec6 stress;
   material::J2Tangent tangent;
-  for (const TetQuadraturePoint& q : tet_quadrature(in.quadrature_degree)) {
+  const std::span<const TetQuadraturePoint> rule = tet_quadrature(in.quadrature_degree);
+  for (std::size_t point = 0; point < rule.size(); ++point) {
+    const TetQuadraturePoint& q = rule[point];
     const auto& l = q.barycentric;
     const Vec3 grad_b = bubble_gradient(l, g.grad_rows);
     const Vec6 strain = strain_l + strain_of(grad_b, in.bubble_velocity);
@@ -129,9 +132,17 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
     two_eta_bubble += w_two_eta * grad_b;
     k_bb.noalias() += (w_two_eta / 6.0) * grad_b * grad_b.transpose();
     k_bb.diagonal().array() += 0.5 * w_two_eta * grad_b.squaredNorm();
+    const Vec6 e = material::deviator(strain);
+    Vec6 e_dual = e; // n̂ r, in place of one e of the rank-one term
+    if (in.dual) {
+      const Vec6 e_last = material::deviator(strain_l_last + strain_of(grad_b, in.dual->bubble_velocity));
+      const Vec6 n_dual = dual_direction(e, e_last, in.dual->last ? in.dual->last + point : nullptr, in.dual->step);
+      in.dual->trial[point] = n_dual.cast<float>();
+      e_dual = std::sqrt(2.0 / 3.0 * e.squaredNorm()) * n_dual;
+    }
     if (tangent.beta != 0.0) {
-      const Vec6 e = material::deviator(strain);
       const Vec3 e_grad_b = tensor_times(e, grad_b); // B_bᵀ e
+      const Vec3 d_grad_b = tensor_times(e_dual, grad_b);
       // β ∝ (m − 1): a floor m_t > m scales the term by (1 − m_t)/(1 − m). The
       // bubble's part too (without it, closed_die_flash's flash stage took 16
       // Newton iterations per increment instead of 9); its condensation then
@@ -139,10 +150,12 @@ bool mini_element(const MiniElementInput& in, const material::Material& law, boo
       // bubble is in equilibrium.
       const double m = tangent.sensitivity, m_t = in.tangent_sensitivity_floor;
       const double w_beta = w * tangent.beta * (m < m_t ? (1.0 - m_t) / (1.0 - m) : 1.0);
-      rank_one_bubble.noalias() += (w_beta * e) * e_grad_b.transpose();
-      k_bb.noalias() += (w_beta * e_grad_b) * e_grad_b.transpose();
-      rank_one_trace += w_beta * e.squaredNorm();
-      if (with_tangent) rank_one_sum.noalias() += (w_beta * e) * e.transpose();
+      // The rank-one term β sym(ê ⊗ e), ê = e without the dual.
+      const double half = 0.5 * w_beta;
+      rank_one_bubble.noalias() += (half * e_dual) * e_grad_b.transpose() + (half * e) * d_grad_b.transpose();
+      k_bb.noalias() += (half * d_grad_b) * e_grad_b.transpose() + (half * e_grad_b) * d_grad_b.transpose();
+      rank_one_trace += w_beta * e_dual.dot(e);
+      if (with_tangent) rank_one_sum.noalias() += (half * e_dual) * e.transpose() + (half * e) * e_dual.transpose();
     }
     if (body_force) {
       const mesh::Point x =

@@ -265,6 +265,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   int far_stalls = 0;       // full far-phase steps in a row that lowered the residual by less than kFarStall
   bool set_changed = false; // the last step changed the active set (its residuals compare two problems)
   set_tangent_phase(problem, false);
+  assembler_.start_dual(nonlinear ? &unknowns : nullptr);
   const bool linear_problem = !nonlinear && std::all_of(problem.nodal_terms.begin(), problem.nodal_terms.end(),
                                                         [](const NodalTerm* term) { return term->linear(); });
   Merit merit = evaluate(problem, unknowns);
@@ -369,6 +370,9 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     for (int cut = 0;; ++cut) {
       trial.nodal = unknowns.nodal + step * delta;
       trial.bubble = unknowns.bubble + step * bubble_delta;
+      for (NodalTerm* term : problem.nodal_terms)
+        term->set_line_search_step(step);
+      assembler_.set_dual_step(step);
       merit = evaluate(problem, trial);
       const double flux = std::max(std::max(velocity_start, max_velocity(trial.nodal)) * area, 1e-300);
       if (bad_element_ < 0 && relative(merit, scale, flux) <= (1.0 - 2e-4 * step) * relative(merit_start, scale, flux))
@@ -378,6 +382,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     }
     unknowns.nodal.swap(trial.nodal);
     unknowns.bubble.swap(trial.bubble);
+    assembler_.accept_dual(unknowns);
     scale = force_scale(problem); // reactions follow the velocity field
     const double flux_scale = std::max(max_velocity(unknowns.nodal) * area, 1e-300);
 

@@ -41,6 +41,7 @@
 #include "anvil/contact/ActiveSet.h"
 #include "anvil/contact/ContactIncrement.h"
 #include "anvil/contact/Friction.h"
+#include "anvil/contact/FrictionDual.h"
 #include "anvil/mesh/TetMesh.h"
 #include "anvil/solver/NodalTerm.h"
 
@@ -130,6 +131,7 @@ public:
   void search(const mesh::TetMesh& mesh, double search_distance);
   void set_increment(const ContactIncrement& increment);
   void set_tangent_sensitivity_floor(double floor) override { tangent_sensitivity_floor_ = floor; }
+  void set_line_search_step(double step) override { dual_.set_step(step); }
 
   void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, std::vector<solver::NodeBlock>* blocks,
            const std::vector<char>* rows = nullptr) const override;
@@ -179,9 +181,11 @@ private:
   double pressure(const ContactPoint& p, const Eigen::VectorXd& nodal) const;
   /// w: the point's tangential velocity relative to its projection, from the point's side.
   Eigen::Vector3d sliding(const ContactPoint& p, const Eigen::VectorXd& nodal) const;
-  /// τ of the pair's friction law at a touching point, under the pressure of
+  /// τ of the pair's friction law at touching point `i` of points_, under the pressure of
   /// its multipliers; false where it does not touch or the law has no τ of its own.
-  bool point_friction(const ContactPoint& p, const Eigen::VectorXd& nodal, FrictionStress& f) const;
+  bool point_friction(int i, const Eigen::VectorXd& nodal, FrictionStress& f) const;
+  /// w of every point of points_ at `nodal`, into sliding_.
+  const std::vector<Eigen::Vector3d>& slidings(const Eigen::VectorXd& nodal);
 
   std::vector<BodyPair> pairs_;
   std::vector<char> symmetry_faces_;
@@ -191,9 +195,11 @@ private:
   std::vector<Support> support_;
   ContactIncrement increment_{};
   double tangent_sensitivity_floor_ = 0.0;
-  ActiveSet active_;                   ///< per multiplier
-  std::vector<double> gap_;            ///< per multiplier, C/Ã at the last iterate asked (mm/s)
-  mutable std::vector<double> stress_; ///< per multiplier, λ of the last add() (MPa), 0 when inactive
+  ActiveSet active_;                     ///< per multiplier
+  std::vector<double> gap_;              ///< per multiplier, C/Ã at the last iterate asked (mm/s)
+  mutable std::vector<double> stress_;   ///< per multiplier, λ of the last add() (MPa), 0 when inactive
+  std::vector<Eigen::Vector3d> sliding_; ///< per point of points_, w at the last iterate asked
+  FrictionDual dual_;                    ///< per point of points_
 };
 
 } // namespace anvil::contact

@@ -32,6 +32,9 @@ struct FrictionInput {
   /// The tangent ∂τ/∂w is built with the exponent max(q, this) along w (0:
   /// the consistent tangent); Newton's far phase (IncrementSolver).
   double tangent_sensitivity_floor = 0.0;
+  /// Newton's own sliding direction λ (contact/FrictionDual.h): the tangent's
+  /// rank-one term along w is built with it; null: with w/s.
+  const Eigen::Vector3d* direction = nullptr;
 };
 
 struct FrictionStress {

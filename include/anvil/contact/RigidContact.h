@@ -11,6 +11,7 @@
 #include "anvil/contact/ActiveSet.h"
 #include "anvil/contact/ContactIncrement.h"
 #include "anvil/contact/Friction.h"
+#include "anvil/contact/FrictionDual.h"
 #include "anvil/die/DieSurface.h"
 #include "anvil/solver/NodalTerm.h"
 
@@ -43,6 +44,7 @@ public:
   void search(const mesh::TetMesh& mesh, const std::vector<DieView>& dies, double search_distance);
   void set_increment(const ContactIncrement& increment) { increment_ = increment; }
   void set_tangent_sensitivity_floor(double floor) override { tangent_sensitivity_floor_ = floor; }
+  void set_line_search_step(double step) override { dual_.set_step(step); }
 
   void add(const Eigen::VectorXd& nodal, Eigen::VectorXd& residual, std::vector<solver::NodeBlock>* blocks,
            const std::vector<char>* rows = nullptr) const override;
@@ -73,8 +75,10 @@ private:
   double gap_velocity(const ContactCandidate& c, const Eigen::VectorXd& nodal) const;
   /// w: the tangential velocity of the node relative to its die.
   Eigen::Vector3d sliding(const ContactCandidate& c, const Eigen::VectorXd& nodal) const;
-  /// τ of the die's friction law at the node, under contact pressure `sigma_n`.
-  FrictionStress friction(const ContactCandidate& c, const Eigen::VectorXd& nodal, double sigma_n) const;
+  /// τ of the die's friction law at candidate `i`, under contact pressure `sigma_n`.
+  FrictionStress friction(int i, const Eigen::VectorXd& nodal, double sigma_n) const;
+  /// w of every candidate at `nodal`, into sliding_.
+  const std::vector<Eigen::Vector3d>& slidings(const Eigen::VectorXd& nodal);
   /// h of every candidate at `nodal`, into gap_.
   const std::vector<double>& gaps(const Eigen::VectorXd& nodal);
 
@@ -82,8 +86,10 @@ private:
   std::vector<ContactCandidate> candidates_;
   ContactIncrement increment_{};
   double tangent_sensitivity_floor_ = 0.0;
-  ActiveSet active_;        ///< per candidate
-  std::vector<double> gap_; ///< per candidate, h at the last iterate asked
+  ActiveSet active_;                     ///< per candidate
+  std::vector<double> gap_;              ///< per candidate, h at the last iterate asked
+  std::vector<Eigen::Vector3d> sliding_; ///< per candidate, w at the last iterate asked
+  FrictionDual dual_;                    ///< per candidate
 };
 
 /// Tributary boundary area of each node (mm²): a third of each adjacent

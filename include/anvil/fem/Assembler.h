@@ -105,6 +105,15 @@ public:
   /// The elements of the next assemble() calls are integrated by the rule of
   /// this degree (fem::tet_quadrature: 5 or 6).
   void set_quadrature_degree(int degree) { quadrature_degree_ = degree; }
+  /// Newton's own direction of the strain rate (fem/strain_rate_dual.h):
+  /// start_dual() at Newton's first iterate `at` (n̂ = n there; null: no
+  /// dual, the consistent tangent, as for linear laws), then each assemble()
+  /// is at the last iterate plus `step` (set_dual_step()) times the
+  /// direction, and accept_dual() makes the last assemble()'s trial, at `at`,
+  /// the next iterate.
+  void start_dual(const BodyUnknowns* at);
+  void set_dual_step(double step) { dual_step_ = step; }
+  void accept_dual(const BodyUnknowns& at);
   const Partition& partition() const { return partition_; }
 
 private:
@@ -128,6 +137,12 @@ private:
   /// (kept per element so the sums are in a fixed order, whatever the threads).
   std::vector<char> bad_;
   std::vector<double> bubble_sq_;
+  /// The dual: unknowns of the last iterate, n̂ per quadrature point of each
+  /// element of tets_ there (empty at Newton's first iterate) and at the trial.
+  bool dual_ = false;
+  BodyUnknowns dual_at_;
+  std::vector<DualDirection> dual_last_, dual_trial_;
+  double dual_step_ = 0.0;
   /// Per element, where its 4×4 node blocks start in the tangent's values
   /// (row node b, column node a at 4b + a): assembly needs no search.
   std::vector<std::array<int, 16>> element_blocks_;

@@ -4,6 +4,7 @@
 // nodal unknowns: a 16×16 system ordered [vx vy vz p] per vertex, matching
 // the global interleaved numbering.
 #pragma once
+#include "anvil/fem/strain_rate_dual.h"
 #include "anvil/material/Material.h"
 #include "anvil/mesh/TetMesh.h"
 
@@ -39,6 +40,9 @@ struct MiniElementInput {
   /// (0: the consistent tangent); Newton's far phase (IncrementSolver).
   double tangent_sensitivity_floor = 0.0;
   int quadrature_degree = 5; ///< of the rule over the element (fem::tet_quadrature)
+  /// Newton's own direction of the strain rate (fem/strain_rate_dual.h);
+  /// null: the consistent tangent.
+  const ElementDual* dual = nullptr;
 };
 
 /// Condensed element system. Residual sign: R = internal − external, so

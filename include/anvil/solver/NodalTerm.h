@@ -53,6 +53,10 @@ public:
   /// sensitivity of at least `floor` (0: the consistent tangent) until told
   /// otherwise: Newton's far phase (IncrementSolver).
   virtual void set_tangent_sensitivity_floor(double floor) = 0;
+  /// The next add() is at the last accepted iterate plus `step` times the
+  /// Newton direction (the line search's trial; 0 after accept()): a term
+  /// with unknowns of its own (contact/FrictionDual.h) moves them with it.
+  virtual void set_line_search_step(double step) = 0;
 };
 
 } // namespace anvil::solver

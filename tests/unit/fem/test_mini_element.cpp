@@ -1,6 +1,7 @@
 #include "test_common.h"
 
 #include "anvil/fem/mini_element.h"
+#include "anvil/fem/tet_quadrature.h"
 
 #include <Eigen/Dense>
 
@@ -18,15 +19,22 @@ fem::MiniElementInput distorted_element() {
   return in;
 }
 
-/// Condensed residual with the bubble in equilibrium (r_b = 0, found by a
-/// local Newton): the function whose exact derivative is the condensed tangent.
-fem::Vec16 condensed_residual(fem::MiniElementInput in, const material::Material& law) {
+/// Puts the bubble in equilibrium (r_b = 0) by a local Newton: there the
+/// condensed tangent is the exact derivative of the condensed residual.
+void balance_bubble(fem::MiniElementInput& in, const material::Material& law) {
   fem::MiniElementSystem s;
   for (int it = 0; it < 50; ++it) {
     REQUIRE(fem::mini_element(in, law, false, {}, s));
     in.bubble_velocity -= s.bubble_residual_solved;
     if (s.bubble_residual_sq < 1e-28) break;
   }
+}
+
+/// Condensed residual with the bubble in equilibrium: the function whose
+/// exact derivative is the condensed tangent.
+fem::Vec16 condensed_residual(fem::MiniElementInput in, const material::Material& law) {
+  balance_bubble(in, law);
+  fem::MiniElementSystem s;
   REQUIRE(fem::mini_element(in, law, false, {}, s));
   return s.residual;
 }
@@ -48,13 +56,8 @@ TEST_CASE("condensed MINI tangent equals finite differences of the residual", "[
   const double m = GENERATE(1.0, 0.15, 0.02);
   const material::NortonHoff law(10.0, m, 1e-3);
   fem::MiniElementInput in = distorted_element();
-  // Put the bubble in equilibrium first: there the condensed tangent is the
-  // derivative of the condensed residual.
+  balance_bubble(in, law);
   fem::MiniElementSystem s;
-  for (int it = 0; it < 50; ++it) {
-    REQUIRE(fem::mini_element(in, law, false, {}, s));
-    in.bubble_velocity -= s.bubble_residual_solved;
-  }
   REQUIRE(fem::mini_element(in, law, true, {}, s));
   const fem::Mat16 tangent = s.tangent;
   CHECK((tangent - tangent.transpose()).norm() <= 1e-12 * tangent.norm());
@@ -101,11 +104,7 @@ TEST_CASE("Newton's far-phase tangent: the residual is unchanged, the tangent st
   fem::MiniElementInput in = distorted_element();
   // The bubble in equilibrium (r_b = 0): there the condensed residual does
   // not depend on the bubble's tangent, which the floor changes too.
-  fem::MiniElementSystem equilibrium;
-  for (int it = 0; it < 50; ++it) {
-    REQUIRE(fem::mini_element(in, power_law, false, {}, equilibrium));
-    in.bubble_velocity -= equilibrium.bubble_residual_solved;
-  }
+  balance_bubble(in, power_law);
   auto system = [&](const material::Material& law, double floor) {
     in.tangent_sensitivity_floor = floor;
     fem::MiniElementSystem s;
@@ -131,4 +130,66 @@ TEST_CASE("Newton's far-phase tangent: the residual is unchanged, the tangent st
   const material::NortonHoff newtonian(10.0, 1.0, 0.0), mild(10.0, 0.6, 1e-3);
   CHECK(system(newtonian, 0.5).tangent == system(newtonian, 0.0).tangent);
   CHECK(system(mild, 0.5).tangent == system(mild, 0.0).tangent);
+}
+
+TEST_CASE("Newton's own strain-rate direction: the residual unchanged, the consistent tangent where it equals the "
+          "rate's, a stiffer one where the rate turned round, never an indefinite one",
+          "[unit]") {
+  const material::NortonHoff law(10.0, 0.15, 1e-3);
+  fem::MiniElementInput in = distorted_element();
+  balance_bubble(in, law); // the condensed residual then does not depend on the bubble's tangent
+  const std::size_t points = fem::tet_quadrature(in.quadrature_degree).size();
+  std::vector<fem::DualDirection> trial(points);
+  auto system = [&](const fem::ElementDual* dual) {
+    in.dual = dual;
+    fem::MiniElementSystem s;
+    REQUIRE(fem::mini_element(in, law, true, {}, s));
+    in.dual = nullptr;
+    return s;
+  };
+  auto velocity_block = [](const fem::Mat16& k) {
+    Eigen::Matrix<double, 12, 12> v;
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j)
+        v(i, j) = k(4 * (i / 3) + i % 3, 4 * (j / 3) + j % 3);
+    return v;
+  };
+  const fem::MiniElementSystem consistent = system(nullptr);
+  const double scale = consistent.tangent.norm();
+
+  // Newton's first iterate: n̂ = n, the consistent tangent.
+  fem::ElementDual at_iterate{in.nodal_velocity, in.bubble_velocity, 0.0, nullptr, trial.data()};
+  const fem::MiniElementSystem same = system(&at_iterate);
+  CHECK((same.residual - consistent.residual).norm() <= 1e-12 * consistent.residual.norm());
+  CHECK((same.tangent - consistent.tangent).norm() <= 1e-12 * scale);
+
+  // From a last iterate that moved the other way, a full step: n̂ keeps the
+  // last iterate's direction, −n, so the rank-one term β e⊗e (β < 0) changes
+  // sign: stiffer along the rate, where Newton would overshoot.
+  fem::ElementDual reversed{{}, -in.bubble_velocity, 1.0, nullptr, trial.data()};
+  for (int a = 0; a < 4; ++a)
+    reversed.nodal_velocity[a] = -in.nodal_velocity[a];
+  const fem::MiniElementSystem turned = system(&reversed);
+  CHECK((turned.residual - consistent.residual).norm() <= 1e-12 * consistent.residual.norm());
+  CHECK((turned.tangent - turned.tangent.transpose()).norm() <= 1e-12 * scale);
+  const Eigen::Matrix<double, 12, 12> added = velocity_block(turned.tangent) - velocity_block(consistent.tangent);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> stiffer(0.5 * (added + added.transpose()));
+  CHECK(stiffer.eigenvalues().minCoeff() >= -1e-12 * scale);
+  CHECK(stiffer.eigenvalues().maxCoeff() > 1e-3 * scale);
+
+  // From any last iterate and step, n̂ is scaled back to ⅔ n̂:n̂ ≤ 1 and the
+  // velocity block stays positive semi-definite (zero on the six rigid
+  // motions and the change of volume, the pressure's part).
+  fem::ElementDual elsewhere{
+      {fem::Vec3(-0.4, 0.1, 0.3), fem::Vec3(0.2, -0.5, 0.1), fem::Vec3(0.1, 0.3, 0.4), fem::Vec3(0.6, -0.1, -0.2)},
+      fem::Vec3(0.05, -0.02, 0.01),
+      0.5,
+      nullptr,
+      trial.data()};
+  const Eigen::Matrix<double, 12, 12> k = velocity_block(system(&elsewhere).tangent);
+  for (const fem::DualDirection& n : trial)
+    CHECK(2.0 / 3.0 * n.cast<double>().squaredNorm() <= 1.0 + 1e-6);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> definite(0.5 * (k + k.transpose()));
+  CHECK(definite.eigenvalues().minCoeff() >= -1e-12 * scale);
+  CHECK(definite.eigenvalues()[7] > 1e-3 * scale);
 }

@@ -1,0 +1,34 @@
+#include "anvil/contact/FrictionDual.h"
+
+#include <cmath>
+
+namespace anvil::contact {
+
+void FrictionDual::start(const std::vector<Eigen::Vector3d>& sliding, double regularisation) {
+  regularisation_ = regularisation;
+  sliding_ = sliding;
+  direction_.resize(sliding.size());
+  for (std::size_t i = 0; i < sliding.size(); ++i)
+    direction_[i] = sliding[i] / std::sqrt(sliding[i].squaredNorm() + regularisation * regularisation);
+  step_ = 0.0;
+}
+
+Eigen::Vector3d FrictionDual::direction(int i, const Eigen::Vector3d& w) const {
+  const Eigen::Vector3d& lambda = direction_[i];
+  const Eigen::Vector3d& w0 = sliding_[i];
+  const double s = std::sqrt(w0.squaredNorm() + regularisation_ * regularisation_);
+  const Eigen::Vector3d dw = w - w0;
+  Eigen::Vector3d next = lambda + (dw - lambda * (w0.dot(dw) / s) + step_ * (w0 - lambda * s)) / s;
+  const double length = next.norm();
+  if (length > 1.0) next /= length;
+  return next;
+}
+
+void FrictionDual::accept(const std::vector<Eigen::Vector3d>& sliding) {
+  for (std::size_t i = 0; i < sliding.size(); ++i)
+    direction_[i] = direction(static_cast<int>(i), sliding[i]);
+  sliding_ = sliding;
+  step_ = 0.0;
+}
+
+} // namespace anvil::contact
