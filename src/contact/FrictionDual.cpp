@@ -8,8 +8,10 @@ void FrictionDual::start(const std::vector<Eigen::Vector3d>& sliding, double reg
   regularisation_ = regularisation;
   sliding_ = sliding;
   direction_.resize(sliding.size());
-  for (std::size_t i = 0; i < sliding.size(); ++i)
-    direction_[i] = sliding[i] / std::sqrt(sliding[i].squaredNorm() + regularisation * regularisation);
+  for (std::size_t i = 0; i < sliding.size(); ++i) {
+    const double s = std::sqrt(sliding[i].squaredNorm() + regularisation * regularisation);
+    direction_[i] = s > 0.0 ? Eigen::Vector3d(sliding[i] / s) : Eigen::Vector3d::Zero();
+  }
   step_ = 0.0;
 }
 
@@ -17,6 +19,7 @@ Eigen::Vector3d FrictionDual::direction(int i, const Eigen::Vector3d& w) const {
   const Eigen::Vector3d& lambda = direction_[i];
   const Eigen::Vector3d& w0 = sliding_[i];
   const double s = std::sqrt(w0.squaredNorm() + regularisation_ * regularisation_);
+  if (!(s > 0.0)) return Eigen::Vector3d::Zero(); // at rest, unregularised: no direction, as w wᵀ = 0
   const Eigen::Vector3d dw = w - w0;
   Eigen::Vector3d next = lambda + (dw - lambda * (w0.dot(dw) / s) + step_ * (w0 - lambda * s)) / s;
   const double length = next.norm();
