@@ -288,16 +288,10 @@ const std::vector<double>& BodyContact::gaps(const Eigen::VectorXd& nodal) {
   return gap_;
 }
 
-const std::vector<Eigen::Vector3d>& BodyContact::slidings(const Eigen::VectorXd& nodal) {
-  sliding_.resize(points_.size());
-  for (std::size_t i = 0; i < points_.size(); ++i)
-    sliding_[i] = sliding(points_[i], nodal);
-  return sliding_;
-}
-
 void BodyContact::start(const Eigen::VectorXd& nodal) {
   active_.start(gaps(nodal));
-  dual_.start(slidings(nodal), increment_.regularisation);
+  dual_.start(
+      points_.size(), [&](std::size_t i) { return sliding(points_[i], nodal); }, increment_.regularisation);
 }
 bool BodyContact::consistent(const Eigen::VectorXd& nodal) {
   return active_.consistent(gaps(nodal));
@@ -306,7 +300,7 @@ bool BodyContact::linear() const {
   return std::all_of(pairs_.begin(), pairs_.end(), [](const BodyPair& p) { return is_linear(p.friction); });
 }
 std::string BodyContact::accept(const Eigen::VectorXd& nodal) {
-  dual_.accept(slidings(nodal));
+  dual_.accept([&](std::size_t i) { return sliding(points_[i], nodal); });
   return active_.accept(gaps(nodal), "pair constraints");
 }
 
@@ -336,10 +330,9 @@ bool BodyContact::point_friction(int i, const Eigen::VectorXd& nodal, FrictionSt
     }
   if (!touching) return false;
   const Eigen::Vector3d w = sliding(p, nodal);
-  const Eigen::Vector3d direction = dual_.empty() ? w : dual_.direction(i, w);
   f = friction_stress(law, {w, sigma_n, weaker_side(increment_.flow_stress, p), weaker_side(increment_.consistency, p),
                             increment_.regularisation, increment_.penalty, tangent_sensitivity_floor_,
-                            dual_.empty() ? nullptr : &direction});
+                            dual_.direction(static_cast<std::size_t>(i), w)});
   return true;
 }
 

@@ -73,17 +73,11 @@ const std::vector<double>& RigidContact::gaps(const Eigen::VectorXd& nodal) {
   return gap_;
 }
 
-const std::vector<Eigen::Vector3d>& RigidContact::slidings(const Eigen::VectorXd& nodal) {
-  sliding_.resize(candidates_.size());
-  for (std::size_t i = 0; i < candidates_.size(); ++i)
-    sliding_[i] = sliding(candidates_[i], nodal);
-  return sliding_;
-}
-
 void RigidContact::start(const Eigen::VectorXd& nodal) {
   active_.set_tolerance(increment_.gap_tolerance);
   active_.start(gaps(nodal));
-  dual_.start(slidings(nodal), increment_.regularisation);
+  dual_.start(
+      candidates_.size(), [&](std::size_t i) { return sliding(candidates_[i], nodal); }, increment_.regularisation);
 }
 
 bool RigidContact::consistent(const Eigen::VectorXd& nodal) {
@@ -95,7 +89,7 @@ bool RigidContact::linear() const {
 }
 
 std::string RigidContact::accept(const Eigen::VectorXd& nodal) {
-  dual_.accept(slidings(nodal));
+  dual_.accept([&](std::size_t i) { return sliding(candidates_[i], nodal); });
   return active_.accept(gaps(nodal), "contact nodes");
 }
 
@@ -130,11 +124,10 @@ Eigen::Vector3d RigidContact::sliding(const ContactCandidate& c, const Eigen::Ve
 FrictionStress RigidContact::friction(int i, const Eigen::VectorXd& nodal, double sigma_n) const {
   const ContactCandidate& c = candidates_[i];
   const Eigen::Vector3d w = sliding(c, nodal);
-  const Eigen::Vector3d direction = dual_.empty() ? w : dual_.direction(i, w);
   return friction_stress(dies_[c.die].friction,
                          {w, sigma_n, increment_.flow_stress[c.node], increment_.consistency[c.node],
                           increment_.regularisation, increment_.penalty, tangent_sensitivity_floor_,
-                          dual_.empty() ? nullptr : &direction});
+                          dual_.direction(i, w)});
 }
 
 double RigidContact::friction_power(int i, const Eigen::VectorXd& nodal) const {

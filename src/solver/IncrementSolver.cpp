@@ -156,6 +156,12 @@ void IncrementSolver::set_tangent_phase(const IncrementProblem& problem, bool fa
     term->set_tangent_sensitivity_floor(floor);
 }
 
+void IncrementSolver::set_line_search_step(const IncrementProblem& problem, double step) {
+  assembler_.set_dual_step(step);
+  for (NodalTerm* term : problem.nodal_terms)
+    term->set_line_search_step(step);
+}
+
 double IncrementSolver::force_scale(const IncrementProblem& problem) const {
   const Eigen::VectorXd& nodal_forces = problem.nodal_forces;
   const fem::DofMap& dofs = assembler_.dofs();
@@ -370,9 +376,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     for (int cut = 0;; ++cut) {
       trial.nodal = unknowns.nodal + step * delta;
       trial.bubble = unknowns.bubble + step * bubble_delta;
-      for (NodalTerm* term : problem.nodal_terms)
-        term->set_line_search_step(step);
-      assembler_.set_dual_step(step);
+      set_line_search_step(problem, step);
       merit = evaluate(problem, trial);
       const double flux = std::max(std::max(velocity_start, max_velocity(trial.nodal)) * area, 1e-300);
       if (bad_element_ < 0 && relative(merit, scale, flux) <= (1.0 - 2e-4 * step) * relative(merit_start, scale, flux))

@@ -184,8 +184,6 @@ private:
   /// τ of the pair's friction law at touching point `i` of points_, under the pressure of
   /// its multipliers; false where it does not touch or the law has no τ of its own.
   bool point_friction(int i, const Eigen::VectorXd& nodal, FrictionStress& f) const;
-  /// w of every point of points_ at `nodal`, into sliding_.
-  const std::vector<Eigen::Vector3d>& slidings(const Eigen::VectorXd& nodal);
 
   std::vector<BodyPair> pairs_;
   std::vector<char> symmetry_faces_;
@@ -195,11 +193,10 @@ private:
   std::vector<Support> support_;
   ContactIncrement increment_{};
   double tangent_sensitivity_floor_ = 0.0;
-  ActiveSet active_;                     ///< per multiplier
-  std::vector<double> gap_;              ///< per multiplier, C/Ã at the last iterate asked (mm/s)
-  mutable std::vector<double> stress_;   ///< per multiplier, λ of the last add() (MPa), 0 when inactive
-  std::vector<Eigen::Vector3d> sliding_; ///< per point of points_, w at the last iterate asked
-  FrictionDual dual_;                    ///< per point of points_
+  ActiveSet active_;                   ///< per multiplier
+  std::vector<double> gap_;            ///< per multiplier, C/Ã at the last iterate asked (mm/s)
+  mutable std::vector<double> stress_; ///< per multiplier, λ of the last add() (MPa), 0 when inactive
+  FrictionDual dual_;                  ///< per point of points_
 };
 
 } // namespace anvil::contact

@@ -8,6 +8,7 @@
 // and Tresca/Norton derive from the convex potential c/(q+1) s^(q+1).
 #pragma once
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 
 namespace anvil::contact {
@@ -33,8 +34,8 @@ struct FrictionInput {
   /// the consistent tangent); Newton's far phase (IncrementSolver).
   double tangent_sensitivity_floor = 0.0;
   /// Newton's own sliding direction λ (contact/FrictionDual.h): the tangent's
-  /// rank-one term along w is built with it; null: with w/s.
-  const Eigen::Vector3d* direction = nullptr;
+  /// rank-one term along w is built with it; none: with w/s.
+  std::optional<Eigen::Vector3d> direction;
 };
 
 struct FrictionStress {

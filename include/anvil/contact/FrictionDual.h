@@ -17,22 +17,43 @@
 #pragma once
 #include <Eigen/Core>
 
+#include <cmath>
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace anvil::contact {
 
 class FrictionDual {
 public:
-  /// At Newton's starting iterate: λ = w/s at each point, `sliding[i]` = w.
-  void start(const std::vector<Eigen::Vector3d>& sliding, double regularisation);
+  /// At Newton's starting iterate: λ = w/s at each of `count` points, w =
+  /// `sliding(i)`.
+  template <class Sliding> void start(std::size_t count, const Sliding& sliding, double regularisation) {
+    regularisation_ = regularisation;
+    sliding_.resize(count);
+    direction_.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      sliding_[i] = sliding(i);
+      const double s = std::sqrt(sliding_[i].squaredNorm() + regularisation * regularisation);
+      direction_[i] = s > 0.0 ? Eigen::Vector3d(sliding_[i] / s) : Eigen::Vector3d::Zero();
+    }
+    step_ = 0.0;
+  }
   /// The line search's trial is the last iterate plus `step` × the Newton
   /// direction (0: the last iterate itself).
   void set_step(double step) { step_ = step; }
-  /// λ of point `i` at the trial whose sliding velocity is `w`.
-  Eigen::Vector3d direction(int i, const Eigen::Vector3d& w) const;
-  /// The trial with these sliding velocities is Newton's next iterate.
-  void accept(const std::vector<Eigen::Vector3d>& sliding);
-  bool empty() const { return direction_.empty(); }
+  /// λ of point `i` at the trial whose sliding velocity is `w`; none before
+  /// start() (the consistent tangent).
+  std::optional<Eigen::Vector3d> direction(std::size_t i, const Eigen::Vector3d& w) const;
+  /// The trial whose sliding velocities are `sliding(i)` is Newton's next iterate.
+  template <class Sliding> void accept(const Sliding& sliding) {
+    for (std::size_t i = 0; i < sliding_.size(); ++i) {
+      const Eigen::Vector3d w = sliding(i);
+      direction_[i] = *direction(i, w);
+      sliding_[i] = w;
+    }
+    step_ = 0.0;
+  }
 
 private:
   std::vector<Eigen::Vector3d> direction_; ///< λ at the last iterate

@@ -77,8 +77,6 @@ private:
   Eigen::Vector3d sliding(const ContactCandidate& c, const Eigen::VectorXd& nodal) const;
   /// τ of the die's friction law at candidate `i`, under contact pressure `sigma_n`.
   FrictionStress friction(int i, const Eigen::VectorXd& nodal, double sigma_n) const;
-  /// w of every candidate at `nodal`, into sliding_.
-  const std::vector<Eigen::Vector3d>& slidings(const Eigen::VectorXd& nodal);
   /// h of every candidate at `nodal`, into gap_.
   const std::vector<double>& gaps(const Eigen::VectorXd& nodal);
 
@@ -86,10 +84,9 @@ private:
   std::vector<ContactCandidate> candidates_;
   ContactIncrement increment_{};
   double tangent_sensitivity_floor_ = 0.0;
-  ActiveSet active_;                     ///< per candidate
-  std::vector<double> gap_;              ///< per candidate, h at the last iterate asked
-  std::vector<Eigen::Vector3d> sliding_; ///< per candidate, w at the last iterate asked
-  FrictionDual dual_;                    ///< per candidate
+  ActiveSet active_;        ///< per candidate
+  std::vector<double> gap_; ///< per candidate, h at the last iterate asked
+  FrictionDual dual_;       ///< per candidate
 };
 
 /// Tributary boundary area of each node (mm²): a third of each adjacent

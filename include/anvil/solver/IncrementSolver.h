@@ -121,6 +121,10 @@ private:
   /// Tangents of the next evaluations: Newton's far phase (rate sensitivity
   /// floored, kFarSensitivity) or the consistent tangent.
   void set_tangent_phase(const IncrementProblem& problem, bool far);
+  /// The next evaluation is the line search's trial at `step` from the last
+  /// iterate: Newton's own directions (fem/strain_rate_dual.h,
+  /// contact/FrictionDual.h) move with it.
+  void set_line_search_step(const IncrementProblem& problem, double step);
 
   fem::Partition partition_;
   std::vector<char> owned_nodes_; ///< per node, 1 when this process owns its rows; empty on one process
