@@ -293,8 +293,8 @@ void BodyContact::start(const Eigen::VectorXd& nodal) {
   dual_.start(
       points_.size(), [&](std::size_t i) { return sliding(points_[i], nodal); }, increment_.regularisation);
 }
-bool BodyContact::consistent(const Eigen::VectorXd& nodal) {
-  return active_.consistent(gaps(nodal));
+bool BodyContact::consistent(const Eigen::VectorXd& nodal, bool converged) {
+  return active_.consistent(gaps(nodal), converged);
 }
 bool BodyContact::linear() const {
   return std::all_of(pairs_.begin(), pairs_.end(), [](const BodyPair& p) { return is_linear(p.friction); });

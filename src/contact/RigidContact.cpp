@@ -80,8 +80,8 @@ void RigidContact::start(const Eigen::VectorXd& nodal) {
       candidates_.size(), [&](std::size_t i) { return sliding(candidates_[i], nodal); }, increment_.regularisation);
 }
 
-bool RigidContact::consistent(const Eigen::VectorXd& nodal) {
-  return active_.consistent(gaps(nodal));
+bool RigidContact::consistent(const Eigen::VectorXd& nodal, bool converged) {
+  return active_.consistent(gaps(nodal), converged);
 }
 
 bool RigidContact::linear() const {

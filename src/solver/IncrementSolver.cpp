@@ -292,6 +292,15 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   // phase, forcing), so a run whose round-off puts it just past the budget
   // follows the path of a run with a larger one.
   constexpr int kMaxSetChanges = 10;
+  // A frozen active set is checked from this multiple of the tolerance on
+  // (contact/ActiveSet.h), not only at convergence: where a contact zone's
+  // edge recedes one node per check, each converged set cost the quadratic
+  // tail from here to the tolerance. Measured on the connecting rod's whole
+  // run: 244 of its 1,291 Newton iterations lay between the first iterate
+  // below 1e-4 and a change at convergence (81 changes); checking from here,
+  // 1,229 iterations, largest per increment 21 -> 20. From 1e-2 on (1e4 x):
+  // 8.8 per increment against 8.9, with twice the set changes.
+  constexpr double kSetCheck = 100.0;
   int phase_start = 0, set_changes = 0;
   bool second_budget = true;
   for (int it = 1;; ++it) {
@@ -424,21 +433,29 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     // A full step of a linear problem is its solution: no further step to measure.
     const bool increment_small =
         record.increment <= settings.increment_tolerance || (linear_problem && step == 1.0 && !set_changed);
-    if (record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance && increment_small) {
+    const bool converged =
+        record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance && increment_small;
+    const bool near_convergence = !set_changed && record.force_residual <= kSetCheck * settings.tolerance &&
+                                  record.flux_residual <= kSetCheck * settings.tolerance &&
+                                  std::none_of(problem.nodal_terms.begin(), problem.nodal_terms.end(),
+                                               [](const NodalTerm* term) { return term->set_follows_iterates(); });
+    if ((converged || near_convergence) && set_changes < kMaxSetChanges) {
       bool consistent = true;
-      if (set_changes < kMaxSetChanges)
-        for (NodalTerm* term : problem.nodal_terms)
-          consistent = term->consistent(unknowns.nodal) && consistent;
+      for (NodalTerm* term : problem.nodal_terms)
+        consistent = term->consistent(unknowns.nodal, converged) && consistent;
       if (!consistent) {
         phase_start = it;
         ++set_changes;
-        // The active set changed: the converged field belongs to another
-        // problem; go on from it with the new set.
+        // The active set changed: the field belongs to another problem; go
+        // on from it with the new set.
         evaluate_with_new_set();
         set_changed = true;
-        if (settings.verbose) log::detail("    active set changed at convergence: Newton goes on");
+        if (settings.verbose)
+          log::detail("    active set changed at %s: Newton goes on", converged ? "convergence" : "near convergence");
         continue;
       }
+    }
+    if (converged) {
       report.converged = true;
       return report;
     }

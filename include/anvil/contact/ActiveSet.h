@@ -14,8 +14,17 @@
 // cycle, and the union of the two sets is taken and accepted once Newton
 // converges with it (no node inside a die; those it adds carry a small
 // tension for the increment).
+// Newton need not converge a set it is about to leave: near convergence
+// (IncrementSolver) the set may move to one it has not had in this increment,
+// so a contact zone whose edge recedes node by node does not pay a full
+// quadratic tail per node. There a constraint changes side only if it is
+// beyond the tolerance by more than the last Newton step moved its h (the
+// step bounds the iterate's error once Newton converges superlinearly); a
+// set it has had waits for convergence, so these moves cannot cycle, and only
+// sets Newton converged with count as a cycle.
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -32,15 +41,20 @@ public:
     frozen_ = false;
     iterations_ = 0;
     converged_with_.clear();
+    left_near_convergence_.clear();
     settled_ = false;
     for (std::size_t i = 0; i < active_.size(); ++i)
       active_[i] = gap[i] >= -tolerance_;
+    gap_last_ = gap;
+    gap_before_ = gap;
   }
   /// An accepted Newton iterate: the set follows h until it freezes. Returns the log note.
   std::string accept(const std::vector<double>& gap, const char* what) {
     int activated = 0, released = 0, active = 0;
+    gap_before_.swap(gap_last_);
+    gap_last_ = gap;
     for (std::size_t i = 0; i < active_.size(); ++i) {
-      const char now = frozen_ ? active_[i] : wants(i, gap[i]);
+      const char now = frozen_ ? active_[i] : wants(i, gap[i], 0.0);
       activated += now && !active_[i];
       released += !now && active_[i];
       active += now;
@@ -51,16 +65,25 @@ public:
     return std::string("  ") + what + " " + std::to_string(active) + " (+" + std::to_string(activated) + " -" +
            std::to_string(released) + ")" + (frozen_ ? " frozen" : "");
   }
-  /// Newton converged: true if the set agrees with h (or the set is a
-  /// cycle's union, above); otherwise it is updated.
-  bool consistent(const std::vector<double>& gap) {
+  /// Newton converged (`converged`) or is near convergence: true if the set
+  /// agrees with h (or the set is a cycle's union, above); otherwise it is
+  /// updated. Near convergence `gap` is that of the last accepted iterate,
+  /// a constraint changes only beyond its error, and a set already had in
+  /// this increment is left for the check at convergence.
+  bool consistent(const std::vector<double>& gap, bool converged) {
     if (settled_) return true;
     std::vector<char> now(active_.size());
     for (std::size_t i = 0; i < active_.size(); ++i)
-      now[i] = wants(i, gap[i]);
+      now[i] = wants(i, gap[i], converged ? 0.0 : std::abs(gap[i] - gap_before_[i]));
     if (now == active_) return true;
+    if (!converged) {
+      if (had(left_near_convergence_, now) || had(converged_with_, now)) return true;
+      left_near_convergence_.push_back(active_);
+      active_.swap(now);
+      return false;
+    }
     converged_with_.push_back(active_);
-    if (std::find(converged_with_.begin(), converged_with_.end(), now) != converged_with_.end()) {
+    if (had(converged_with_, now)) {
       for (std::size_t i = 0; i < active_.size(); ++i)
         now[i] = now[i] || active_[i];
       settled_ = true;
@@ -84,12 +107,20 @@ public:
   }
 
 private:
-  bool wants(std::size_t i, double h) const { return active_[i] ? h > -tolerance_ : h > tolerance_; }
+  /// The side constraint i wants with gap velocity h known to within `error`.
+  bool wants(std::size_t i, double h, double error) const {
+    return active_[i] ? h + error > -tolerance_ : h - error > tolerance_;
+  }
+  static bool had(const std::vector<std::vector<char>>& sets, const std::vector<char>& set) {
+    return std::find(sets.begin(), sets.end(), set) != sets.end();
+  }
 
   std::vector<char> active_;
-  std::vector<std::vector<char>> converged_with_; ///< the sets Newton converged with in this increment
-  bool settled_ = false;                          ///< a cycle's union taken: accepted at the next convergence
-  double tolerance_ = 0.0;                        ///< mm/s
+  std::vector<std::vector<char>> converged_with_;        ///< the sets Newton converged with in this increment
+  std::vector<std::vector<char>> left_near_convergence_; ///< the sets left before Newton converged with them
+  std::vector<double> gap_last_, gap_before_;            ///< h at the last two accepted iterates
+  bool settled_ = false;                                 ///< a cycle's union taken: accepted at the next convergence
+  double tolerance_ = 0.0;                               ///< mm/s
   bool frozen_ = false;
   int iterations_ = 0;
   int last_changes_ = 0;

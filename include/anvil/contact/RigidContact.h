@@ -50,7 +50,7 @@ public:
            const std::vector<char>* rows = nullptr) const override;
   void start(const Eigen::VectorXd& nodal) override;
   std::string accept(const Eigen::VectorXd& nodal) override;
-  bool consistent(const Eigen::VectorXd& nodal) override;
+  bool consistent(const Eigen::VectorXd& nodal, bool converged) override;
   bool set_changed() const override { return active_.last_changes() > 0; }
   bool set_follows_iterates() const override { return active_.following(); }
   bool linear() const override;

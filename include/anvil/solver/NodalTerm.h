@@ -33,10 +33,12 @@ public:
   /// Called once per accepted Newton iterate: a short note for the log (e.g.
   /// active-set changes); may update the term's own bookkeeping.
   virtual std::string accept(const Eigen::VectorXd& nodal) = 0;
-  /// Called when Newton has converged with the term as it stands: true if its
-  /// internal choices (an active set) agree with `nodal`; false if it changed
-  /// them, and Newton must go on.
-  virtual bool consistent(const Eigen::VectorXd& nodal) = 0;
+  /// Called when Newton has converged with the term as it stands
+  /// (`converged`), or is near convergence: true if its internal choices (an
+  /// active set) agree with `nodal`; false if it changed them, and Newton must
+  /// go on. Near convergence a term may keep choices it would change at
+  /// convergence (contact/ActiveSet.h).
+  virtual bool consistent(const Eigen::VectorXd& nodal, bool converged) = 0;
   /// True when the last accept() changed the term's active set.
   virtual bool set_changed() const = 0;
   /// True while the next accept() may change the active set (the set follows

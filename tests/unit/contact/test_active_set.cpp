@@ -1,6 +1,7 @@
 // The active set of a penalty contact term (contact/ActiveSet.h): checked at
 // Newton's convergence, updated beyond its tolerance, a cycle between two
-// sets ended by their union.
+// sets ended by their union; near convergence, moved only to a set not yet
+// had in the increment.
 #include "test_common.h"
 
 #include "anvil/contact/ActiveSet.h"
@@ -28,8 +29,9 @@ TEST_CASE(
   set.set_tolerance(0.1);
   set.start({1.0, 1.0, -1.0}); // closing, closing, opening
   CHECK(members(set) == std::vector<int>{0, 1});
-  CHECK(set.consistent({0.5, -0.05, -0.05})); // within the tolerance: a touching node stays, a free one stays free
-  CHECK(!set.consistent({0.5, -0.5, 0.5}));   // tensile node 1 released, node 2 penetrating added
+  CHECK(
+      set.consistent({0.5, -0.05, -0.05}, true)); // within the tolerance: a touching node stays, a free one stays free
+  CHECK(!set.consistent({0.5, -0.5, 0.5}, true)); // tensile node 1 released, node 2 penetrating added
   CHECK(members(set) == std::vector<int>{0, 2});
 }
 
@@ -43,15 +45,50 @@ TEST_CASE("A cycle between two active sets at convergence ends with their union,
   set.set_tolerance(0.1);
   set.start({1.0, 1.0, 1.0});
   REQUIRE(members(set) == std::vector<int>{0, 1, 2});
-  CHECK(!set.consistent(with_node_2)); // converged with {0, 1, 2}: node 2 is released
+  CHECK(!set.consistent(with_node_2, true)); // converged with {0, 1, 2}: node 2 is released
   CHECK(members(set) == std::vector<int>{0, 1});
   // Converged with {0, 1}: node 2 asks back in, a set already converged
   // with: the union {0, 1, 2}, one more Newton run ...
-  CHECK(!set.consistent(without_node_2));
+  CHECK(!set.consistent(without_node_2, true));
   CHECK(members(set) == std::vector<int>{0, 1, 2});
-  CHECK(set.consistent(with_node_2)); // ... whose result is accepted, node 2's tension and all
+  CHECK(set.consistent(with_node_2, true)); // ... whose result is accepted, node 2's tension and all
   CHECK(members(set) == std::vector<int>{0, 1, 2});
   // A new increment starts without the history.
   set.start({1.0, 1.0, 1.0});
-  CHECK(!set.consistent(with_node_2));
+  CHECK(!set.consistent(with_node_2, true));
+}
+
+TEST_CASE("Near convergence an active set moves beyond the last step's reach to a set it has not had, and leaves a "
+          "return to the check at convergence",
+          "[unit][contact]") {
+  // A contact zone's edge receding: node 2 tensile, then node 1 once 2 is free.
+  ActiveSet set;
+  set.resize(3);
+  set.set_tolerance(0.1);
+  set.start({1.0, 1.0, 1.0});
+  set.accept({1.0, 1.0, 1.0}, "nodes");
+  set.accept({1.0, 1.0, 1.0}, "nodes");
+  set.accept({1.0, 1.0, 0.3}, "nodes");
+  REQUIRE(!set.following()); // frozen: from here on only the checks change it
+  set.accept({1.0, 1.0, -0.3}, "nodes");
+  // h of node 2 is -0.3 but the last step moved it by 0.6: it may yet be in contact.
+  CHECK(set.consistent({1.0, 1.0, -0.3}, false));
+  CHECK(members(set) == std::vector<int>{0, 1, 2});
+  set.accept({1.0, 1.0, -0.25}, "nodes");
+  CHECK(!set.consistent({1.0, 1.0, -0.25}, false)); // beyond the tolerance by more than the step: released at once
+  CHECK(members(set) == std::vector<int>{0, 1});
+  set.accept({1.0, -0.5, 0.5}, "nodes");
+  set.accept({1.0, -0.5, 0.5}, "nodes");
+  CHECK(!set.consistent({1.0, -0.5, 0.5}, false)); // node 1 released; node 2 asks back in, to a set not had
+  CHECK(members(set) == std::vector<int>{0, 2});
+  // The set {0, 1} was had: a move back to it waits for convergence ...
+  set.accept({1.0, 1.0, -0.5}, "nodes");
+  set.accept({1.0, 1.0, -0.5}, "nodes");
+  CHECK(set.consistent({1.0, 1.0, -0.5}, false));
+  CHECK(members(set) == std::vector<int>{0, 2});
+  // ... where it is taken, and the cycle rule counts only converged sets:
+  // {0, 2} converged, {0, 1} not yet.
+  CHECK(!set.consistent({1.0, 1.0, -0.5}, true));
+  CHECK(members(set) == std::vector<int>{0, 1});
+  CHECK(set.consistent({1.0, 1.0, -0.05}, true));
 }
