@@ -93,6 +93,12 @@ double max_velocity(const Eigen::VectorXd& nodal) {
     if (d % kDofsPerNode != 3) v = std::max(v, std::abs(nodal[d]));
   return v;
 }
+
+/// True while a contact term's active set still follows the iterates (not yet frozen).
+bool set_follows(const IncrementProblem& problem) {
+  return std::any_of(problem.nodal_terms.begin(), problem.nodal_terms.end(),
+                     [](const NodalTerm* term) { return term->set_follows_iterates(); });
+}
 } // namespace
 
 IncrementSolver::IncrementSolver(const mesh::TetMesh& mesh, std::vector<char> prescribed,
@@ -339,9 +345,8 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     } else {
       far_stalls = 0;
     }
-    const bool set_follows = std::any_of(problem.nodal_terms.begin(), problem.nodal_terms.end(),
-                                         [](const NodalTerm* term) { return term->set_follows_iterates(); });
-    forcing = krylov_tolerance(settings, linear_problem, set_follows, residual_now, previous_residual, forcing);
+    forcing =
+        krylov_tolerance(settings, linear_problem, set_follows(problem), residual_now, previous_residual, forcing);
     previous_residual = residual_now;
     const bool first_cut = it == 2 && !far && report.iterations.back().step <= kFarCut && residual_now > kNearSolution;
     if ((it == 1 && residual_now > kFarStart) || first_cut) { // this iterate's tangent again, stiffened
@@ -436,9 +441,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     const bool converged =
         record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance && increment_small;
     const bool near_convergence = !set_changed && record.force_residual <= kSetCheck * settings.tolerance &&
-                                  record.flux_residual <= kSetCheck * settings.tolerance &&
-                                  std::none_of(problem.nodal_terms.begin(), problem.nodal_terms.end(),
-                                               [](const NodalTerm* term) { return term->set_follows_iterates(); });
+                                  record.flux_residual <= kSetCheck * settings.tolerance && !set_follows(problem);
     if ((converged || near_convergence) && set_changes < kMaxSetChanges) {
       bool consistent = true;
       for (NodalTerm* term : problem.nodal_terms)
