@@ -62,8 +62,8 @@ std::string fault(const TetMesh& mesh) {
   return {};
 }
 
-void remove_tets(TetMesh& mesh, const std::vector<char>& removed, const std::vector<Triangle>& tagged,
-                 const std::vector<int>& tags) {
+std::vector<int> remove_tets(TetMesh& mesh, const std::vector<char>& removed, const std::vector<Triangle>& tagged,
+                             const std::vector<int>& tags) {
   std::vector<Tet> tets;
   for (int e = 0; e < mesh.tet_count(); ++e)
     if (!removed[e]) tets.push_back(mesh.tets[e]);
@@ -72,8 +72,13 @@ void remove_tets(TetMesh& mesh, const std::vector<char>& removed, const std::vec
     for (int v : t)
       number[v] = 0;
   std::vector<Point> nodes;
+  std::vector<int> old_node;
   for (std::size_t n = 0; n < mesh.nodes.size(); ++n)
-    if (number[n] == 0) number[n] = static_cast<int>(nodes.size()), nodes.push_back(mesh.nodes[n]);
+    if (number[n] == 0) {
+      number[n] = static_cast<int>(nodes.size());
+      nodes.push_back(mesh.nodes[n]);
+      old_node.push_back(static_cast<int>(n));
+    }
   for (Tet& t : tets)
     for (int& v : t)
       v = number[v];
@@ -88,6 +93,7 @@ void remove_tets(TetMesh& mesh, const std::vector<char>& removed, const std::vec
   mesh.nodes = std::move(nodes);
   mesh.tets = std::move(tets);
   build_boundary(mesh, kept_tagged, kept_tags);
+  return old_node;
 }
 
 void validate(const TetMesh& mesh, const std::string& source) {

@@ -22,8 +22,9 @@ Edge edge(int a, int b) {
 
 /// One pass over the tets: removes those that qualify and touch no node of
 /// another removed in the pass (each decision sees the surface as it is).
-/// Returns how many it removed.
-int peel_once(TetMesh& mesh, double below, double ears_below) {
+/// Returns how many it removed; `old_node` becomes, per node left, its
+/// number before.
+int peel_once(TetMesh& mesh, double below, double ears_below, int frozen, std::vector<int>& old_node) {
   std::map<Triangle, int> face_of; // sorted vertices -> boundary face
   std::set<Edge> boundary_edges;
   for (std::size_t f = 0; f < mesh.boundary_faces.size(); ++f) {
@@ -59,7 +60,7 @@ int peel_once(TetMesh& mesh, double below, double ears_below) {
     return plane == planes.end() || in_plane(mesh, face, plane->second);
   };
   int count = 0;
-  for (int e = 0; e < mesh.tet_count(); ++e) {
+  for (int e = frozen; e < mesh.tet_count(); ++e) {
     const Tet& t = mesh.tets[e];
     if (touched[t[0]] || touched[t[1]] || touched[t[2]] || touched[t[3]]) continue;
     const double q = quality(mesh, e);
@@ -123,21 +124,31 @@ int peel_once(TetMesh& mesh, double below, double ears_below) {
   }
   if (count == 0) return 0;
 
-  remove_tets(mesh, removed, tagged, tags);
+  old_node = remove_tets(mesh, removed, tagged, tags);
   return count;
 }
 
 } // namespace
 
-int peel_boundary_slivers(TetMesh& mesh, double below, double ears_below) {
+int peel_boundary_slivers(TetMesh& mesh, double below, double ears_below, int frozen, std::vector<int>* old_node) {
   int peeled = 0;
+  if (old_node) {
+    old_node->resize(mesh.nodes.size());
+    for (std::size_t n = 0; n < old_node->size(); ++n)
+      (*old_node)[n] = static_cast<int>(n);
+  }
   // A pass uncovers at most the tets under the ones it removed; a few passes
   // reach every sliver stacked on a crease.
   constexpr int kMostPasses = 8;
   for (int pass = 0; pass < kMostPasses; ++pass) {
-    const int now = peel_once(mesh, below, ears_below);
+    std::vector<int> left;
+    const int now = peel_once(mesh, below, ears_below, frozen, left);
     if (now == 0) break;
     peeled += now;
+    if (!old_node) continue;
+    for (std::size_t n = 0; n < left.size(); ++n) // left[n] >= n: read before it is written
+      (*old_node)[n] = (*old_node)[left[n]];
+    old_node->resize(left.size());
   }
   return peeled;
 }

@@ -55,6 +55,11 @@ constexpr double kWidestFeatureAngle = 80.0;
 constexpr double kProgressEvery = 5.0;
 /// Bisections of the coarsening that meets the node budget (to 1e-9 of it).
 constexpr int kCoarsenBisections = 40;
+/// Why a remeshed body is refused though a manifold: it was a ball and is
+/// no longer (mesh::is_ball). CGAL then refuses to build a triangulation
+/// from it at every remesh after (the connecting rod near closure).
+constexpr const char* kNotBall =
+    "a body no longer bounded by one closed surface (a second part, a cavity or a hole through)";
 /// Why a try run beside a good enough one was not made to its end (never taken up).
 constexpr const char* kNotNeeded = "stopped: another try was good enough";
 
@@ -160,6 +165,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   // worst element is crushed further by the next increments until one
   // inverts (the connecting rod under a die edge: 0.001 kept against 0.04).
   const double volume = mesh::volume(part), floor = std::min(spec.worst_allowed_quality(), worst_quality(part));
+  const bool ball = mesh::is_ball(part);
   // Why try `t` cannot replace the body's mesh; empty when it can.
   auto fault = [&](const Remeshed& t) {
     if (!t.failed.empty()) return t.failed;
@@ -175,6 +181,8 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
                     t.worst, floor);
     else if (const std::string pinch = mesh::manifold_fault(t.mesh); !pinch.empty())
       return "the new mesh is not a manifold: " + pinch;
+    else if (ball && !mesh::is_ball(t.mesh))
+      return std::string(kNotBall);
     else if (const std::string lost = scene::condition_losing_faces(body.conditions, part, t.mesh); !lost.empty())
       return "the new mesh has no face for boundary " + lost;
     return std::string(text);
@@ -323,6 +331,9 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
         if (const std::string pinch = mesh::manifold_fault(local->mesh); !pinch.empty()) {
           whole = "the local remesh left a body that is not a manifold: " + pinch;
           local.reset();
+        } else if (mesh::is_ball(part) && !mesh::is_ball(local->mesh)) {
+          whole = std::string("the local remesh left ") + kNotBall;
+          local.reset();
         }
     };
     if (why->local) try_region(Region::due);
@@ -396,6 +407,9 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
         log::info("    surface mended where its elements were poor: %d edges flipped, %d short edges collapsed; "
                   "volume %+.4f%%",
                   local->flips, local->collapses, 100.0 * record.volume_change);
+      if (local->peeled > 0)
+        log::info("    %d flat elements on sharp edges of the kept surface taken off; volume %+.4f%% by this remesh",
+                  local->peeled, 100.0 * record.volume_change);
       if (!kept_surface)
         log_fit(local->put_back, local->volume_remeshed, local->volume_put_back, local->given_back, volume_after);
       continue;

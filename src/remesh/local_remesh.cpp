@@ -1,6 +1,7 @@
 #include "anvil/remesh/local_remesh.h"
 
 #include "anvil/core/error.h"
+#include "anvil/mesh/boundary_slivers.h"
 #include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/field_transfer.h"
@@ -319,6 +320,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   // with why_not, when it failed or left an element below the trigger.
   auto rebuild = [&](RegionSurface surface, std::span<const char> pinned) {
     out.surface = surface;
+    out.peeled = 0;
     try {
       local = remesh_region(part, region, settings, surface, pinned);
     } catch (const RunError& error) {
@@ -352,6 +354,21 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
       }
     }
     out.worst = worst_quality(local.mesh); // the kept tets too: a border bisection splits some
+    if (out.worst < spec.quality && surface == RegionSurface::kept) {
+      // CGAL cannot change a kept surface: where it folds to a sharp edge
+      // (a lap starting at a die's rim, on the connecting rod), it leaves a
+      // flat element with two faces on it, and the whole body went to a
+      // remesh for it. Taken off, the surface keeps its nodes and the kept
+      // tets stay as they are (mesh/boundary_slivers.h).
+      std::vector<int> left;
+      if (const int peeled = mesh::peel_boundary_slivers(local.mesh, spec.quality, 0.0, local.kept_tets, &left)) {
+        for (int& node : left)
+          node = local.old_node[node];
+        local.old_node = std::move(left);
+        out.peeled = peeled;
+        out.worst = worst_quality(local.mesh);
+      }
+    }
     if (out.worst >= spec.quality) return true;
     std::snprintf(text, sizeof text, "a local remesh of %d elements, its surface %s, left worst quality %.3f",
                   out.rebuilt, surface == RegionSurface::kept ? "kept" : "rebuilt", out.worst);

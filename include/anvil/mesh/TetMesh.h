@@ -122,8 +122,9 @@ TetMesh extract(const TetMesh& mesh, const MeshRange& range);
 /// Removes the tets `removed` flags and the nodes no tet uses then (the
 /// others keep their order), and rebuilds the boundary with the tags of
 /// `tagged` (build_boundary; triangles on a dropped node are left out).
-void remove_tets(TetMesh& mesh, const std::vector<char>& removed, const std::vector<Triangle>& tagged,
-                 const std::vector<int>& tags);
+/// Returns, per node left, its number before.
+std::vector<int> remove_tets(TetMesh& mesh, const std::vector<char>& removed, const std::vector<Triangle>& tagged,
+                             const std::vector<int>& tags);
 
 /// The mesh of `tets` (node indices into `nodes`) with only the nodes they
 /// use, numbered in their order of first use; no boundary.

@@ -6,6 +6,8 @@
 #pragma once
 #include "anvil/mesh/TetMesh.h"
 
+#include <vector>
+
 namespace anvil::mesh {
 
 /// Removes the tets of `mesh` below quality `below` that have two or three
@@ -20,7 +22,10 @@ namespace anvil::mesh {
 /// quality × edge³) and turns its other faces into boundary faces, tagged
 /// as the removed face that faces most the same way. Repeated while the
 /// tets it uncovers qualify. Returns how many tets it removed; the
-/// boundary is rebuilt when any.
-int peel_boundary_slivers(TetMesh& mesh, double below, double ears_below);
+/// boundary is rebuilt when any. The first `frozen` tets stay, first and
+/// in their order (a local remesh's kept tets); `old_node`, when given,
+/// gets per node left its number before (an ear's node goes with it).
+int peel_boundary_slivers(TetMesh& mesh, double below, double ears_below, int frozen = 0,
+                          std::vector<int>* old_node = nullptr);
 
 } // namespace anvil::mesh

@@ -40,6 +40,7 @@ struct LocalRemesh {
   int rebuilt = 0;                         ///< tets of the old mesh rebuilt
   int flips = 0;                           ///< surface edges flipped (surface_mending.h), nodes unmoved
   int collapses = 0;                       ///< short surface edges collapsed, a node gone each
+  int peeled = 0;                          ///< flat tets on a sharp edge of the kept surface taken off
   RegionSurface surface = RegionSurface::kept;
   double worst = 1.0; ///< worst quality of the rebuilt region
   /// With the surface rebuilt: the volume (mm³) of CGAL's mesh and after the

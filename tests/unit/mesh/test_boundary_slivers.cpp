@@ -4,6 +4,7 @@
 #include "anvil/mesh/generators.h"
 #include "anvil/mesh/tet_geometry.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 using namespace anvil;
@@ -155,4 +156,31 @@ TEST_CASE("An ear above the bound goes where it covers a poorer flat tet, which 
   CHECK(box.tets == before.tets);
   CHECK(mesh::volume(box) == Approx(mesh::volume(before)).epsilon(1e-14));
   CHECK(mesh::fault(box).empty());
+}
+
+TEST_CASE("Frozen tets stay, first and in their order, and the nodes left are mapped to their numbers before",
+          "[unit][mesh]") {
+  // The cap of the first test, put first: frozen, it stays; put last
+  // behind the frozen box, it goes with its apex node (the last), and
+  // every node left keeps its number.
+  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
+  const mesh::TetMesh before = box;
+  add_cap(box);
+  mesh::build_boundary(box, before.boundary_faces, before.boundary_tags);
+  mesh::TetMesh cap_first = box;
+  std::rotate(cap_first.tets.begin(), cap_first.tets.end() - 1, cap_first.tets.end());
+  const mesh::TetMesh capped = cap_first;
+  std::vector<int> old_node;
+
+  CHECK(mesh::peel_boundary_slivers(cap_first, 0.05, 0.0, 1, &old_node) == 0);
+  CHECK(cap_first.tets == capped.tets);
+  REQUIRE(old_node.size() == capped.nodes.size());
+  for (int n = 0; n < capped.node_count(); ++n)
+    CHECK(old_node[n] == n);
+
+  CHECK(mesh::peel_boundary_slivers(box, 0.05, 0.0, before.tet_count(), &old_node) == 1);
+  CHECK(box.tets == before.tets);
+  REQUIRE(old_node.size() == before.nodes.size());
+  for (int n = 0; n < before.node_count(); ++n)
+    CHECK(old_node[n] == n);
 }
