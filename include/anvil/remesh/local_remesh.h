@@ -76,7 +76,8 @@ std::vector<char> contact_surface(const mesh::TetMesh& part, std::span<const int
 /// or around the die corners of `due`, the rest kept bit for bit with its
 /// fields; the fields transferred in the rebuilt region only. Poor elements
 /// held by the surface are first mended on it (surface_mending.h). The
-/// region's surface is kept when that is enough; it is rebuilt around a die corner,
+/// region's surface is kept when that is enough (a flat element CGAL leaves
+/// on a sharp edge of it taken off); it is rebuilt around a die corner,
 /// or when the poor elements are held by the surface, and then its new
 /// nodes are put onto the dies and the material `material` (mm³) kept on
 /// its new free surface. Nothing, with `why_not` saying why, when the
