@@ -358,8 +358,8 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     if (out.worst < spec.quality && surface == RegionSurface::kept) {
       // CGAL cannot change a kept surface: where it folds to a sharp edge
       // (a lap starting at a die's rim, on the connecting rod), it leaves a
-      // flat element with two faces on it, and the whole body went to a
-      // remesh for it. Taken off, the surface keeps its nodes and the kept
+      // flat element with two faces on it, which would send the whole body
+      // to a remesh. Taken off, the surface keeps its nodes and the kept
       // tets stay as they are (mesh/boundary_slivers.h).
       std::vector<int> left;
       if (const int peeled = mesh::peel_boundary_slivers(local.mesh, spec.quality, 0.0, local.kept_tets, &left)) {
