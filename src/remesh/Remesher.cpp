@@ -55,11 +55,6 @@ constexpr double kWidestFeatureAngle = 80.0;
 constexpr double kProgressEvery = 5.0;
 /// Bisections of the coarsening that meets the node budget (to 1e-9 of it).
 constexpr int kCoarsenBisections = 40;
-/// Why a remeshed body is refused though a manifold: it was a ball and is
-/// no longer (mesh::is_ball). CGAL then refuses to build a triangulation
-/// from it at every remesh after (the connecting rod near closure).
-constexpr const char* kNotBall =
-    "a body no longer bounded by one closed surface (a second part, a cavity or a hole through)";
 /// Why a try run beside a good enough one was not made to its end (never taken up).
 constexpr const char* kNotNeeded = "stopped: another try was good enough";
 
@@ -84,11 +79,24 @@ private:
   std::jthread thread_; ///< last: stopped and joined before the mutex goes
 };
 
-/// Remeshes `part`, body `b` of `state` (`in_old` locates points in it),
-/// fitted to the dies; nothing, with `refused` saying why, when no try keeps
-/// the body's volume and an acceptable worst quality.
+/// What is wrong with the shape of a remeshed body `after` (to follow "it
+/// is"), empty when nothing: it is not a manifold, or it was a ball
+/// (`was_ball`, mesh::is_ball) and is no longer, from which CGAL refuses to
+/// build a triangulation at every remesh after (the connecting rod near
+/// closure).
+std::string shape_fault(bool was_ball, const mesh::TetMesh& after) {
+  if (const std::string pinch = mesh::manifold_fault(after); !pinch.empty()) return "not a manifold: " + pinch;
+  if (was_ball && !mesh::is_ball(after))
+    return "no longer bounded by one closed surface (a second part, a cavity or a hole through)";
+  return {};
+}
+
+/// Remeshes `part`, body `b` of `state` (`in_old` locates points in it;
+/// `ball`: whether it is one, mesh::is_ball), fitted to the dies; nothing,
+/// with `refused` saying why, when no try keeps the body's volume and an
+/// acceptable worst quality.
 std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunState& state, int b,
-                                    const mesh::TetMesh& part, const PointLocator& in_old,
+                                    const mesh::TetMesh& part, bool ball, const PointLocator& in_old,
                                     std::span<const int> touching_die, std::span<const double> rate, double material,
                                     std::string& refused) {
   const scene::RemeshSpec& spec = scene.input.remeshing;
@@ -165,7 +173,6 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   // worst element is crushed further by the next increments until one
   // inverts (the connecting rod under a die edge: 0.001 kept against 0.04).
   const double volume = mesh::volume(part), floor = std::min(spec.worst_allowed_quality(), worst_quality(part));
-  const bool ball = mesh::is_ball(part);
   // Why try `t` cannot replace the body's mesh; empty when it can.
   auto fault = [&](const Remeshed& t) {
     if (!t.failed.empty()) return t.failed;
@@ -179,10 +186,8 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
                     "its worst element has quality %.3f, below %.3g (a third of remeshing.quality, or the old mesh's "
                     "worst)",
                     t.worst, floor);
-    else if (const std::string pinch = mesh::manifold_fault(t.mesh); !pinch.empty())
-      return "the new mesh is not a manifold: " + pinch;
-    else if (ball && !mesh::is_ball(t.mesh))
-      return std::string(kNotBall);
+    else if (const std::string shape = shape_fault(ball, t.mesh); !shape.empty())
+      return "the new mesh is " + shape;
     else if (const std::string lost = scene::condition_losing_faces(body.conditions, part, t.mesh); !lost.empty())
       return "the new mesh has no face for boundary " + lost;
     return std::string(text);
@@ -321,6 +326,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     // overlap, poor elements the region could not mend) goes on remeshing
     // freely: keeping the contact surface did not lower its load jump on
     // the hub flange (docs/remeshing.md).
+    const bool ball = mesh::is_ball(part);
     std::optional<LocalRemesh> local;
     std::string whole;
     Region region = Region::due;
@@ -328,11 +334,8 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
       region = choice;
       local = remesh_locally(scene, state, int(b), *why, body_fields(), material_before[b], time_step, choice, whole);
       if (local)
-        if (const std::string pinch = mesh::manifold_fault(local->mesh); !pinch.empty()) {
-          whole = "the local remesh left a body that is not a manifold: " + pinch;
-          local.reset();
-        } else if (mesh::is_ball(part) && !mesh::is_ball(local->mesh)) {
-          whole = std::string("the local remesh left ") + kNotBall;
+        if (const std::string shape = shape_fault(ball, local->mesh); !shape.empty()) {
+          whole = "the local remesh left a body that is " + shape;
           local.reset();
         }
     };
@@ -430,7 +433,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     const PointLocator in_old(part);
     std::string refused;
     const std::optional<Remeshed> tried =
-        remesh_part(scene, state, int(b), part, in_old, touching_die.subspan(range.first_node, range.node_count),
+        remesh_part(scene, state, int(b), part, ball, in_old, touching_die.subspan(range.first_node, range.node_count),
                     rate.subspan(range.first_tet, range.tet_count), material_before[b], refused);
     if (!tried) {
       // No silent loss of material: the body goes on with its mesh, and the

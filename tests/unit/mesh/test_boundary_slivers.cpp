@@ -51,14 +51,20 @@ mesh::Triangle add_cap(mesh::TetMesh& box) {
   return f;
 }
 
+/// `box` with the cap of add_cap on it, its boundary rebuilt with the box's tags.
+mesh::TetMesh capped(const mesh::TetMesh& box) {
+  mesh::TetMesh out = box;
+  add_cap(out);
+  mesh::build_boundary(out, box.boundary_faces, box.boundary_tags);
+  return out;
+}
+
 } // namespace
 
 TEST_CASE("A flat tet with three faces on the surface goes with its apex node, and the box is as before",
           "[unit][mesh]") {
-  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
-  const mesh::TetMesh before = box;
-  add_cap(box);
-  mesh::build_boundary(box, before.boundary_faces, before.boundary_tags);
+  const mesh::TetMesh before = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
+  mesh::TetMesh box = capped(before);
   const double q = mesh::quality(box, box.tet_count() - 1);
   REQUIRE(q < 0.01);
 
@@ -163,10 +169,8 @@ TEST_CASE("Frozen tets stay, first and in their order, and the nodes left are ma
   // The cap of the first test, put first: frozen, it stays; put last
   // behind the frozen box, it goes with its apex node (the last), and
   // every node left keeps its number.
-  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
-  const mesh::TetMesh before = box;
-  add_cap(box);
-  mesh::build_boundary(box, before.boundary_faces, before.boundary_tags);
+  const mesh::TetMesh before = mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0);
+  mesh::TetMesh box = capped(before);
   mesh::TetMesh cap_first = box;
   std::rotate(cap_first.tets.begin(), cap_first.tets.end() - 1, cap_first.tets.end());
   const mesh::TetMesh capped = cap_first;
