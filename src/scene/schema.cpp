@@ -82,9 +82,8 @@ const std::vector<KeySpec>& case_schema() {
                   1e-14, 1e-2),
             "1e-6"),
         with_default(range(key("solver.increment_tolerance", T::number,
-                               "Newton: relative tolerance on the velocity error |dv|/|v| after the last step, "
-                               "estimated from the contraction of the last two steps and never above the last step "
-                               "(a linear problem needs none after a full step)"),
+                               "Newton: relative tolerance on |dv|/|v| of the last step (a linear problem needs none "
+                               "after a full step)"),
                            1e-14, 1),
                      "1e-4"),
         with_default(range(key("solver.max_iterations", T::integer,

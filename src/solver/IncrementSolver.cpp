@@ -308,7 +308,6 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
   // 8.8 per increment against 8.9, with twice the set changes.
   constexpr double kSetCheck = 100.0;
   int phase_start = 0, set_changes = 0;
-  int same_set_start = 0; // the first iteration under the current active set (velocity_error_estimate)
   bool second_budget = true;
   for (int it = 1;; ++it) {
     if (it - phase_start > settings.max_iterations) {
@@ -435,15 +434,10 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     // The residual, tangent and merit above are those of the set before
     // accept(): with a changed set the next direction and its line search
     // would see two problems (a step of 2^-10 and a lost iteration).
-    const std::span<const NewtonIteration> same_set(report.iterations.begin() + same_set_start,
-                                                    report.iterations.end());
-    if (set_changed) {
-      evaluate_with_new_set();
-      same_set_start = it;
-    }
+    if (set_changed) evaluate_with_new_set();
     // A full step of a linear problem is its solution: no further step to measure.
-    const bool increment_small = velocity_error_estimate(same_set) <= settings.increment_tolerance ||
-                                 (linear_problem && step == 1.0 && !set_changed);
+    const bool increment_small =
+        record.increment <= settings.increment_tolerance || (linear_problem && step == 1.0 && !set_changed);
     const bool converged =
         record.force_residual <= settings.tolerance && record.flux_residual <= settings.tolerance && increment_small;
     const bool near_convergence = !set_changed && record.force_residual <= kSetCheck * settings.tolerance &&
@@ -453,7 +447,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
       for (NodalTerm* term : problem.nodal_terms)
         consistent = term->consistent(unknowns.nodal, converged) && consistent;
       if (!consistent) {
-        phase_start = same_set_start = it;
+        phase_start = it;
         ++set_changes;
         // The active set changed: the field belongs to another problem; go
         // on from it with the new set.

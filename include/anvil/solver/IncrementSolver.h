@@ -9,7 +9,6 @@
 #include "anvil/solver/LinearSolver.h"
 #include "anvil/solver/NodalTerm.h"
 
-#include <algorithm>
 #include <span>
 #include <string>
 #include <vector>
@@ -45,25 +44,6 @@ inline bool residual_falling(std::span<const NewtonIteration> iterations) {
   if (iterations.size() < 2) return false;
   const double last = iterations.back().force_residual;
   return last < iterations.front().force_residual && last < iterations[iterations.size() / 2].force_residual;
-}
-
-/// The velocity error of the iterate after the last of `iterations` (one
-/// active set, in order), relative to |v|. The last step bounds the error of
-/// the iterate before it; when the last two steps were full and contract by
-/// θ = |Δv_k| / |Δv_k−1| < 1, the iterate after it is within θ / (1 − θ) of
-/// the last step (the a posteriori bound of a contraction; Deuflhard 2004,
-/// Newton Methods for Nonlinear Problems, §2.1). The estimate is never above
-/// the last step: where Newton contracts slowly the last step is the measure,
-/// as it was before; where it contracts fast it saves the step that would
-/// only confirm it.
-inline double velocity_error_estimate(std::span<const NewtonIteration> iterations) {
-  if (iterations.empty()) return 0.0;
-  const NewtonIteration& last = iterations.back();
-  if (iterations.size() < 2) return last.increment;
-  const NewtonIteration& before = iterations[iterations.size() - 2];
-  if (last.step != 1.0 || before.step != 1.0 || !(last.increment < before.increment)) return last.increment;
-  const double theta = last.increment / before.increment;
-  return last.increment * std::min(1.0, theta / (1.0 - theta));
 }
 
 struct NewtonReport {
