@@ -1,7 +1,7 @@
 // The active set of a penalty contact term (contact/ActiveSet.h): checked at
 // Newton's convergence, updated beyond its tolerance, a cycle between two
-// sets ended by their union; near convergence, moved only to a set not yet
-// had in the increment.
+// sets ended by their union, a release that penetrates at once held;
+// near convergence, moved only to a set not yet had in the increment.
 #include "test_common.h"
 
 #include "anvil/contact/ActiveSet.h"
@@ -11,6 +11,12 @@
 using anvil::contact::ActiveSet;
 
 namespace {
+
+/// Accepted iterates at `gap` until the set no longer follows them.
+void freeze(ActiveSet& set, const std::vector<double>& gap) {
+  while (set.following())
+    set.accept(gap, "nodes");
+}
 
 std::vector<int> members(const ActiveSet& set) {
   std::vector<int> in;
@@ -66,10 +72,7 @@ TEST_CASE("Near convergence an active set moves beyond the last step's reach to 
   set.resize(3);
   set.set_tolerance(0.1);
   set.start({1.0, 1.0, 1.0});
-  set.accept({1.0, 1.0, 1.0}, "nodes");
-  set.accept({1.0, 1.0, 1.0}, "nodes");
-  set.accept({1.0, 1.0, 0.3}, "nodes");
-  REQUIRE(!set.following()); // frozen: from here on only the checks change it
+  freeze(set, {1.0, 1.0, 0.3}); // from here on only the checks change it
   set.accept({1.0, 1.0, -0.3}, "nodes");
   // h of node 2 is -0.3 but the last step moved it by 0.6: it may yet be in contact.
   CHECK(set.consistent({1.0, 1.0, -0.3}, false));
@@ -77,11 +80,13 @@ TEST_CASE("Near convergence an active set moves beyond the last step's reach to 
   set.accept({1.0, 1.0, -0.25}, "nodes");
   CHECK(!set.consistent({1.0, 1.0, -0.25}, false)); // beyond the tolerance by more than the step: released at once
   CHECK(members(set) == std::vector<int>{0, 1});
+  set.accept({1.0, -0.5, -0.5}, "nodes"); // node 2 separates: its release stands
   set.accept({1.0, -0.5, 0.5}, "nodes");
   set.accept({1.0, -0.5, 0.5}, "nodes");
   CHECK(!set.consistent({1.0, -0.5, 0.5}, false)); // node 1 released; node 2 asks back in, to a set not had
   CHECK(members(set) == std::vector<int>{0, 2});
   // The set {0, 1} was had: a move back to it waits for convergence ...
+  set.accept({1.0, 0.0, 0.5}, "nodes");
   set.accept({1.0, 1.0, -0.5}, "nodes");
   set.accept({1.0, 1.0, -0.5}, "nodes");
   CHECK(set.consistent({1.0, 1.0, -0.5}, false));
@@ -91,4 +96,32 @@ TEST_CASE("Near convergence an active set moves beyond the last step's reach to 
   CHECK(!set.consistent({1.0, 1.0, -0.5}, true));
   CHECK(members(set) == std::vector<int>{0, 1});
   CHECK(set.consistent({1.0, 1.0, -0.05}, true));
+}
+
+TEST_CASE("A constraint a check releases that penetrates at the next iterate is put back and held for the increment",
+          "[unit][contact]") {
+  // Node 2 against a die corner: tensile within the set, and once released
+  // the first step drives it into the die.
+  ActiveSet set;
+  set.resize(3);
+  set.set_tolerance(0.1);
+  set.start({1.0, 1.0, 1.0});
+  freeze(set, {1.0, 1.0, 1.0});
+  CHECK(!set.consistent({1.0, 1.0, -0.5}, true)); // converged: node 2 tensile, released
+  CHECK(members(set) == std::vector<int>{0, 1});
+  set.accept({1.0, 1.0, 0.5}, "nodes"); // penetrating one step on: back in
+  CHECK(set.last_changes() == 1);
+  CHECK(members(set) == std::vector<int>{0, 1, 2});
+  CHECK(set.consistent({1.0, 1.0, -0.5}, true)); // held: its tension is accepted
+  CHECK(set.consistent({1.0, 1.0, -0.5}, false));
+  CHECK(members(set) == std::vector<int>{0, 1, 2});
+
+  // Only the first iterate after the release decides; a new increment forgets the hold.
+  set.start({1.0, 1.0, 1.0});
+  freeze(set, {1.0, 1.0, 1.0});
+  CHECK(!set.consistent({1.0, 1.0, -0.5}, true));
+  set.accept({1.0, 1.0, -0.05}, "nodes"); // not penetrating: the release stands
+  set.accept({1.0, 1.0, 0.5}, "nodes");   // frozen: a later penetration waits for the check
+  CHECK(set.last_changes() == 0);
+  CHECK(members(set) == std::vector<int>{0, 1});
 }
