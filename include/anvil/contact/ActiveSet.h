@@ -39,7 +39,11 @@ namespace anvil::contact {
 
 class ActiveSet {
 public:
-  void resize(std::size_t constraints) { active_.assign(constraints, 0); }
+  void resize(std::size_t constraints) {
+    active_.assign(constraints, 0);
+    released_.assign(constraints, 0);
+    held_.assign(constraints, 0);
+  }
   void set_tolerance(double gap_tolerance) { tolerance_ = gap_tolerance; }
 
   /// Newton starts: a constraint touching with no relative normal velocity
@@ -52,8 +56,8 @@ public:
     settled_ = false;
     for (std::size_t i = 0; i < active_.size(); ++i)
       active_[i] = gap[i] >= -tolerance_;
-    released_.assign(active_.size(), 0);
-    held_.assign(active_.size(), 0);
+    std::fill(released_.begin(), released_.end(), 0);
+    std::fill(held_.begin(), held_.end(), 0);
     gap_last_ = gap;
     gap_before_ = gap;
   }
