@@ -41,7 +41,6 @@ class ActiveSet {
 public:
   void resize(std::size_t constraints) {
     active_.assign(constraints, 0);
-    released_.assign(constraints, 0);
     held_.assign(constraints, 0);
   }
   void set_tolerance(double gap_tolerance) { tolerance_ = gap_tolerance; }
@@ -56,7 +55,7 @@ public:
     settled_ = false;
     for (std::size_t i = 0; i < active_.size(); ++i)
       active_[i] = gap[i] >= -tolerance_;
-    std::fill(released_.begin(), released_.end(), 0);
+    released_.clear();
     std::fill(held_.begin(), held_.end(), 0);
     gap_last_ = gap;
     gap_before_ = gap;
@@ -67,14 +66,20 @@ public:
     gap_before_.swap(gap_last_);
     gap_last_ = gap;
     for (std::size_t i = 0; i < active_.size(); ++i) {
-      char now = frozen_ ? active_[i] : wants(i, gap[i], 0.0);
-      if (released_[i] && gap[i] > tolerance_) now = held_[i] = 1; // released by a check, it penetrates
+      const char now = frozen_ ? active_[i] : wants(i, gap[i], 0.0);
       activated += now && !active_[i];
       released += !now && active_[i];
       active += now;
       active_[i] = now;
     }
-    std::fill(released_.begin(), released_.end(), 0);
+    for (const std::size_t i : released_) // released by the last check, it penetrates: back in, held
+      if (gap[i] > tolerance_) {
+        held_[i] = 1;
+        activated += !active_[i];
+        active += !active_[i];
+        active_[i] = 1;
+      }
+    released_.clear();
     frozen_ = ++iterations_ >= kFreezeAfter;
     last_changes_ = activated + released;
     return std::string("  ") + what + " " + std::to_string(active) + " (+" + std::to_string(activated) + " -" +
@@ -128,8 +133,9 @@ private:
   }
   /// A check's new set; the constraints it releases are watched at the next accepted iterate.
   void take(std::vector<char>& set) {
+    released_.clear();
     for (std::size_t i = 0; i < active_.size(); ++i)
-      released_[i] = active_[i] && !set[i];
+      if (active_[i] && !set[i]) released_.push_back(i);
     active_.swap(set);
   }
   static bool had(const std::vector<std::vector<char>>& sets, const std::vector<char>& set) {
@@ -139,8 +145,8 @@ private:
   std::vector<char> active_;
   std::vector<std::vector<char>> converged_with_;        ///< the sets Newton converged with in this increment
   std::vector<std::vector<char>> left_near_convergence_; ///< the sets left before Newton converged with them
-  std::vector<char> released_; ///< released by the last check: held if the next iterate has it penetrate
-  std::vector<char> held_;     ///< released by a check, then penetrating: active for the rest of the increment
+  std::vector<std::size_t> released_; ///< released by the last check: held if the next iterate has it penetrate
+  std::vector<char> held_;            ///< released by a check, then penetrating: active for the rest of the increment
   std::vector<double> gap_last_, gap_before_; ///< h at the last two accepted iterates
   bool settled_ = false;                      ///< a cycle's union taken: accepted at the next convergence
   double tolerance_ = 0.0;                    ///< mm/s
