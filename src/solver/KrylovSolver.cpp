@@ -146,8 +146,9 @@ struct KrylovSolver::Impl {
     set_default_option("-fieldsplit_0_ksp_type", "preonly");
     set_default_option("-fieldsplit_0_pc_type", "ml");
     // ML aggregates with the block size's three translations: the six
-    // rigid-body modes make its set-up and V-cycle dearer for about one
-    // Krylov iteration less.
+    // rigid-body modes (`user`) make its set-up and V-cycle dearer for about
+    // one Krylov iteration less, except on a body only its dies hold in
+    // rotation (docs/linear-solve.md).
     set_default_option("-fieldsplit_0_pc_ml_nullspace", "block");
     // Chebyshev smooths every ML level (velocity and BFBT's pressure
     // Laplacian): more Krylov iterations than PETSc's default (two SOR
@@ -270,7 +271,8 @@ struct KrylovSolver::Impl {
   }
 
   /// The six rigid-body modes at the current coordinates: GAMG's near-null
-  /// space of the velocity block (ML and hypre use the block size instead).
+  /// space of the velocity block, and ML's when given
+  /// `-fieldsplit_0_pc_ml_nullspace user` (hypre uses the block size).
   void set_rigid_body_modes(std::span<const mesh::Point> nodes) {
     PetscScalar* x = nullptr;
     check(VecGetArray(coordinates, &x), "setting the rigid-body modes");
