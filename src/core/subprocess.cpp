@@ -34,7 +34,10 @@ int run(const std::vector<std::string>& arguments, const Options& options) {
   posix_spawn_file_actions_init(&actions);
   if (feed) posix_spawn_file_actions_adddup2(&actions, pipe_ends[0], 0);
   if (options.quiet_output) posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  if (options.quiet_errors) posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  if (!options.errors_file.empty())
+    posix_spawn_file_actions_addopen(&actions, 2, options.errors_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  else if (options.quiet_errors)
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
   if (!options.directory.empty()) posix_spawn_file_actions_addchdir_np(&actions, options.directory.c_str());
   pid_t child = 0;
   const int started = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);

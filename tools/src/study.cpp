@@ -4,6 +4,8 @@
 // any other key of the case file), one key at a time with the other varied
 // keys at their finest value (the last one listed), and records each run's
 // error and wall time in DIR/study.csv; tools/study plots it (DIR/study.png).
+// Each run is `anvil run` (the binary beside this one), as a user runs the
+// case: every core by default, its log in the run's folder.
 //
 // The error of a run is the worst relative error of its press load over the
 // stroke, on the die whose stroke stops the run:
@@ -29,22 +31,20 @@
 //                    F∞ = F3 + (F3 − F2)/(r^p − 1). Where the three loads do
 //                    not converge monotonically there is no estimate: the
 //                    finest run is the reference, and the study says so.
-#include "anvil/core/blas_kernels.h"
 #include "anvil/core/error.h"
-#include "anvil/core/log.h"
+#include "anvil/core/subprocess.h"
 #include "anvil/io/RunResults.h"
 #include "anvil/io/atomic_file.h"
 #include "anvil/material/homogeneous_compression.h"
-#include "anvil/run/Simulation.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/MaterialCard.h"
-#include "anvil/solver/PetscSession.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -112,11 +112,11 @@ struct Run {
   LoadCurve curve;
   std::vector<double> load_jumps; ///< relative, one per remesh (with remeshing.check_load)
   std::size_t remeshes = 0;
+  std::string stopped; ///< why the run stopped short of its stop criterion; empty when it got there
 };
 
 LoadCurve read_curve(const std::string& directory, const std::string& die) {
   const std::vector<io::LoadRow> rows = io::read_loads(directory, die);
-  if (rows.empty()) throw RunError(directory + "/loads.csv: no load rows for die '" + die + "'");
   LoadCurve curve;
   curve.symmetry_copies = static_cast<int>(io::read_summary_number(directory, "symmetry_copies"));
   for (const io::LoadRow& row : rows) { // each load at the stroke it was solved at
@@ -225,7 +225,9 @@ public:
       : case_file_(std::move(case_file)), parameters_(std::move(parameters)), fixed_(std::move(fixed)),
         out_(std::move(out)) {}
 
-  /// The run with every varied key at its finest value except `key` = `value`.
+  /// The run with every varied key at its finest value except `key` = `value`,
+  /// made by `anvil run` as a user runs it (every core by default). A run that
+  /// stops short of its stop criterion is a result too: kept, with the reason.
   const Run& run(const std::string& key, const std::string& value) {
     std::vector<std::string> overrides{"output.vtk=false"};
     overrides.insert(overrides.end(), fixed_.begin(), fixed_.end());
@@ -241,22 +243,51 @@ public:
     Run r;
     r.directory = out_ + "/runs/run_" + std::to_string(runs_.size() + 1);
     std::filesystem::remove_all(r.directory);
-    std::printf("run %zu: %s ... ", runs_.size() + 1, label.c_str());
+    std::vector<std::string> command{anvil_, "run", case_file_, "-o", r.directory};
+    for (const std::string& o : overrides) {
+      command.push_back("--set");
+      command.push_back(o);
+    }
+    subprocess::Options options;
+    options.errors_file = r.directory + ".stderr";
+    std::printf("run %zu: %s (%s/anvil.log) ... ", runs_.size() + 1, label.c_str(), r.directory.c_str());
     std::fflush(stdout);
     const auto start = std::chrono::steady_clock::now();
-    run::run(c, {r.directory});
+    const int status = subprocess::run(command, options);
     r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string said = last_line(options.errors_file);
+    // anvil run's exit codes (README): 4 a run stopped, with its results so far written.
+    if (status == 3) throw InputError(said);
+    if (status == 4) {
+      const std::string prefix = "anvil: run stopped: ";
+      r.stopped = said.starts_with(prefix) ? said.substr(prefix.size()) : said;
+    } else if (status != 0)
+      throw std::runtime_error(anvil_ + " run exited with " + std::to_string(status) + ": " + said);
     r.increments = static_cast<int>(io::read_summary_number(r.directory, "increments"));
     r.newton_iterations = static_cast<int>(io::read_summary_number(r.directory, "newton_iterations"));
     r.nodes = static_cast<int>(io::read_summary_number(r.directory, "nodes"));
     r.curve = read_curve(r.directory, c.dies.at(c.time.stroke_die).name);
+    if (r.curve.load.empty() && r.stopped.empty())
+      throw RunError(r.directory + "/loads.csv: no load rows for die '" + c.dies.at(c.time.stroke_die).name + "'");
     r.load_jumps = io::read_summary_numbers(r.directory, "load_jump");
     r.remeshes = io::read_summary_numbers(r.directory, "nodes_after").size(); // one per remesh
-    std::printf("%.1f s, %d increments, %d nodes, %zu remeshes\n", r.wall_time, r.increments, r.nodes, r.remeshes);
+    std::printf("%.1f s, %d increments, %d nodes, %zu remeshes%s%s\n", r.wall_time, r.increments, r.nodes, r.remeshes,
+                r.stopped.empty() ? "" : ", stopped: ", r.stopped.c_str());
+    std::fflush(stdout);
     return runs_.emplace(label, std::move(r)).first->second;
   }
 
 private:
+  /// The last line `path` holds, or empty.
+  static std::string last_line(const std::string& path) {
+    std::ifstream in(path);
+    std::string line, last;
+    while (std::getline(in, line))
+      if (!line.empty()) last = line;
+    return last;
+  }
+
+  std::string anvil_ = (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "anvil").string();
   std::string case_file_;
   std::vector<Parameter> parameters_;
   std::vector<std::string> fixed_;
@@ -266,18 +297,24 @@ private:
 
 struct Row {
   std::string key, value;
-  std::optional<double> error; ///< empty for the reference run, or a run without a remesh (remesh-jump)
+  std::optional<double> error; ///< empty for the reference run, a run without a remesh (remesh-jump), a stopped run
   const Run* run;
 };
 
 /// What a row without an error stands for.
-const char* no_error_label(ErrorKind kind) {
+std::string no_error_label(const Row& r, ErrorKind kind) {
+  if (!r.run->stopped.empty()) {
+    char text[64];
+    std::snprintf(text, sizeof text, "stopped at %.2f mm",
+                  r.run->curve.stroke.empty() ? 0.0 : r.run->curve.stroke.back());
+    return text;
+  }
   return kind == ErrorKind::remesh_jump ? "no remesh" : "reference";
 }
 
 std::string format_row_csv(const Row& r, ErrorKind kind) {
   char text[512];
-  const std::string error = r.error ? std::to_string(100.0 * *r.error) : no_error_label(kind);
+  const std::string error = r.error ? std::to_string(100.0 * *r.error) : no_error_label(r, kind);
   std::snprintf(text, sizeof text, "%s,%s,%s,%.3f,%d,%d,%d,%zu,%s\n", r.key.c_str(), r.value.c_str(), error.c_str(),
                 r.run->wall_time, r.run->increments, r.run->newton_iterations, r.run->nodes, r.run->remeshes,
                 r.run->directory.c_str());
@@ -356,11 +393,14 @@ int study(int argc, char** argv) {
   if (out.empty()) out = "out/study_" + std::filesystem::path(case_file).stem().string();
   std::filesystem::create_directories(out + "/runs");
 
-  log::set_quiet(true);
   std::printf("study of %s, error: %s, results in %s/\n", case_file.c_str(), error_name.c_str(), out.c_str());
   Study runs(case_file, parameters, fixed, out);
   const Run* reference = nullptr; // the finest run, for --error finest
-  if (kind == ErrorKind::finest) reference = &runs.run(parameters.front().key, parameters.front().values.back());
+  if (kind == ErrorKind::finest) {
+    reference = &runs.run(parameters.front().key, parameters.front().values.back());
+    if (!reference->stopped.empty())
+      throw RunError("the finest run, the reference of --error finest, stopped: " + reference->stopped);
+  }
   // --error closure: the converged closure load from the first key's three finest runs.
   std::optional<double> converged;
   std::string closure_note;
@@ -369,16 +409,21 @@ int study(int argc, char** argv) {
     if (p.values.size() < 3) throw InputError("--error closure needs three values or more of the first --vary key");
     const std::size_t n = p.values.size();
     double h[3], f[3];
+    std::string stopped; // the three finest runs that stopped short of closure
     for (int k = 0; k < 3; ++k) {
       h[k] = std::stod(p.values[n - 3 + k]);
-      f[k] = runs.run(p.key, p.values[n - 3 + k]).curve.load.back();
+      const Run& r = runs.run(p.key, p.values[n - 3 + k]);
+      f[k] = r.curve.load.empty() ? 0.0 : r.curve.load.back();
+      if (!r.stopped.empty()) stopped += (stopped.empty() ? "" : ", ") + p.values[n - 3 + k];
     }
     const double r1 = h[0] / h[1], r2 = h[1] / h[2];
     if (!(std::abs(r1 / r2 - 1.0) < 0.02))
       throw InputError("--error closure: the three finest values of " + p.key + " must refine by one ratio (" +
                        std::to_string(r1) + " and " + std::to_string(r2) + ")");
     char text[500];
-    if (const std::optional<Richardson> rich = richardson(std::sqrt(r1 * r2), f[0], f[1], f[2])) {
+    const std::optional<Richardson> rich =
+        stopped.empty() ? richardson(std::sqrt(r1 * r2), f[0], f[1], f[2]) : std::nullopt;
+    if (rich) {
       converged = rich->converged;
       // The MINI element's load converges at first to second order in h; an
       // observed order far outside that says the three runs are not yet in
@@ -393,13 +438,24 @@ int study(int argc, char** argv) {
                     asymptotic ? ""
                                : " (outside the element's 0.5-3: the runs are not in the asymptotic range, the "
                                  "estimate is rough)");
-    } else {
+    } else if (stopped.empty()) {
       converged = f[2];
       std::snprintf(text, sizeof text,
                     "the closure loads at %s = %s, %s, %s (%.5g, %.5g, %.5g kN) do not converge monotonically: no "
                     "Richardson estimate, the finest run is the reference",
                     p.key.c_str(), p.values[n - 3].c_str(), p.values[n - 2].c_str(), p.values[n - 1].c_str(),
                     f[0] / 1e3, f[1] / 1e3, f[2] / 1e3);
+    } else {
+      // The finest run that reached closure is the reference.
+      const std::string* finest_closed = nullptr;
+      for (const std::string& v : p.values)
+        if (runs.run(p.key, v).stopped.empty()) finest_closed = &v;
+      if (!finest_closed) throw RunError("every run of the study stopped short of closure");
+      converged = runs.run(p.key, *finest_closed).curve.load.back();
+      std::snprintf(text, sizeof text,
+                    "the run at %s = %s stopped short of closure: no Richardson estimate, the finest run that reached "
+                    "it (%s) is the reference",
+                    p.key.c_str(), stopped.c_str(), finest_closed->c_str());
     }
     closure_note = text;
   }
@@ -407,15 +463,18 @@ int study(int argc, char** argv) {
   for (const Parameter& p : parameters)
     for (const std::string& value : p.values) {
       const Run& r = runs.run(p.key, value);
+      // A stopped run has no error: its curve falls short of the others (the row says where it stopped).
       std::optional<double> error;
-      if (exact)
-        error = exact->error(r.curve);
-      else if (kind == ErrorKind::remesh_jump)
-        error = worst_jump(r.load_jumps);
-      else if (kind == ErrorKind::closure)
-        error = std::abs(r.curve.load.back() / *converged - 1.0);
-      else if (&r != reference)
-        error = error_against(r.curve, reference->curve, reference->curve.stroke.back());
+      if (r.stopped.empty()) {
+        if (exact)
+          error = exact->error(r.curve);
+        else if (kind == ErrorKind::remesh_jump)
+          error = worst_jump(r.load_jumps);
+        else if (kind == ErrorKind::closure)
+          error = std::abs(r.curve.load.back() / *converged - 1.0);
+        else if (&r != reference)
+          error = error_against(r.curve, reference->curve, reference->curve.stroke.back());
+      }
       rows.push_back({p.key, value, error, &r});
     }
 
@@ -430,12 +489,15 @@ int study(int argc, char** argv) {
   std::printf("\n| key | value | %s | wall time | increments | nodes | remeshes |\n|---|---|---|---|---|---|---|\n",
               measure);
   for (const Row& r : rows) {
-    char error[32];
-    std::snprintf(error, sizeof error, "%s", no_error_label(kind));
+    char error[64];
+    std::snprintf(error, sizeof error, "%s", no_error_label(r, kind).c_str());
     if (r.error) std::snprintf(error, sizeof error, "%.3g %%", 100.0 * *r.error);
     std::printf("| %s | %s | %s | %.1f s | %d | %d | %zu |\n", r.key.c_str(), r.value.c_str(), error, r.run->wall_time,
                 r.run->increments, r.run->nodes, r.run->remeshes);
   }
+  for (const Row& r : rows)
+    if (!r.run->stopped.empty())
+      std::printf("\n%s = %s stopped: %s\n", r.key.c_str(), r.value.c_str(), r.run->stopped.c_str());
   if (kind == ErrorKind::closure)
     std::printf("\n%s\nfor 2 %%: %s\nfor 1 %%: %s\n", closure_note.c_str(), cheapest_below(rows, 0.02).c_str(),
                 cheapest_below(rows, 0.01).c_str());
@@ -450,10 +512,7 @@ int study(int argc, char** argv) {
 } // namespace
 
 int main(int argc, char** argv) {
-  anvil::blas_kernels::pin(argv); // the kernels of anvil run (docs/parallel-runs.md)
   try {
-    int petsc_argc = 1; // the tool's own arguments are not PETSc's
-    solver::PetscSession petsc(petsc_argc, argv);
     return study(argc, argv);
   } catch (const InputError& e) {
     std::fprintf(stderr, "anvil_study: input error: %s\n", e.what());

@@ -12,6 +12,7 @@ struct Options {
   std::string input;        ///< written to its standard input, then closed
   bool quiet_output = true; ///< standard output to /dev/null
   bool quiet_errors = true; ///< standard error to /dev/null
+  std::string errors_file;  ///< standard error to this file instead (made anew); empty: as quiet_errors says
 };
 
 /// execve's argv over `arguments` (which must outlive it), null-terminated.
