@@ -440,11 +440,15 @@ int study(int argc, char** argv) {
                                  "estimate is rough)");
     } else if (stopped.empty()) {
       converged = f[2];
+      // Either the loads change direction, or they move one way by a larger
+      // step at each refinement: both leave no order to extrapolate with.
+      const bool one_way = (f[0] - f[1]) * (f[1] - f[2]) > 0.0;
       std::snprintf(text, sizeof text,
-                    "the closure loads at %s = %s, %s, %s (%.5g, %.5g, %.5g kN) do not converge monotonically: no "
-                    "Richardson estimate, the finest run is the reference",
+                    "the closure loads at %s = %s, %s, %s (%.5g, %.5g, %.5g kN) %s: no Richardson estimate, the finest "
+                    "run is the reference",
                     p.key.c_str(), p.values[n - 3].c_str(), p.values[n - 2].c_str(), p.values[n - 1].c_str(),
-                    f[0] / 1e3, f[1] / 1e3, f[2] / 1e3);
+                    f[0] / 1e3, f[1] / 1e3, f[2] / 1e3,
+                    one_way ? "move further apart as the mesh is refined" : "do not converge monotonically");
     } else {
       // The finest run that reached closure is the reference.
       const std::string* finest_closed = nullptr;
