@@ -395,7 +395,7 @@ int study(int argc, char** argv) {
 
   std::printf("study of %s, error: %s, results in %s/\n", case_file.c_str(), error_name.c_str(), out.c_str());
   Study runs(case_file, parameters, fixed, out);
-  const Run* reference = nullptr; // the finest run, for --error finest
+  const Run* reference = nullptr; // --error finest: the finest run; closure: the run standing for the converged load
   if (kind == ErrorKind::finest) {
     reference = &runs.run(parameters.front().key, parameters.front().values.back());
     if (!reference->stopped.empty())
@@ -439,6 +439,7 @@ int study(int argc, char** argv) {
                                : " (outside the element's 0.5-3: the runs are not in the asymptotic range, the "
                                  "estimate is rough)");
     } else if (stopped.empty()) {
+      reference = &runs.run(p.key, p.values[n - 1]);
       converged = f[2];
       // Either the loads change direction, or they move one way by a larger
       // step at each refinement: both leave no order to extrapolate with.
@@ -455,7 +456,8 @@ int study(int argc, char** argv) {
       for (const std::string& v : p.values)
         if (runs.run(p.key, v).stopped.empty()) finest_closed = &v;
       if (!finest_closed) throw RunError("every run of the study stopped short of closure");
-      converged = runs.run(p.key, *finest_closed).curve.load.back();
+      reference = &runs.run(p.key, *finest_closed);
+      converged = reference->curve.load.back();
       std::snprintf(text, sizeof text,
                     "the run at %s = %s stopped short of closure: no Richardson estimate, the finest run that reached "
                     "it (%s) is the reference",
@@ -474,7 +476,7 @@ int study(int argc, char** argv) {
           error = exact->error(r.curve);
         else if (kind == ErrorKind::remesh_jump)
           error = worst_jump(r.load_jumps);
-        else if (kind == ErrorKind::closure)
+        else if (kind == ErrorKind::closure && &r != reference)
           error = std::abs(r.curve.load.back() / *converged - 1.0);
         else if (&r != reference)
           error = error_against(r.curve, reference->curve, reference->curve.stroke.back());
