@@ -90,10 +90,9 @@ int usage_error(const std::string& message) {
 /// The command line of anvil_render (beside this program) with `arguments`,
 /// under xvfb-run when there is no X display.
 std::vector<std::string> renderer_command(const std::vector<std::string>& arguments) {
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe");
   std::vector<std::string> args;
   if (!std::getenv("DISPLAY")) args = {"xvfb-run", "-a"};
-  args.push_back((self.parent_path() / "anvil_render").string());
+  args.push_back(anvil::subprocess::beside_this_program("anvil_render"));
   args.insert(args.end(), arguments.begin(), arguments.end());
   return args;
 }

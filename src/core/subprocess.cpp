@@ -109,6 +109,10 @@ int run_relaying_interrupts(const std::vector<std::string>& arguments) {
   return relayed && WEXITSTATUS(status) == 128 + SIGUSR1 ? 128 + relayed : WEXITSTATUS(status);
 }
 
+std::string beside_this_program(const std::string& program) {
+  return (std::filesystem::read_symlink("/proc/self/exe").parent_path() / program).string();
+}
+
 bool on_path(const std::string& program) {
   const char* path = std::getenv("PATH");
   if (!path) return false;

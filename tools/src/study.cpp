@@ -30,7 +30,9 @@
 //                    p = ln((F1 − F2)/(F2 − F3)) / ln r,
 //                    F∞ = F3 + (F3 − F2)/(r^p − 1). Where the three loads do
 //                    not converge monotonically there is no estimate: the
-//                    finest run is the reference, and the study says so.
+//                    finest run is the reference, and the study says so
+//                    (the finest run that reached closure, when one of the
+//                    three stopped short of it).
 #include "anvil/core/error.h"
 #include "anvil/core/subprocess.h"
 #include "anvil/io/RunResults.h"
@@ -48,6 +50,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -255,20 +258,22 @@ public:
     const auto start = std::chrono::steady_clock::now();
     const int status = subprocess::run(command, options);
     r.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // anvil run's exit codes (README): 3 an input error, 4 a run stopped with
+    // its results so far written; its last line says why ("anvil: KIND: why").
     const std::string said = last_line(options.errors_file);
-    // anvil run's exit codes (README): 4 a run stopped, with its results so far written.
-    if (status == 3) throw InputError(said);
-    if (status == 4) {
-      const std::string prefix = "anvil: run stopped: ";
-      r.stopped = said.starts_with(prefix) ? said.substr(prefix.size()) : said;
-    } else if (status != 0)
+    const std::string why = std::regex_replace(said, std::regex("^anvil: (input error|run stopped): "), "");
+    if (status == 3) throw InputError(why);
+    if (status == 4)
+      r.stopped = why;
+    else if (status != 0)
       throw std::runtime_error(anvil_ + " run exited with " + std::to_string(status) + ": " + said);
     r.increments = static_cast<int>(io::read_summary_number(r.directory, "increments"));
     r.newton_iterations = static_cast<int>(io::read_summary_number(r.directory, "newton_iterations"));
     r.nodes = static_cast<int>(io::read_summary_number(r.directory, "nodes"));
-    r.curve = read_curve(r.directory, c.dies.at(c.time.stroke_die).name);
+    const std::string& die = c.dies.at(c.time.stroke_die).name;
+    r.curve = read_curve(r.directory, die);
     if (r.curve.load.empty() && r.stopped.empty())
-      throw RunError(r.directory + "/loads.csv: no load rows for die '" + c.dies.at(c.time.stroke_die).name + "'");
+      throw RunError(r.directory + "/loads.csv: no load rows for die '" + die + "'");
     r.load_jumps = io::read_summary_numbers(r.directory, "load_jump");
     r.remeshes = io::read_summary_numbers(r.directory, "nodes_after").size(); // one per remesh
     std::printf("%.1f s, %d increments, %d nodes, %zu remeshes%s%s\n", r.wall_time, r.increments, r.nodes, r.remeshes,
@@ -287,7 +292,7 @@ private:
     return last;
   }
 
-  std::string anvil_ = (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "anvil").string();
+  std::string anvil_ = subprocess::beside_this_program("anvil");
   std::string case_file_;
   std::vector<Parameter> parameters_;
   std::vector<std::string> fixed_;

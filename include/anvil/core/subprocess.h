@@ -34,6 +34,10 @@ int run(const std::vector<std::string>& arguments, const Options& options = {});
 /// when it could not be started.
 int run_relaying_interrupts(const std::vector<std::string>& arguments);
 
+/// The path of `program` in the folder of the running program: build/ holds
+/// anvil, anvil_render and the tools side by side.
+std::string beside_this_program(const std::string& program);
+
 /// True when `program` is an executable file on PATH.
 bool on_path(const std::string& program);
 
