@@ -60,6 +60,10 @@ constexpr int kBorderPasses = 3;
 /// A level whose remesh failed without changing its border is tried again
 /// with edges this much shorter.
 constexpr double kLevelRetryScale = 0.95;
+/// A surface patch smaller than this many squares of the remesh's edge (two
+/// faces of that edge or so) joins a neighbour (boundary_patches): a crumple
+/// of a few faces, not a feature an element that size resolves.
+constexpr double kSmallestPatch = 1.0;
 /// After the size field's levels, cells below this quality are rebuilt.
 constexpr double kPoorAfterLevels = 0.25;
 
@@ -125,8 +129,8 @@ template <class Selector> void remesh_pass(Triangulation& tr, double length, int
 /// `handles[i + 1]` is node i's vertex. Returns the boundary tag of each
 /// patch number.
 template <class Subdomain>
-std::vector<int> build(const mesh::TetMesh& body, double feature_angle, Subdomain subdomain, Triangulation& tr,
-                       std::vector<VertexHandle>& handles, std::vector<int>& patch) {
+std::vector<int> build(const mesh::TetMesh& body, const RemeshSettings& settings, Subdomain subdomain,
+                       Triangulation& tr, std::vector<VertexHandle>& handles, std::vector<int>& patch) {
   std::vector<Triangulation::Point> points;
   points.reserve(body.nodes.size());
   for (const mesh::Point& x : body.nodes)
@@ -137,7 +141,7 @@ std::vector<int> build(const mesh::TetMesh& body, double feature_angle, Subdomai
     const mesh::Tet& t = body.tets[e];
     cells.push_back({t[0], t[1], t[2], t[3], subdomain(e)});
   }
-  patch = boundary_patches(body, feature_angle);
+  patch = boundary_patches(body, settings.feature_angle, kSmallestPatch * settings.edge_length * settings.edge_length);
   std::map<std::array<int, 3>, int> patch_of_facet;
   std::vector<int> tag_of_patch(1, 0);
   for (std::size_t f = 0; f < body.boundary_faces.size(); ++f) {
@@ -164,7 +168,7 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
   std::vector<VertexHandle> handles;
   std::vector<int> patch;
   const std::vector<int> tag_of_patch = build(
-      body, settings.feature_angle, [](std::size_t) { return 1; }, tr, handles, patch);
+      body, settings, [](std::size_t) { return 1; }, tr, handles, patch);
 
   StoppableSelection selection(settings, tr);
   remesh_pass(tr, settings.edge_length, settings.iterations, selection.map());
@@ -289,7 +293,7 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
   std::vector<VertexHandle> handles;
   std::vector<int> patch;
   const std::vector<int> tag_of_patch = build(
-      body, settings.feature_angle, [&](std::size_t e) { return rebuilt[e] ? 1 : 0; }, tr, handles, patch);
+      body, settings, [&](std::size_t e) { return rebuilt[e] ? 1 : 0; }, tr, handles, patch);
   const int n = body.node_count();
   // The border between the region and the kept tets, as sorted node triples.
   std::set<std::array<int, 3>> border;

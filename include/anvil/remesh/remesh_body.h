@@ -101,7 +101,10 @@ RegionRemesh remesh_region(const mesh::TetMesh& body, std::span<const char> rebu
 RegionRemesh kept_part(const mesh::TetMesh& body, std::span<const char> rebuilt, RegionSurface surface,
                        std::vector<int>& number);
 
-/// Patch number (from 1) of each boundary face of `body`, as remesh_body sets them.
-std::vector<int> boundary_patches(const mesh::TetMesh& body, double feature_angle);
+/// Patch number (from 1) of each boundary face of `body`, as remesh_body sets
+/// them: faces of one boundary tag whose normals turn by less than
+/// `feature_angle` (deg) between neighbours, a patch of less than
+/// `smallest_area` (mm²) joined to its neighbour of the longest shared border.
+std::vector<int> boundary_patches(const mesh::TetMesh& body, double feature_angle, double smallest_area);
 
 } // namespace anvil::remesh

@@ -96,6 +96,35 @@ TEST_CASE("Remeshing a quarter cylinder keeps its volume and its lateral surface
   CHECK(std::abs(out.node_count() / estimate - 1.0) < 0.2);
 }
 
+TEST_CASE("A surface patch of a few crumpled faces joins its neighbour, and the faces of a box stay apart",
+          "[unit][remesh]") {
+  // A box whose top node nearest (5, 3, 4) is pulled 1.5 mm up: the faces
+  // around it tilt by about 60°, more than the feature angle.
+  mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
+  int bump = -1;
+  for (int n = 0; n < box.node_count(); ++n)
+    if (bump < 0 || (box.nodes[n] - mesh::Point(5, 3, 4)).norm() < (box.nodes[bump] - mesh::Point(5, 3, 4)).norm())
+      bump = n;
+  REQUIRE(box.nodes[bump].z() == 4.0);
+  box.nodes[bump].z() += 1.5;
+  auto patches_of = [&](double smallest_area) {
+    const std::vector<int> patch = remesh::boundary_patches(box, 40.0, smallest_area);
+    return std::set<int>(patch.begin(), patch.end()).size();
+  };
+  CHECK(patches_of(0.0) > 6);   // the bump's faces on patches of their own
+  CHECK(patches_of(10.0) == 6); // joined to the top (about 5 mm² of them), the faces (24 mm² and more) not
+  // Faces of different tags never join, however small the limit makes them.
+  CHECK(patches_of(1e9) == 6);
+  // The bump's faces took the top's patch: the faces around the bumped node share it with those far from it.
+  const std::vector<int> patch = remesh::boundary_patches(box, 40.0, 10.0);
+  std::set<int> top;
+  for (std::size_t f = 0; f < box.boundary_faces.size(); ++f) {
+    const mesh::Triangle& t = box.boundary_faces[f];
+    if (std::all_of(t.begin(), t.end(), [&](int v) { return box.nodes[v].z() >= 4.0; })) top.insert(patch[f]);
+  }
+  CHECK(top.size() == 1);
+}
+
 TEST_CASE("An adaptive size field refines where it asks and keeps the volume", "[unit][remesh]") {
   // The flash case's billet; edges of 0.525 mm wanted below z = 4 mm,
   // growing by 0.5 mm per mm above, up to the coarse 1.05 mm from z = 5.05.
