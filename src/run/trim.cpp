@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <memory>
 #include <numeric>
+#include <span>
 
 namespace anvil::run {
 namespace {
@@ -85,7 +86,8 @@ double mass_of(const scene::Scene& scene, int b, double volume) {
 /// summary.json of a trim: each body's volume cut off and the change of
 /// what it keeps by the nodes put onto the cut (`cut`, mm³, model).
 void write_trim_summary(const std::string& directory, const scene::Scene& scene, const CutPart& cut,
-                        const scene::RunState& after, const std::string& remeshed, double seconds) {
+                        const scene::RunState& after, const std::string& remeshed,
+                        std::span<const double> remeshed_volume, double seconds) {
   const std::vector<double>& removed = cut.removed;
   io::JsonWriter json;
   json.begin_object()
@@ -105,6 +107,7 @@ void write_trim_summary(const std::string& directory, const scene::Scene& scene,
         .member("volume_mm3", mesh::volume(after.mesh, after.bodies[b]))
         .member("removed_volume_model_mm3", removed[b])
         .member("reshaped_volume_model_mm3", cut.reshaped[b])
+        .member("remeshed_volume_model_mm3", remeshed_volume[b])
         .member("removed_volume_whole_part_mm3", scene.symmetry_copies * removed[b]);
     if (const double mass = mass_of(scene, int(b), scene.symmetry_copies * removed[b]); !std::isnan(mass))
       json.member("removed_mass_whole_part_kg", mass);
@@ -343,10 +346,16 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
                      .sunk_edges = {}});
   }
   std::string remeshed = "none";
+  // mm³ of each body the remesh changed (a surface mending's slivers, a whole part's remesh).
+  std::vector<double> remeshed_volume(scene.bodies.size(), 0.0);
   if (!due.empty()) {
     const std::vector<int> touching(state.mesh.node_count(), -1);
     const std::vector<double> rate(state.mesh.tet_count(), 0.0);
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+      remeshed_volume[b] = -mesh::volume(state.mesh, state.bodies[b]);
     remesh::remesh(scene, state, due, touching, rate, 0.0, timers);
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+      remeshed_volume[b] += mesh::volume(state.mesh, state.bodies[b]);
     remeshed = state.remeshes.empty()                      ? "refused"
                : state.remeshes.back().rebuilt_share < 1.0 ? "along the cut"
                                                            : "whole part";
@@ -360,7 +369,7 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   processes::on_root([&] {
     io::write_checkpoint(dir + "/checkpoint.h5", state, scene.fingerprint);
-    write_trim_summary(dir, scene, cut_off, state, remeshed, seconds);
+    write_trim_summary(dir, scene, cut_off, state, remeshed, remeshed_volume, seconds);
   });
   for (std::size_t b = 0; b < scene.bodies.size(); ++b)
     log::info("trim: body '%s': %.6g mm3 removed (whole part %.6g mm3, %.4g kg)", scene.bodies[b].name.c_str(),

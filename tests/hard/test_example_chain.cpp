@@ -30,15 +30,17 @@ TEST_CASE("the hub-flange chain runs its five operations to the end", "[hard]") 
   CHECK(finish.back().stroke == Approx(7.8).epsilon(1e-9));
   // The trim removes the flash beyond its line (a 48-gon inscribed in r 13
   // mm): what it keeps lies within r 13, and the removed and kept volumes,
-  // less the change of the kept part by the nodes put onto the cut, make up
-  // what the finisher left (to rounding: the local remesh keeps its
-  // region's boundary, hence its volume).
+  // less the change of the kept part by the nodes put onto the cut and by
+  // the remesh along it (a mending of its surface), make up what the
+  // finisher left, to rounding.
   const RunOutputs trim = folder(3);
   const scene::RunState finished = folder(2).final_state(), trimmed = trim.final_state();
   const double removed = trim.summary_number("removed_volume_model_mm3");
   const double reshaped = trim.summary_number("reshaped_volume_model_mm3");
   CHECK(removed > 0.0);
-  CHECK(mesh::volume(trimmed.mesh) + removed - reshaped == Approx(mesh::volume(finished.mesh)).epsilon(1e-9));
+  const double remeshed = trim.summary_number("remeshed_volume_model_mm3");
+  CHECK(mesh::volume(trimmed.mesh) + removed - reshaped - remeshed ==
+        Approx(mesh::volume(finished.mesh)).epsilon(1e-9));
   // The rest of the part keeps its mesh: the cut leaves no piece below
   // remeshing.quality, or the local remesh rebuilds them along the cut.
   std::ifstream summary(trim.directory + "/summary.json");
