@@ -52,8 +52,9 @@ std::vector<int> boundary_patches(const mesh::TetMesh& body, double feature_angl
     std::vector<double> patch_area(faces, 0.0);
     std::vector<std::vector<int>> members(faces);
     for (std::size_t f = 0; f < faces; ++f) {
-      patch_area[root(static_cast<int>(f))] += area[f];
-      members[root(static_cast<int>(f))].push_back(static_cast<int>(f));
+      const int r = root(static_cast<int>(f));
+      patch_area[r] += area[f];
+      members[r].push_back(static_cast<int>(f));
     }
     std::vector<int> small;
     for (std::size_t f = 0; f < faces; ++f)

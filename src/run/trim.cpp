@@ -84,7 +84,8 @@ double mass_of(const scene::Scene& scene, int b, double volume) {
 }
 
 /// summary.json of a trim: each body's volume cut off and the change of
-/// what it keeps by the nodes put onto the cut (`cut`, mm³, model).
+/// what it keeps by the nodes put onto the cut (`cut`) and by the remesh
+/// along it (`remeshed_volume`), mm³, model.
 void write_trim_summary(const std::string& directory, const scene::Scene& scene, const CutPart& cut,
                         const scene::RunState& after, const std::string& remeshed,
                         std::span<const double> remeshed_volume, double seconds) {
@@ -351,11 +352,13 @@ RunEnd trim(const scene::Operation& op, const RunOptions& options, scene::RunSta
   if (!due.empty()) {
     const std::vector<int> touching(state.mesh.node_count(), -1);
     const std::vector<double> rate(state.mesh.tet_count(), 0.0);
-    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-      remeshed_volume[b] = -mesh::volume(state.mesh, state.bodies[b]);
+    auto add_volumes = [&](double sign) {
+      for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+        remeshed_volume[b] += sign * mesh::volume(state.mesh, state.bodies[b]);
+    };
+    add_volumes(-1.0);
     remesh::remesh(scene, state, due, touching, rate, 0.0, timers);
-    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
-      remeshed_volume[b] += mesh::volume(state.mesh, state.bodies[b]);
+    add_volumes(1.0);
     remeshed = state.remeshes.empty()                      ? "refused"
                : state.remeshes.back().rebuilt_share < 1.0 ? "along the cut"
                                                            : "whole part";
