@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -54,7 +55,56 @@ double overlap_under_face(const mesh::TetMesh& mesh, int f, const DieSurface& su
   return area_norm * depth_sum / (n * n);
 }
 
+/// A boundary face by its corners' coordinates, the smallest corner
+/// (lexicographically) first and the turn kept: the same face in two meshes,
+/// whatever their numbering.
+using FaceKey = std::array<double, 9>;
+FaceKey face_key(const mesh::TetMesh& mesh, int f) {
+  const mesh::Triangle& face = mesh.boundary_faces[f];
+  auto less = [&](int a, int b) {
+    const mesh::Point &x = mesh.nodes[face[a]], &y = mesh.nodes[face[b]];
+    return std::lexicographical_compare(x.data(), x.data() + 3, y.data(), y.data() + 3);
+  };
+  int first = 0;
+  for (int i = 1; i < 3; ++i)
+    if (less(i, first)) first = i;
+  FaceKey key;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      key[3 * i + k] = mesh.nodes[face[(first + i) % 3]][k];
+  return key;
+}
+
+/// The boundary faces of `body` in `mesh`, with their keys, sorted by key.
+std::vector<std::pair<FaceKey, int>> keyed_faces(const mesh::TetMesh& mesh, const mesh::MeshRange& body) {
+  std::vector<std::pair<FaceKey, int>> keyed;
+  keyed.reserve(body.face_count);
+  for (int k = 0; k < body.face_count; ++k)
+    keyed.emplace_back(face_key(mesh, body.first_face + k), body.first_face + k);
+  std::sort(keyed.begin(), keyed.end());
+  return keyed;
+}
+
 } // namespace
+
+double overlap_change(const mesh::TetMesh& before, const mesh::TetMesh& after, const DieSurface& surface,
+                      const Eigen::Vector3d& shift, double deepest) {
+  const auto old_faces = keyed_faces(before, mesh::whole_range(before));
+  const auto new_faces = keyed_faces(after, mesh::whole_range(after));
+  auto by_key = [](const auto& a, const auto& b) { return a.first < b.first; };
+  std::vector<std::pair<FaceKey, int>> gone, added;
+  std::set_difference(old_faces.begin(), old_faces.end(), new_faces.begin(), new_faces.end(), std::back_inserter(gone),
+                      by_key);
+  std::set_difference(new_faces.begin(), new_faces.end(), old_faces.begin(), old_faces.end(), std::back_inserter(added),
+                      by_key);
+  // Each face's share as overlap_volume takes it, searched for from its centroid.
+  double change = 0.0;
+  for (const auto& [key, f] : added)
+    change += overlap_under_face(after, f, surface, shift, deepest, {});
+  for (const auto& [key, f] : gone)
+    change -= overlap_under_face(before, f, surface, shift, deepest, {});
+  return change;
+}
 
 double overlap_volume(const mesh::TetMesh& mesh, const mesh::MeshRange& body, const DieSurface& surface,
                       const Eigen::Vector3d& shift, double deepest) {

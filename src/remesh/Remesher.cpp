@@ -3,6 +3,7 @@
 #include "anvil/core/error.h"
 #include "anvil/core/log.h"
 #include "anvil/core/processes.h"
+#include "anvil/die/overlap_volume.h"
 #include "anvil/io/Checkpoint.h"
 #include "anvil/mesh/TetMesh.h"
 #include "anvil/mesh/manifold.h"
@@ -255,6 +256,19 @@ void log_fit(const PutBack& put_back, double remeshed, double put_back_volume, d
               given_back, 100.0 * relative(after, put_back_volume));
 }
 
+/// How much more of body `b` lies inside the dies at `dies_now` as the mesh
+/// `after` than as `before` (each the body alone), mm³: the share of the
+/// faces of its surface that changed (die::overlap_change), as
+/// scene::inside_dies measures it.
+double inside_dies_change(const scene::Scene& scene, const mesh::TetMesh& before, const mesh::TetMesh& after, int b,
+                          std::span<const scene::DieState> dies_now) {
+  double change = 0.0;
+  for (std::size_t d = 0; d < scene.dies.size(); ++d)
+    change += die::overlap_change(before, after, *scene.dies[d].surface, dies_now[d].displacement,
+                                  scene.bodies[b].remesh_size);
+  return change;
+}
+
 void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<const RemeshDue> due,
                    std::span<const int> touching_die, std::span<const double> rate, double time_step, Timers& timers) {
   Timers::Scope scope(timers, "remeshing");
@@ -279,6 +293,11 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
   // corners or edges); another leaves the dies' triggers to the last fit
   // (remesh_due).
   std::vector<char> fitted;
+  // mm³ per body inside the dies after the remesh, where it follows from
+  // before: a kept mesh's is as it was, a local remesh's changes by its
+  // changed faces' share (their search is most of a local remesh's cost
+  // otherwise); a whole remesh's is measured anew.
+  std::vector<std::optional<double>> inside_after(scene.bodies.size());
   for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
     const auto start = std::chrono::steady_clock::now();
     const mesh::MeshRange& range = state.bodies[b];
@@ -293,6 +312,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     const double* part_temperature = thermal ? state.temperature.data() + range.first_node : nullptr;
     const double* part_material = flow_lines ? state.material_position.data() + 3 * range.first_node : nullptr;
     auto keep_mesh = [&] {
+      inside_after[b] = inside_before[b];
       ranges.push_back(mesh::append(next, part));
       append_values(nodal, part_nodal, 4 * range.node_count);
       if (thermal) append_values(temperature, part_temperature, range.node_count);
@@ -342,6 +362,7 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
     if (why->local) try_region(Region::due);
     if (why->periodic && !scene.input.remeshing.adaptive) try_region(Region::whole_body);
     if (local) {
+      inside_after[b] = inside_before[b] + inside_dies_change(scene, part, local->mesh, int(b), state.dies);
       ranges.push_back(mesh::append(next, local->mesh));
       append_values(nodal, local->nodal.data(), local->nodal.size());
       if (thermal) {
@@ -406,6 +427,10 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
                                                          : "the surface (mended in places)",
                   record.nodes_before, record.nodes_after, record.worst_quality_before, record.worst_quality_after,
                   100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
+      if (local->short_of_trigger)
+        log::info("    taken short of remeshing.quality %g: better than the worst element before, and the next remesh "
+                  "waits until the worst is %g of this one's (a whole remesh would move every contact node)",
+                  scene.input.remeshing.quality, kQualityAgain);
       if (local->flips + local->collapses > 0)
         log::info("    surface mended where its elements were poor: %d edges flipped, %d short edges collapsed; "
                   "volume %+.4f%%",
@@ -552,7 +577,10 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
   if (flow_lines) state.material_position = std::move(material);
   {
     Timers::Scope overlap(timers, "die overlap");
-    state.inside_dies = scene::inside_dies(scene, state);
+    for (std::size_t b = 0; b < scene.bodies.size(); ++b)
+      state.inside_dies[b] = inside_after[b]
+                                 ? *inside_after[b]
+                                 : scene::inside_dies(scene, state.mesh, state.bodies[b], int(b), state.dies);
   }
   const std::vector<std::vector<mesh::Point>> die_vertices = dies_in_place(scene, state);
   for (std::size_t r = first_record; r < state.remeshes.size(); ++r) {

@@ -268,6 +268,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
     element_fields.push_back(&d);
   const double strain_integral = integral(part, fields.strain);
   const double strain_max = *std::max_element(fields.strain.begin(), fields.strain.end());
+  const double worst_before = worst_quality(part);
   const SurfaceMending mended = mend_surface(part, element_fields, spec.quality, kFlatSurface);
   out.flips = mended.flips;
   out.collapses = mended.collapses;
@@ -318,8 +319,14 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   RegionRemesh local;
   mesh::TetMesh before_fit; // CGAL's mesh of the old region, before the fit to the dies: ε̄ is remapped on it
   // One try: the region remeshed with its surface kept or rebuilt; false,
-  // with why_not, when it failed or left an element below the trigger.
-  auto rebuild = [&](RegionSurface surface, std::span<const char> pinned) {
+  // with why_not, when it failed or left an element below the trigger. The
+  // `last` try is also taken short of the trigger when it leaves a better
+  // worst element than the body had, at least kQualityAgain of the trigger:
+  // the trigger then waits for kQualityAgain of what it left (remesh_due.h),
+  // as after a whole remesh short of it. The whole remesh it spares would
+  // move every contact node (docs/remeshing.md: a local remesh of the
+  // connecting rod lifting 0.056 to 0.142 had sent the body to one).
+  auto rebuild = [&](RegionSurface surface, std::span<const char> pinned, bool last) {
     out.surface = surface;
     out.peeled = 0;
     try {
@@ -371,6 +378,8 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
       }
     }
     if (out.worst >= spec.quality) return true;
+    out.short_of_trigger = last && out.worst > worst_before && out.worst >= kQualityAgain * spec.quality;
+    if (out.short_of_trigger) return true;
     std::snprintf(text, sizeof text, "a local remesh of %d elements, its surface %s, left worst quality %.3f",
                   out.rebuilt, surface == RegionSurface::kept ? "kept" : "rebuilt", out.worst);
     why_not = text;
@@ -400,7 +409,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
         pinned[n] = fields.touching_die[n] >= 0;
     const int let_go_passes = choice == Region::whole_body ? kLetGoPasses : 0;
     for (int pass = 0;; ++pass) {
-      if (rebuild(RegionSurface::rebuilt, pinned)) return true;
+      if (rebuild(RegionSurface::rebuilt, pinned, pass == let_go_passes)) return true;
       if (pass == let_go_passes || local.mesh.tets.empty()) return false;
       int let_go = 0;
       for (int e = 0; e < local.mesh.tet_count(); ++e)
@@ -423,7 +432,8 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   if (!due.die_corners.empty() || choice == Region::whole_body)
     rebuilt = rebuild_with_surface();
   else
-    rebuilt = rebuild(RegionSurface::kept, {}) || (!spec.split_sunk_edges && rebuild_with_surface());
+    rebuilt =
+        rebuild(RegionSurface::kept, {}, spec.split_sunk_edges) || (!spec.split_sunk_edges && rebuild_with_surface());
   if (!rebuilt) return std::nullopt;
   // The nodal fields, taken after the bisection may have moved them.
   const double* part_temperature = fields.temperature.empty() ? nullptr : fields.temperature.data();

@@ -25,4 +25,12 @@ namespace anvil::die {
 double overlap_volume(const mesh::TetMesh& mesh, const mesh::MeshRange& body, const DieSurface& surface,
                       const Eigen::Vector3d& shift, double deepest);
 
+/// overlap_volume of the whole mesh `after` less that of `before` (mm³),
+/// from the boundary faces one has and the other not (the same corners'
+/// coordinates make the same face): a remesh that changes a few faces of a
+/// body's surface changes only their share, and the faces it keeps need no
+/// search. On rank 0 alone (a remesh's).
+double overlap_change(const mesh::TetMesh& before, const mesh::TetMesh& after, const DieSurface& surface,
+                      const Eigen::Vector3d& shift, double deepest);
+
 } // namespace anvil::die

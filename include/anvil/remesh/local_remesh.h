@@ -43,6 +43,9 @@ struct LocalRemesh {
   int peeled = 0;                          ///< flat tets on a sharp edge of the kept surface taken off
   RegionSurface surface = RegionSurface::kept;
   double worst = 1.0; ///< worst quality of the rebuilt region
+  /// Taken with `worst` below remeshing.quality: better than the body's
+  /// worst before, and at least kQualityAgain of the trigger.
+  bool short_of_trigger = false;
   /// With the surface rebuilt: the volume (mm³) of CGAL's mesh and after the
   /// put-back onto the dies, and what the put-back and keep_material did.
   double volume_remeshed = 0.0, volume_put_back = 0.0, given_back = 0.0;

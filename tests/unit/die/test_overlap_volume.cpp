@@ -1,5 +1,6 @@
 // The part of a body's mesh inside a rigid die (die::overlap_volume).
 #include "anvil/die/overlap_volume.h"
+#include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/generators.h"
 
 #include <catch2/catch.hpp>
@@ -61,4 +62,35 @@ TEST_CASE("A die ridge sunk between nodes overlaps the body by its wedge", "[uni
   const Ridge die(0.8);
   const double overlap = die::overlap_volume(cube, mesh::whole_range(cube), die, Eigen::Vector3d::Zero(), 1.0);
   CHECK(std::abs(overlap - 0.04) <= 1.5e-3);
+}
+
+TEST_CASE("The overlap's change from a few changed faces is the whole overlap's change", "[unit][die]") {
+  // The ridge sunk 0.2 mm into the cube's top; a top edge over the ridge
+  // is bisected and its midpoint pressed down past the die's wall, as a
+  // split over a sunk die edge does. overlap_change looks at the faces that changed
+  // only; added to the overlap before, it must give the overlap measured
+  // anew, to the rounding of two sums of the same face shares (1e-12).
+  const mesh::TetMesh before = mesh::make_box({0, 0, 0}, {1, 1, 1}, 0.25);
+  const Ridge die(0.8);
+  const double overlap_before = die::overlap_volume(before, mesh::whole_range(before), die, {0, 0, 0}, 1.0);
+  mesh::TetMesh after = before;
+  std::array<int, 2> across{-1, -1};
+  for (const mesh::Triangle& f : after.boundary_faces)
+    for (int i = 0; i < 3 && across[0] < 0; ++i) {
+      const mesh::Point &a = after.nodes[f[i]], &b = after.nodes[f[(i + 1) % 3]];
+      if (a.z() == 1.0 && b.z() == 1.0 && a.x() != b.x() && std::abs(a.x() - 0.5) <= 0.25 &&
+          std::abs(b.x() - 0.5) <= 0.25)
+        across = {f[i], f[(i + 1) % 3]};
+    }
+  REQUIRE(across[0] >= 0);
+  mesh::bisect_edges(after, {across});
+  after.nodes.back().z() -= 0.1; // out of the ridge (0.075 mm inside it before): less overlap
+  const double overlap_after = die::overlap_volume(after, mesh::whole_range(after), die, {0, 0, 0}, 1.0);
+  REQUIRE(overlap_after < overlap_before);
+  const double change = die::overlap_change(before, after, die, {0, 0, 0}, 1.0);
+  CHECK(std::abs(overlap_before + change - overlap_after) <= 1e-12 * overlap_before);
+  // The same surface numbered otherwise changes nothing: no face differs.
+  mesh::TetMesh renumbered = before;
+  std::reverse(renumbered.boundary_faces.begin(), renumbered.boundary_faces.end());
+  CHECK(die::overlap_change(before, renumbered, die, {0, 0, 0}, 1.0) == 0.0);
 }
