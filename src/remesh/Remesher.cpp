@@ -16,19 +16,17 @@
 #include "anvil/remesh/local_remesh.h"
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/remesh_body.h"
+#include "anvil/remesh/remesh_progress.h"
 #include "anvil/remesh/size_field.h"
 #include "anvil/thermal/HeatStep.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstdio>
 #include <future>
-#include <mutex>
 #include <optional>
 #include <stop_token>
-#include <thread>
 
 namespace anvil::remesh {
 namespace {
@@ -52,33 +50,10 @@ struct Remeshed {
 constexpr double kMostVolumeChange = 0.01;
 /// The widest feature angle a last try of a poor remesh takes (deg).
 constexpr double kWidestFeatureAngle = 80.0;
-/// A line on the terminal every this often while CGAL works (s).
-constexpr double kProgressEvery = 5.0;
 /// Bisections of the coarsening that meets the node budget (to 1e-9 of it).
 constexpr int kCoarsenBisections = 40;
 /// Why a try run beside a good enough one was not made to its end (never taken up).
 constexpr const char* kNotNeeded = "stopped: another try was good enough";
-
-/// Says every kProgressEvery seconds, while it lives, that body `name` is
-/// still being remeshed: CGAL gives no progress of its own.
-class RemeshProgress {
-public:
-  RemeshProgress(std::string name, double expected_nodes)
-      : thread_([this, name = std::move(name), expected_nodes](std::stop_token stop) {
-          const auto start = std::chrono::steady_clock::now();
-          std::unique_lock lock(mutex_);
-          while (!wake_.wait_for(lock, stop, std::chrono::duration<double>(kProgressEvery), [] { return false; })) {
-            if (stop.stop_requested()) return;
-            log::info("    remeshing '%s': %.0f s so far (about %.3g nodes expected)", name.c_str(),
-                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), expected_nodes);
-          }
-        }) {}
-
-private:
-  std::mutex mutex_;
-  std::condition_variable_any wake_;
-  std::jthread thread_; ///< last: stopped and joined before the mutex goes
-};
 
 /// What is wrong with the shape of a remeshed body `after` (to follow "it
 /// is"), empty when nothing: it is not a manifold, or it was a ball
