@@ -322,7 +322,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   // with why_not, when it failed or left an element below the trigger. The
   // `last` try is also taken short of the trigger when it leaves a better
   // worst element than the body had, at least kQualityAgain of the trigger:
-  // the trigger then waits for kQualityAgain of what it left (remesh_due.h),
+  // the trigger then waits for kQualityAgain of itself (remesh_due.h),
   // as after a whole remesh short of it. The whole remesh it spares would
   // move every contact node (docs/remeshing.md: a local remesh of the
   // connecting rod lifting 0.056 to 0.142 had sent the body to one).

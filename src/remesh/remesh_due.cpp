@@ -61,7 +61,7 @@ constexpr double kShortestSplit = 0.6;
 } // namespace
 
 double quality_due_below(double left, double floor) {
-  return left < floor ? kQualityAgain * left : floor;
+  return left < floor ? kQualityAgain * floor : floor;
 }
 
 std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt) {
@@ -96,8 +96,8 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
                     100.0 * overlap / body.initial_volume);
       local = false;
     } else if (poor && quality_trigger < spec.quality)
-      std::snprintf(why, sizeof why, "worst quality %.3f below %.3g, %g of the %.3f the last remesh left", q.worst,
-                    quality_trigger, kQualityAgain, left.worst_quality);
+      std::snprintf(why, sizeof why, "worst quality %.3f below %.3g, %g of %g: the last remesh left %.3f", q.worst,
+                    quality_trigger, kQualityAgain, spec.quality, left.worst_quality);
     else if (poor)
       std::snprintf(why, sizeof why, "worst quality %.3f below %g", q.worst, spec.quality);
     else if (q.predicted_worst <= 0.0)

@@ -32,19 +32,23 @@ struct RemeshDue {
 
 /// A remesh that could not lift the worst element above remeshing.quality
 /// (a flat tet CGAL keeps on a crease of the surface) is not redone until
-/// the worst element is below this share of what it left: the hot
+/// the worst element is below this share of the trigger: the hot
 /// connecting rod was remeshed whole at nearly every increment from 8.2 mm
 /// on, 4-7 s each, for the same 0.06-0.09.
 constexpr double kQualityAgain = 0.8;
 
 /// The worst quality below which a body is due for a remesh for quality:
-/// `floor` (remeshing.quality), or kQualityAgain × `left`, the worst the
-/// body's last remesh left, when that is below the floor.
+/// `floor` (remeshing.quality), or kQualityAgain × `floor` when `left`, the
+/// worst the body's last remesh left, is below it. The lower trigger does
+/// not follow `left` down: taken-short remeshes, each due at a share of
+/// what the last one left, let the connecting rod's trigger fall from 0.15
+/// to 0.066 at 1.44 mm, and an element was crushed flat between two
+/// remeshes.
 double quality_due_below(double left, double floor);
 
 /// The bodies of `state` to remesh after an increment of `dt` (s), by the
 /// case's triggers: worst quality below remeshing.quality (below
-/// kQualityAgain × what the last remesh left, when that was lower), an
+/// kQualityAgain × it, when the last remesh left less), an
 /// element that would invert in a next increment alike, every N increments, a die vertex
 /// deeper than die_penetration × the element size inside the body, more than
 /// die_overlap × its initial volume inside the dies (each of the last two
