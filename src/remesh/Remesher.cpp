@@ -404,8 +404,9 @@ void remesh_bodies(const scene::Scene& scene, scene::RunState& state, std::span<
                   100.0 * record.strain_integral_change, 100.0 * record.strain_max_change, record.seconds);
       if (local->short_of_trigger)
         log::info("    taken short of remeshing.quality %g: better than the worst element before, and the next remesh "
-                  "waits until the worst is %g of this one's (a whole remesh would move every contact node)",
-                  scene.input.remeshing.quality, kQualityAgain);
+                  "waits until the worst is below %g (a whole remesh would move every contact node)",
+                  scene.input.remeshing.quality,
+                  quality_due_below(record.worst_quality_after, scene.input.remeshing.quality));
       if (local->flips + local->collapses > 0)
         log::info("    surface mended where its elements were poor: %d edges flipped, %d short edges collapsed; "
                   "volume %+.4f%%",

@@ -7,6 +7,7 @@
 #include "anvil/remesh/field_transfer.h"
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/rebuild_region.h"
+#include "anvil/remesh/remesh_due.h"
 #include "anvil/remesh/surface_mending.h"
 
 #include <algorithm>
@@ -321,8 +322,8 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   // One try: the region remeshed with its surface kept or rebuilt; false,
   // with why_not, when it failed or left an element below the trigger. The
   // `last` try is also taken short of the trigger when it leaves a better
-  // worst element than the body had, at least kQualityAgain of the trigger:
-  // the trigger then waits for kQualityAgain of itself (remesh_due.h),
+  // worst element than the body had, and none the lowered trigger would take
+  // at once: the trigger then waits at kQualityAgain of itself (remesh_due.h),
   // as after a whole remesh short of it. The whole remesh it spares would
   // move every contact node (docs/remeshing.md: a local remesh of the
   // connecting rod lifting 0.056 to 0.142 had sent the body to one).
@@ -378,7 +379,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
       }
     }
     if (out.worst >= spec.quality) return true;
-    out.short_of_trigger = last && out.worst > worst_before && out.worst >= kQualityAgain * spec.quality;
+    out.short_of_trigger = last && out.worst > worst_before && out.worst >= quality_due_below(out.worst, spec.quality);
     if (out.short_of_trigger) return true;
     std::snprintf(text, sizeof text, "a local remesh of %d elements, its surface %s, left worst quality %.3f",
                   out.rebuilt, surface == RegionSurface::kept ? "kept" : "rebuilt", out.worst);
