@@ -13,6 +13,7 @@
 #include "anvil/remesh/expected_nodes.h"
 #include "anvil/remesh/field_transfer.h"
 #include "anvil/remesh/fit_to_dies.h"
+#include "anvil/remesh/free_surface_tags.h"
 #include "anvil/remesh/local_remesh.h"
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/remesh_body.h"
@@ -31,7 +32,16 @@
 namespace anvil::remesh {
 namespace {
 
-/// One body's new mesh, the best of up to three tries.
+/// One try at a body's new mesh: its edge length (times the body's), its
+/// feature angle (deg), and whether the faces no condition names are one
+/// free surface (free_surface_tags.h).
+struct Try {
+  double scale = 1.0;
+  double feature_angle = 40.0;
+  bool free_surface = false;
+};
+
+/// One body's new mesh, the best of up to four tries.
 struct Remeshed {
   mesh::TetMesh remeshed;   ///< CGAL's mesh of the old body: the fields are transferred onto it
   mesh::TetMesh mesh;       ///< the same, fitted to the dies
@@ -107,7 +117,11 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   }
   const RemeshProgress progress(body.name, expected);
   const auto deadline = deadline_in(spec.time_limit);
-  auto make = [&](double scale, double feature_angle, std::stop_token stop) {
+  // The last try's input: the faces no condition names one free surface.
+  mesh::TetMesh free_part = part;
+  free_surface_tags(free_part, body.conditions);
+  auto make = [&](const Try& to, std::stop_token stop) {
+    const auto [scale, feature_angle, free_surface] = to;
     RemeshSettings settings;
     settings.deadline = deadline;
     settings.stop = stop;
@@ -124,7 +138,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
     t.edge_length = settings.edge_length;
     t.expected = terms.at(coarsen * scale);
     try {
-      t.remeshed = remesh_body(part, settings);
+      t.remeshed = remesh_body(free_surface ? free_part : part, settings);
     } catch (const RunError& error) {
       t.failed = error.what();
       return t;
@@ -174,11 +188,15 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   // CGAL splits, and last with a feature angle twice as wide (at most
   // kWidestFeatureAngle): a die edge presses a crease into the surface that
   // the feature angle keeps as a patch border, with the element it crushed
-  // (the connecting rod's 0.002). The best acceptable try is kept.
-  std::vector<std::pair<double, double>> tries{
-      {1.0, spec.feature_angle}, {0.95, spec.feature_angle}, {0.9, spec.feature_angle}};
-  if (const double wider = std::min(2.0 * spec.feature_angle, kWidestFeatureAngle); wider > spec.feature_angle)
-    tries.emplace_back(1.0, wider);
+  // (the connecting rod's 0.002), and with the billet's faces one free
+  // surface (free_surface_tags.h): a border between two of them that the
+  // dies drew smooth is kept too, and a die presses its nodes together
+  // (the connecting rod at 1.0 mm). The best acceptable try is kept.
+  std::vector<Try> tries{
+      {1.0, spec.feature_angle, false},
+      {0.95, spec.feature_angle, false},
+      {0.9, spec.feature_angle, false},
+      {1.0, std::max(spec.feature_angle, std::min(2.0 * spec.feature_angle, kWidestFeatureAngle)), true}};
   // The tries do not depend on each other: as many run at once as this
   // process has cores, and they are taken up one after the other as if made
   // so, which gives the same mesh on any number of cores. Those beside a try
@@ -191,21 +209,21 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
     std::stop_source not_needed;
     std::vector<std::future<Remeshed>> beside;
     for (std::size_t k = first + 1; k < end; ++k)
-      beside.push_back(std::async(std::launch::async, [&make, &tries, k, stop = not_needed.get_token()] {
-        return make(tries[k].first, tries[k].second, stop);
-      }));
-    Remeshed own = make(tries[first].first, tries[first].second, {});
+      beside.push_back(std::async(std::launch::async,
+                                  [&make, &tries, k, stop = not_needed.get_token()] { return make(tries[k], stop); }));
+    Remeshed own = make(tries[first], {});
     for (std::size_t k = first; k < end && !(k > first && done()); ++k) {
-      const auto& [scale, angle] = tries[k];
+      const auto& [scale, angle, free_surface] = tries[k];
       Remeshed again = k == first ? std::move(own) : beside[k - first - 1].get();
       log::write_held(again.log);
       const std::string why = fault(again);
+      const char* surface = free_surface ? ", the billet's faces one free surface" : "";
       if (!again.failed.empty())
-        log::info("    remesh of '%s' with h %.3g mm, feature angle %.0f deg not made: %s", body.name.c_str(),
-                  again.edge_length, angle, why.c_str());
-      else if (scale != 1.0 || angle != spec.feature_angle || !why.empty())
-        log::info("    remesh of '%s' with h %.3g mm, feature angle %.0f deg: worst quality %.3f%s%s",
-                  body.name.c_str(), again.edge_length, angle, again.worst,
+        log::info("    remesh of '%s' with h %.3g mm, feature angle %.0f deg%s not made: %s", body.name.c_str(),
+                  again.edge_length, angle, surface, why.c_str());
+      else if (scale != 1.0 || angle != spec.feature_angle || free_surface || !why.empty())
+        log::info("    remesh of '%s' with h %.3g mm, feature angle %.0f deg%s: worst quality %.3f%s%s",
+                  body.name.c_str(), again.edge_length, angle, surface, again.worst,
                   why.empty() ? "" : "; not taken: ", why.c_str());
       if (why.empty() && (!best || again.worst > best->worst))
         best = std::move(again);
