@@ -18,6 +18,7 @@
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/remesh_body.h"
 #include "anvil/remesh/remesh_progress.h"
+#include "anvil/remesh/remesh_tries.h"
 #include "anvil/remesh/size_field.h"
 #include "anvil/thermal/HeatStep.h"
 
@@ -31,15 +32,6 @@
 
 namespace anvil::remesh {
 namespace {
-
-/// One try at a body's new mesh: its edge length (times the body's), its
-/// feature angle (deg), and whether the faces no condition names are one
-/// free surface (free_surface_tags.h).
-struct Try {
-  double scale = 1.0;
-  double feature_angle = 40.0;
-  bool free_surface = false;
-};
 
 /// One body's new mesh, the best of up to four tries.
 struct Remeshed {
@@ -58,8 +50,6 @@ struct Remeshed {
 /// A remesh may not change the body's volume by more than this before the
 /// put-back onto the dies (CGAL's own loss; the cases lose below 0.01 %).
 constexpr double kMostVolumeChange = 0.01;
-/// The widest feature angle a last try of a poor remesh takes (deg).
-constexpr double kWidestFeatureAngle = 80.0;
 /// Bisections of the coarsening that meets the node budget (to 1e-9 of it).
 constexpr int kCoarsenBisections = 40;
 /// Why a try run beside a good enough one was not made to its end (never taken up).
@@ -117,10 +107,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
   }
   const RemeshProgress progress(body.name, expected);
   const auto deadline = deadline_in(spec.time_limit);
-  // The last try's input: the faces no condition names one free surface.
-  mesh::TetMesh free_part = part;
-  free_surface_tags(free_part, body.conditions);
-  auto make = [&](const Try& to, std::stop_token stop) {
+  auto make = [&](const RemeshTry& to, std::stop_token stop) {
     const auto [scale, feature_angle, free_surface] = to;
     RemeshSettings settings;
     settings.deadline = deadline;
@@ -138,7 +125,13 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
     t.edge_length = settings.edge_length;
     t.expected = terms.at(coarsen * scale);
     try {
-      t.remeshed = remesh_body(free_surface ? free_part : part, settings);
+      if (free_surface) {
+        mesh::TetMesh freed = part;
+        free_surface_tags(freed, body.conditions);
+        t.remeshed = remesh_body(freed, settings);
+      } else {
+        t.remeshed = remesh_body(part, settings);
+      }
     } catch (const RunError& error) {
       t.failed = error.what();
       return t;
@@ -182,21 +175,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
       return "the new mesh has no face for boundary " + lost;
     return std::string(text);
   };
-  // A result whose worst element is below the trigger would be due again at
-  // once: CGAL can keep elements whose four nodes lie on patch borders. It
-  // is remade with edges 5 % and then 10 % shorter, which changes where
-  // CGAL splits, and last with a feature angle twice as wide (at most
-  // kWidestFeatureAngle): a die edge presses a crease into the surface that
-  // the feature angle keeps as a patch border, with the element it crushed
-  // (the connecting rod's 0.002), and with the billet's faces one free
-  // surface (free_surface_tags.h): a border between two of them that the
-  // dies drew smooth is kept too, and a die presses its nodes together
-  // (the connecting rod at 1.0 mm). The best acceptable try is kept.
-  std::vector<Try> tries{
-      {1.0, spec.feature_angle, false},
-      {0.95, spec.feature_angle, false},
-      {0.9, spec.feature_angle, false},
-      {1.0, std::max(spec.feature_angle, std::min(2.0 * spec.feature_angle, kWidestFeatureAngle)), true}};
+  const auto tries = remesh_tries(spec.feature_angle); // the best acceptable one is kept
   // The tries do not depend on each other: as many run at once as this
   // process has cores, and they are taken up one after the other as if made
   // so, which gives the same mesh on any number of cores. Those beside a try
