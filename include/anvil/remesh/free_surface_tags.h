@@ -6,7 +6,7 @@
 // into the part, stays a line of nodes no remesh moves, and the element a
 // die crushes flat against it is made again by every try (the connecting
 // rod at 1.0 mm, at the bar's upper side edge by the small boss). The last
-// try of a whole remesh (Remesher.cpp) takes them as one free surface,
+// try of a whole remesh (remesh_tries.h) takes them as one free surface,
 // and a mesh it made keeps them so; every try taking them so made the hub
 // flange's load jumps at whole remeshes larger (docs/remeshing.md).
 #pragma once
