@@ -84,7 +84,6 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
     // region's surface rebuilt); a periodic remesh takes the whole body.
     bool local = spec.local && (poor || q.predicted_worst <= 0.0);
     std::vector<mesh::Point> corners;
-    std::vector<SunkEdge> sunk_edges;
     bool periodic = false;
     // The overlap trigger comes first: its whole remesh mends poor elements
     // too, and a local remesh for them, which keeps the surface, would let
@@ -122,18 +121,6 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
           for (const SunkVertex& v : sunk)
             if (v.feature.depth > kAlongEdge * depth_trigger) corners.push_back(v.feature.vertex);
         }
-      if (!why[0] && spec.split_sunk_edges) {
-        sunk_edges =
-            edges_over_die_features(state.mesh, state.bodies[b], scene, state.dies, kSunkEdgeDepth * body.remesh_size,
-                                    kShortestSplit * body.remesh_size, body.remesh_size);
-        if (!sunk_edges.empty()) {
-          std::snprintf(why, sizeof why,
-                        "%zu boundary edges over a die fillet or edge, %.3g%% of its volume inside "
-                        "the dies",
-                        sunk_edges.size(), 100.0 * overlap / body.initial_volume);
-          local = true;
-        }
-      }
     }
     if (why[0])
       due.push_back({.body = int(b),
@@ -141,9 +128,25 @@ std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunSta
                      .local = local,
                      .periodic = periodic,
                      .die_corners = std::move(corners),
-                     .sunk_edges = std::move(sunk_edges)});
+                     .sunk_edges = {}});
+    else if (std::optional<RemeshDue> split = sunk_edges_due(scene, state, int(b)))
+      due.push_back(std::move(*split));
   }
   return due;
+}
+
+std::optional<RemeshDue> sunk_edges_due(const scene::Scene& scene, const scene::RunState& state, int b) {
+  const scene::Body& body = scene.bodies[b];
+  if (!scene.input.remeshing.split_sunk_edges || scene.dies.empty() || body.law->is_elastic()) return std::nullopt;
+  std::vector<SunkEdge> sunk_edges =
+      edges_over_die_features(state.mesh, state.bodies[b], scene, state.dies, kSunkEdgeDepth * body.remesh_size,
+                              kShortestSplit * body.remesh_size, body.remesh_size);
+  if (sunk_edges.empty()) return std::nullopt;
+  char why[160];
+  std::snprintf(why, sizeof why, "%zu boundary edges over a die fillet or edge, %.3g%% of its volume inside the dies",
+                sunk_edges.size(), 100.0 * state.inside_dies[b] / body.initial_volume);
+  return RemeshDue{
+      .body = b, .why = why, .local = true, .periodic = false, .die_corners = {}, .sunk_edges = std::move(sunk_edges)};
 }
 
 } // namespace anvil::remesh

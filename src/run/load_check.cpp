@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace anvil::run {
 
@@ -26,6 +27,31 @@ double next_increment_load(const scene::Scene& scene, const scene::RunState& sta
   return load;
 }
 
+namespace {
+
+/// After a remesh for another trigger, with remeshing.split_sunk_edges, the
+/// edges its new mesh leaves sunk over a die feature are split in the same
+/// step: a whole remesh resamples the surface at the body's size and drops
+/// the nodes earlier splits had put onto the die edges, and remesh_due looks
+/// for sunk edges only in an increment with no other trigger.
+void split_sunk_edges_after(const Scene& scene, RunState& state, std::span<const remesh::RemeshDue> due,
+                            const TimeStep& next, Timers& timers) {
+  std::vector<remesh::RemeshDue> splits;
+  for (const remesh::RemeshDue& d : due)
+    if (d.sunk_edges.empty())
+      if (std::optional<remesh::RemeshDue> split = remesh::sunk_edges_due(scene, state, d.body)) {
+        split->why = "after that remesh, " + split->why;
+        splits.push_back(std::move(*split));
+      }
+  if (splits.empty()) return;
+  // The dies each new node presses on, from the velocity carried onto it;
+  // no strain rates: a split takes no size field.
+  const Discretisation disc = discretise(scene, state, timers);
+  remesh::remesh(scene, state, splits, disc.touching_die(state.unknowns.nodal), {}, next.length, timers);
+}
+
+} // namespace
+
 void remesh_checking_load(const Scene& scene, RunState& state, std::span<const remesh::RemeshDue> due,
                           std::span<const int> touching_die, std::span<const double> rate, const TimeStep& next,
                           Timers& timers) {
@@ -33,12 +59,16 @@ void remesh_checking_load(const Scene& scene, RunState& state, std::span<const r
   const double old_mesh = check ? next_increment_load(scene, state, next, 1, timers) : 0.0;
   const std::size_t first_record = state.remeshes.size();
   remesh::remesh(scene, state, due, touching_die, rate, next.length, timers);
+  const std::size_t first_split = state.remeshes.size();
+  split_sunk_edges_after(scene, state, due, next, timers);
   if (!check || state.remeshes.size() == first_record) return; // no body took a new mesh: nothing to compare
   // Twice on the new mesh: friction takes σ₀ from the strain rates of the
   // solution before, at first the interpolated velocity; the second solve
   // takes them from the first, as the next increment will.
   const double new_mesh = next_increment_load(scene, state, next, 2, timers);
-  for (std::size_t r = first_record; r < state.remeshes.size(); ++r)
+  // The jump is the remesh's, splits after it included; a split alone carries it when it was all.
+  const std::size_t end = first_split > first_record ? first_split : state.remeshes.size();
+  for (std::size_t r = first_record; r < end; ++r)
     state.remeshes[r].load_old_mesh = old_mesh, state.remeshes[r].load_new_mesh = new_mesh;
   if (std::isnan(old_mesh) || std::isnan(new_mesh))
     log::info("    load check: the next increment (dt %.3g s) did not converge on the %s mesh; not measured",

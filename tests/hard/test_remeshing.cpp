@@ -98,9 +98,13 @@ void check_max_strain(const RemeshedRun& run) {
 /// at equal geometry (remeshing.check_load): the press load of the increment
 /// after the remesh, solved on the old mesh and on the new one at the same
 /// die positions and Δt. Newton stops at a residual far below 3 % of the load.
+/// A split of sunk edges right after a remesh of the same body is measured
+/// with it: the first record of the step carries the step's jump.
 void check_load_jump(const RemeshedRun& run, double bound) {
   REQUIRE(run.c.remeshing.check_load);
-  for (const scene::RemeshRecord& r : run.end.remeshes) {
+  for (std::size_t k = 0; k < run.end.remeshes.size(); ++k) {
+    const scene::RemeshRecord& r = run.end.remeshes[k];
+    if (k > 0 && run.end.remeshes[k - 1].increment == r.increment && run.end.remeshes[k - 1].body == r.body) continue;
     INFO("remesh after increment " << r.increment << ": press load " << r.load_old_mesh << " N on the old mesh, "
                                    << r.load_new_mesh << " N on the new");
     REQUIRE(std::isfinite(r.load_old_mesh));
@@ -211,9 +215,12 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
 // iterations a Newton iteration on this part, twice the time on one
 // process; the run to closure, over half an hour on one process
 // (cases/conrod.yaml), is beyond the tier. The load jump at equal geometry
-// is bounded above its measured worst, at a whole remesh, as for the
-// closed-die forging above: 4.4 % in this run, 3.4 % on two processes,
-// 4.4 % with FGMRES; bounded at 6 %, as an earlier variant reached 5.7 %.
+// is bounded above its measured worst, as for the closed-die forging
+// above. It follows the remesh path: in this run 0.89 % at worst (a split),
+// -0.41 % at its one whole remesh, which a split follows; on other paths to
+// this stroke whole remeshes gave 3.4 % (two processes), 4.4 % (FGMRES) and
+// 5.7 %, and later in the run to closure about 10 % (docs/remeshing.md).
+// Bounded at 6 %, above every path measured to this stroke.
 TEST_CASE("The connecting rod to 3.6 mm: every remesh improves its worst element and keeps volume and strain integral",
           "[hard][remesh]") {
   const RemeshedRun run = run_remeshed("cases/conrod.yaml", "anvil_hard_conrod",

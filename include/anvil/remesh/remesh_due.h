@@ -4,6 +4,7 @@
 #include "anvil/scene/RunState.h"
 #include "anvil/scene/Scene.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,5 +59,10 @@ double quality_due_below(double left, double floor);
 /// than a tenth of the element size inside a die (sunk_edges). Elastic
 /// bodies keep their mesh. Logs each body's quality.
 std::vector<RemeshDue> remesh_due(const scene::Scene& scene, const scene::RunState& state, double dt);
+
+/// Body `b` due for the split of its boundary edges sunk over a die fillet
+/// or edge (remesh_due's last trigger), with remeshing.split_sunk_edges;
+/// nothing without it, or when no edge is sunk that deep.
+std::optional<RemeshDue> sunk_edges_due(const scene::Scene& scene, const scene::RunState& state, int b);
 
 } // namespace anvil::remesh

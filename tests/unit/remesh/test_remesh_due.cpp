@@ -2,7 +2,7 @@
 // (once a remesh has left one, only when it gets worse), every N increments, a die vertex sunk into the body, a die
 // edge the last remesh could not fit that has not sunk further, and the body's overlap with the dies, alike; surface
 // edges over a sunk die feature, and their split.
-#include "test_common.h"
+#include "scene_at_start.h"
 
 #include "anvil/core/Timers.h"
 #include "anvil/mesh/tet_geometry.h"
@@ -20,15 +20,7 @@ using namespace anvil;
 
 namespace {
 
-struct Run {
-  Timers timers;
-  scene::Case input; // the scene keeps a reference to it
-  scene::Scene scene;
-  scene::RunState state;
-  Run(const std::string& file, const std::vector<std::string>& overrides)
-      : input(scene::read_case(source_path(file), overrides)), scene(input, timers),
-        state(scene::initial_state(scene)) {}
-};
+using Run = SceneAtStart;
 
 constexpr double kStep = 1e-3; // s, the Δt over which the next increment is looked ahead (nothing moves)
 

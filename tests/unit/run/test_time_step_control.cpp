@@ -1,9 +1,8 @@
 // TimeStepControl on cases/upsetting.yaml's scene (top die at 10 mm/s,
 // stroke increment 0.15 mm, stop at a stroke of 7.5 mm): the step it plans
 // from a state, its cuts, the sliver rule for contact events, and its stops.
-#include "test_common.h"
+#include "scene_at_start.h"
 
-#include "anvil/core/Timers.h"
 #include "anvil/run/TimeStepControl.h"
 #include "anvil/scene/Case.h"
 #include "anvil/scene/Scene.h"
@@ -14,14 +13,9 @@ using namespace anvil;
 
 namespace {
 
-struct Upsetting {
-  Timers timers;
-  scene::Case input; // the scene keeps a reference to it
-  scene::Scene scene;
-  scene::RunState state;
+struct Upsetting : SceneAtStart {
   explicit Upsetting(const std::vector<std::string>& overrides = {})
-      : input(scene::read_case(source_path("cases/upsetting.yaml"), overrides)), scene(input, timers),
-        state(scene::initial_state(scene)) {}
+      : SceneAtStart("cases/upsetting.yaml", overrides) {}
 };
 
 } // namespace
