@@ -428,33 +428,44 @@ int study(int argc, char** argv) {
     char text[500];
     const std::optional<Richardson> rich =
         stopped.empty() ? richardson(std::sqrt(r1 * r2), f[0], f[1], f[2]) : std::nullopt;
-    if (rich) {
+    // The MINI element's load converges at first to second order in h. An
+    // observed order far outside that says the three runs are not yet in the
+    // asymptotic range (e.g. remeshes that move the load by more than the
+    // refinement does). Above it the extrapolation stays near the finest run
+    // and is kept as rough; below it, it divides the last step by r^p − 1
+    // → 0 and lands anywhere (near 0, at many times the runs' load), so it
+    // is not made.
+    constexpr double kLowestOrder = 0.5, kHighestOrder = 3.0;
+    if (rich && rich->order >= kLowestOrder) {
       converged = rich->converged;
-      // The MINI element's load converges at first to second order in h; an
-      // observed order far outside that says the three runs are not yet in
-      // the asymptotic range (e.g. remeshes that move the load by more than
-      // the refinement does), and the extrapolation is no better than a guess.
-      const bool asymptotic = rich->order >= 0.5 && rich->order <= 3.0;
       std::snprintf(text, sizeof text,
                     "Richardson over %s = %s, %s, %s (%.5g, %.5g, %.5g kN): closure load %.5g kN, observed order "
                     "%.2f%s",
                     p.key.c_str(), p.values[n - 3].c_str(), p.values[n - 2].c_str(), p.values[n - 1].c_str(),
                     f[0] / 1e3, f[1] / 1e3, f[2] / 1e3, rich->converged / 1e3, rich->order,
-                    asymptotic ? ""
-                               : " (outside the element's 0.5-3: the runs are not in the asymptotic range, the "
-                                 "estimate is rough)");
+                    rich->order <= kHighestOrder ? ""
+                                                 : " (above the element's 0.5-3: the runs are not in the asymptotic "
+                                                   "range, the estimate is rough)");
     } else if (stopped.empty()) {
       reference = &runs.run(p.key, p.values[n - 1]);
       converged = f[2];
-      // Either the loads change direction, or they move one way by a larger
-      // step at each refinement: both leave no order to extrapolate with.
-      const bool one_way = (f[0] - f[1]) * (f[1] - f[2]) > 0.0;
+      // The loads change direction, move one way by a larger step at each
+      // refinement, or by nearly the same step: none leaves an order to
+      // extrapolate with.
+      char why[120];
+      if (rich)
+        std::snprintf(why, sizeof why,
+                      "move by nearly the same step at each refinement (observed order %.2f, below %g)", rich->order,
+                      kLowestOrder);
+      else
+        std::snprintf(why, sizeof why, "%s",
+                      (f[0] - f[1]) * (f[1] - f[2]) > 0.0 ? "move further apart as the mesh is refined"
+                                                          : "do not converge monotonically");
       std::snprintf(text, sizeof text,
                     "the closure loads at %s = %s, %s, %s (%.5g, %.5g, %.5g kN) %s: no Richardson estimate, the finest "
                     "run is the reference",
                     p.key.c_str(), p.values[n - 3].c_str(), p.values[n - 2].c_str(), p.values[n - 1].c_str(),
-                    f[0] / 1e3, f[1] / 1e3, f[2] / 1e3,
-                    one_way ? "move further apart as the mesh is refined" : "do not converge monotonically");
+                    f[0] / 1e3, f[1] / 1e3, f[2] / 1e3, why);
     } else {
       // The finest run that reached closure is the reference.
       const std::string* finest_closed = nullptr;
