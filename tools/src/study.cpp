@@ -206,6 +206,14 @@ double error_against(const LoadCurve& curve, const LoadCurve& reference, double 
 struct Richardson {
   double converged, order;
 };
+/// The MINI element's load converges at first to second order in h. An
+/// observed order far outside that says the three runs are not yet in the
+/// asymptotic range (e.g. remeshes that move the load by more than the
+/// refinement does). Above kHighestOrder the extrapolation stays near the
+/// finest run and is kept as rough; below kLowestOrder it divides the last
+/// step by r^p − 1 → 0 and lands anywhere (near 0, at many times the runs'
+/// load), so it is not made.
+constexpr double kLowestOrder = 0.5, kHighestOrder = 3.0;
 std::optional<Richardson> richardson(double ratio, double f1, double f2, double f3) {
   const double q = (f1 - f2) / (f2 - f3);
   if (!(q > 1.0) || !std::isfinite(q)) return std::nullopt; // q > 1: p > 0
@@ -428,14 +436,6 @@ int study(int argc, char** argv) {
     char text[500];
     const std::optional<Richardson> rich =
         stopped.empty() ? richardson(std::sqrt(r1 * r2), f[0], f[1], f[2]) : std::nullopt;
-    // The MINI element's load converges at first to second order in h. An
-    // observed order far outside that says the three runs are not yet in the
-    // asymptotic range (e.g. remeshes that move the load by more than the
-    // refinement does). Above it the extrapolation stays near the finest run
-    // and is kept as rough; below it, it divides the last step by r^p − 1
-    // → 0 and lands anywhere (near 0, at many times the runs' load), so it
-    // is not made.
-    constexpr double kLowestOrder = 0.5, kHighestOrder = 3.0;
     if (rich && rich->order >= kLowestOrder) {
       converged = rich->converged;
       std::snprintf(text, sizeof text,
@@ -452,15 +452,13 @@ int study(int argc, char** argv) {
       // The loads change direction, move one way by a larger step at each
       // refinement, or by nearly the same step: none leaves an order to
       // extrapolate with.
-      char why[120];
+      char why[120] = "do not converge monotonically";
       if (rich)
         std::snprintf(why, sizeof why,
                       "move by nearly the same step at each refinement (observed order %.2f, below %g)", rich->order,
                       kLowestOrder);
-      else
-        std::snprintf(why, sizeof why, "%s",
-                      (f[0] - f[1]) * (f[1] - f[2]) > 0.0 ? "move further apart as the mesh is refined"
-                                                          : "do not converge monotonically");
+      else if ((f[0] - f[1]) * (f[1] - f[2]) > 0.0)
+        std::snprintf(why, sizeof why, "move further apart as the mesh is refined");
       std::snprintf(text, sizeof text,
                     "the closure loads at %s = %s, %s, %s (%.5g, %.5g, %.5g kN) %s: no Richardson estimate, the finest "
                     "run is the reference",
