@@ -223,6 +223,9 @@ void log_fit(const PutBack& put_back, double remeshed, double put_back_volume, d
               "surface touched (widest gap %.3g mm): volume %+.4f%% (contact projection)",
               put_back.nodes, put_back.deepest, put_back.closed, put_back.widest,
               100.0 * relative(put_back_volume, remeshed));
+  if (put_back.left > 0)
+    log::info("    left inside the dies: %d new boundary nodes (deepest %.3g mm): moving them would spoil an element",
+              put_back.left, put_back.deepest_left);
   if (given_back != 0.0)
     log::info("    material given back: the free surface moved %+.3g mm along its outward normal, volume %+.4f%%",
               given_back, 100.0 * relative(after, put_back_volume));

@@ -65,7 +65,10 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
       const bool across_gap = p.distance > 0.0 && p.distance <= widest_gap && on_face_touching(start, int(d));
       if (!inside && !across_gap) continue;
       const mesh::Point onto = shift + die::project_keeping(surface, x - shift, free, one_pass);
-      if (!guard.move(fresh, int(i), onto, quality_floor)) continue;
+      if (!guard.move(fresh, int(i), onto, quality_floor)) {
+        if (inside) ++done.left, done.deepest_left = std::max(done.deepest_left, -p.distance);
+        continue;
+      }
       x = onto; // a later die projects the node from where it now is
       if (inside)
         ++done.nodes, done.deepest = std::max(done.deepest, -p.distance);

@@ -168,7 +168,7 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
 // difference between two meshes of one body at h 1 mm (two fresh meshes
 // differ by 1.5-4.9 % between themselves); finer meshes lower
 // it at a cost beyond the suite's (docs/remeshing.md). Full stroke is asserted: a node the
-// put-back leaves inside a die is pushed out over the nominal step
+// put-back leaves inside a die is pushed out over the nominal step or longer
 // (ContactIncrement::closing_time), so a Δt cut can save its elements.
 TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshes keep volume and strain integral",
           "[hard][remesh]") {

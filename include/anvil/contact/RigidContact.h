@@ -2,7 +2,7 @@
 // the die is the master, each boundary node a slave. Per candidate node the
 // velocity gap of the increment is
 //   h = −(v − v_die)·n − δ₀/t   (≤ 0 allowed, paper eq. 19 with a rigid master;
-//   t = Δt, or the nominal step for a penetration: ContactIncrement::closing_time),
+//   t = Δt, or for a penetration the nominal step or longer: ContactIncrement::closing_time),
 // enforced by a penalty on the active nodes (contact/ActiveSet.h): contact
 // pressure σn = ρ h. Friction acts on active nodes.
 // The term is nodal (one 3×3 block per node), so the sparsity pattern of the

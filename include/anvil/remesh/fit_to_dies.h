@@ -15,10 +15,12 @@ namespace anvil::remesh {
 
 /// What put_onto_dies did.
 struct PutBack {
-  int nodes = 0;        ///< boundary nodes put onto a die from inside it
-  double deepest = 0.0; ///< the deepest of them was (mm)
-  int closed = 0;       ///< boundary nodes put onto a die across a gap, where the old surface touched it
-  double widest = 0.0;  ///< the widest such gap (mm)
+  int nodes = 0;             ///< boundary nodes put onto a die from inside it
+  double deepest = 0.0;      ///< the deepest of them was (mm)
+  int closed = 0;            ///< boundary nodes put onto a die across a gap, where the old surface touched it
+  double widest = 0.0;       ///< the widest such gap (mm)
+  int left = 0;              ///< boundary nodes left inside a die: moving them would spoil an element
+  double deepest_left = 0.0; ///< the deepest of them (mm)
 };
 
 /// Puts boundary nodes of `fresh`, the new mesh of body `body`, onto the dies
@@ -27,7 +29,9 @@ struct PutBack {
 /// it (`touching_die`, per node of `old`: the die it presses on, or −1).
 /// Nodes on a symmetry plane of the body stay on it. A move that would leave
 /// an element around the node worse than `quality_floor` (or than it was) is
-/// not made: the next increment's contact takes that node. With `movable`
+/// not made (PutBack::left): the next increment's contact pushes that node
+/// out, no faster than ContactIncrement::recovery_speed, and the update
+/// after it projects the node where it can. With `movable`
 /// (a flag per node of `fresh`) only the flagged nodes move (a local remesh's new ones).
 PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<const int> touching_die,
                       const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
