@@ -38,14 +38,11 @@ constexpr double kFreeEnough = 0.5;
 constexpr double kPressingPressure = 0.1;
 
 /// Fastest push of a node out of a die it starts inside, as a share of the
-/// reference (press) speed: ContactIncrement::recovery_speed. A whole
-/// remesh of the connecting rod leaves 10-25 new surface nodes up to 0.9 mm
-/// inside the dies where putting them on would flatten an element. Pushed
-/// out over the nominal step, at up to 9 times the press speed, they drove a
-/// flow of their own: the elements around them took nearly as much power as
-/// the rest of the body, and the press load at equal geometry dropped 9.4 %
-/// (2.4 % at this bound). The projection after the increment takes them out
-/// geometrically wherever it can (docs/remeshing.md).
+/// reference (press) speed: ContactIncrement::recovery_speed. A remesh
+/// leaves nodes up to two thirds of an element inside the dies where putting
+/// them on would flatten an element; pushed out faster, they drive a flow
+/// of their own that lowers the press load (docs/method.md, contact). The
+/// projection after the increment takes them out geometrically where it can.
 constexpr double kRecoverySpeed = 0.1;
 
 /// The external vector of an increment of `dt`: the boundary tractions, and
