@@ -88,6 +88,9 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
             solver::to_string(c.linear_solver.kind).c_str(), c.newton.tolerance, c.newton.increment_tolerance,
             processes::count(), processes::count() > 1 ? "es" : "", threads, threads > 1 ? "s" : "",
             blas_kernels::in_use().c_str());
+  if (disc.solver->linear_solver().kind() == solver::LinearSolverKind::fgmres && scene.free_rotations)
+    log::info("  a body's rotation is held by contact alone (fewer than two symmetry planes): ML aggregates the "
+              "velocity block with the six rigid-body modes (-fieldsplit_0_pc_ml_nullspace user)");
   if (c.time.enabled) {
     const TimeSpec& t = c.time;
     log::info(

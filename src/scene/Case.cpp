@@ -533,7 +533,7 @@ Case read_case_document(const CheckedYaml& doc, const std::vector<std::string>& 
   });
   read_dies(doc, c);
   read_contact_pairs(doc, c);
-  c.linear_solver.facet_contact =
+  c.linear_solver.velocity_block.facet_contact =
       std::any_of(c.contact_pairs.begin(), c.contact_pairs.end(),
                   [](const ContactPairSpec& p) { return p.method.integration == contact::PairIntegration::facet; });
   const YAML::Node contact = section(root, "contact");

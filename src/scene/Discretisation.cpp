@@ -107,8 +107,9 @@ Discretisation discretise(const Scene& scene, RunState& state, Timers& timers) {
   }
   for (int k = 0; k < imposed.values.size(); ++k)
     if (imposed.prescribed[k]) state.unknowns.nodal[k] = imposed.values[k];
-  auto solver =
-      std::make_unique<solver::IncrementSolver>(state.mesh, imposed.prescribed, scene.input.linear_solver, timers);
+  solver::LinearSolverSettings linear = scene.input.linear_solver;
+  linear.velocity_block.free_rotations = scene.free_rotations;
+  auto solver = std::make_unique<solver::IncrementSolver>(state.mesh, imposed.prescribed, linear, timers);
   solver->set_quadrature_degree(scene.input.quadrature_degree);
   return Discretisation{std::move(laws),   std::move(imposed),
                         std::move(states), contact::RigidContact{},

@@ -225,9 +225,15 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
     Eigen::Vector3d centre = Eigen::Vector3d::Zero(); // of the nodes: which side of a plane the body is on
     for (const mesh::Point& x : part.nodes)
       centre += x / part.node_count();
+    std::array<bool, 3> symmetry_normal = {false, false, false};
+    bool held = false; // a face of prescribed velocity holds every rotation
     for (std::size_t i = 0; i < body.conditions.size(); ++i) {
+      const BoundaryCondition& bc = body.conditions[i];
+      held = held || ((bc.kind == BoundaryKind::velocity || bc.kind == BoundaryKind::sticking_plate) &&
+                      std::all_of(bc.velocity.begin(), bc.velocity.end(), [](const auto& v) { return v.has_value(); }));
       const int axis = body.initial_imposed.symmetry_axis[i];
       if (axis < 0) continue;
+      symmetry_normal[axis] = true;
       if (axis == 0 || axis == 1) symmetric_about[axis] = true;
       const double plane = part.nodes[body.initial_imposed.nodes_of_condition[i].front()][axis];
       if (centre[axis] > plane)
@@ -235,6 +241,9 @@ Scene::Scene(const Case& c, Timers& timers, const RunState* carried) : input(c) 
       else
         model_side.max()[axis] = plane;
     }
+    // Two symmetry planes of other normals hold every rotation; one leaves
+    // the rotation about its normal.
+    free_rotations = free_rotations || (!held && std::count(symmetry_normal.begin(), symmetry_normal.end(), true) < 2);
     body.initial_volume = mesh::volume(part) * kept_share;
     body.remesh_size = c.remeshing.element_size > 0.0 ? c.remeshing.element_size : mean_boundary_edge(part);
     if (c.remeshing.enabled && c.remeshing.element_size > 0.0) {

@@ -40,7 +40,7 @@ int ml_initial_seed() {
   return static_cast<int>((largest - 1) * (1.0 - (rank + 1) / (size + 1.0)));
 }
 
-/// ML's options for geometric aggregation (LinearSolverSettings::facet_contact).
+/// ML's options for geometric aggregation (VelocityBlockHints::facet_contact).
 /// Facet contact between bodies couples a node with the nodes of every
 /// facet of the other body its facets overlap, many and each weakly where a
 /// coarse facet lies on a fine mesh: aggregates that follow those couplings
@@ -91,10 +91,10 @@ KSP split_solver(PC pc, int i, const char* doing) {
 } // namespace
 
 struct KrylovSolver::Impl {
-  Impl(SchurApproximation s, bool facet, const fem::Partition& p, Timers& timers)
-      : schur(s), facet_contact(facet), partition(p), matrix(p, timers), rhs(p), solution(p) {}
+  Impl(SchurApproximation s, VelocityBlockHints h, const fem::Partition& p, Timers& timers)
+      : schur(s), hints(h), partition(p), matrix(p, timers), rhs(p), solution(p) {}
   SchurApproximation schur;
-  bool facet_contact;
+  VelocityBlockHints hints;
   const fem::Partition& partition;
   std::optional<petsc::BfbtSchur> bfbt; ///< of the KSP in place (its Schur PC's context)
   petsc::MatrixView matrix;
@@ -146,10 +146,11 @@ struct KrylovSolver::Impl {
     set_default_option("-fieldsplit_0_ksp_type", "preonly");
     set_default_option("-fieldsplit_0_pc_type", "ml");
     // ML aggregates with the block size's three translations: the six
-    // rigid-body modes (`user`) make its set-up and V-cycle dearer for about
-    // one Krylov iteration less, except on a body only its dies hold in
-    // rotation (docs/linear-solve.md).
-    set_default_option("-fieldsplit_0_pc_ml_nullspace", "block");
+    // rigid-body modes (`user`, set_rigid_body_modes) make its set-up and
+    // V-cycle dearer for about one Krylov iteration less, except on a body
+    // only its dies hold in rotation, where they take a fraction of the
+    // iterations (docs/linear-solve.md).
+    set_default_option("-fieldsplit_0_pc_ml_nullspace", hints.free_rotations ? "user" : "block");
     // Chebyshev smooths every ML level (velocity and BFBT's pressure
     // Laplacian): more Krylov iterations than PETSc's default (two SOR
     // sweeps), each about half the price, cheaper overall (docs/linear-solve.md).
@@ -168,11 +169,11 @@ struct KrylovSolver::Impl {
         PetscOptionsGetString(nullptr, nullptr, "-fieldsplit_0_pc_type", velocity_amg, sizeof velocity_amg, nullptr));
     const bool velocity_ml = std::string(velocity_amg) == "ml";
     set_default_option("-fieldsplit_0_mg_levels_pc_type", velocity_ml ? "pbjacobi" : "jacobi");
-    sor_smoothing = velocity_ml && facet_contact;
+    sor_smoothing = velocity_ml && hints.facet_contact;
     // An expert's -fieldsplit_0_pc_ml_Aux decides; else the scene's contact.
     PetscBool aux_given = PETSC_FALSE;
     petsc::check_options(PetscOptionsHasName(nullptr, nullptr, "-fieldsplit_0_pc_ml_Aux", &aux_given));
-    ml_coordinates = velocity_ml && (aux_given ? option_is_true("-fieldsplit_0_pc_ml_Aux") : facet_contact);
+    ml_coordinates = velocity_ml && (aux_given ? option_is_true("-fieldsplit_0_pc_ml_Aux") : hints.facet_contact);
     set_default_option("-fieldsplit_1_bfbt_mg_levels_ksp_type", "chebyshev");
     set_default_option("-fieldsplit_1_bfbt_mg_levels_pc_type", "jacobi");
     set_default_option("-fieldsplit_1_ksp_type", "preonly");
@@ -301,9 +302,9 @@ struct KrylovSolver::Impl {
   }
 };
 
-KrylovSolver::KrylovSolver(SchurApproximation schur, bool facet_contact, const fem::Partition& partition,
+KrylovSolver::KrylovSolver(SchurApproximation schur, VelocityBlockHints hints, const fem::Partition& partition,
                            Timers& timers)
-    : impl_(std::make_unique<Impl>(schur, facet_contact, partition, timers)) {}
+    : impl_(std::make_unique<Impl>(schur, hints, partition, timers)) {}
 KrylovSolver::~KrylovSolver() = default;
 
 void KrylovSolver::restart() {

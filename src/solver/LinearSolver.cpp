@@ -97,7 +97,7 @@ void LinearSolver::restart() {
     const int workspace = backend_ && backend_->mumps ? backend_->mumps->workspace_percent() : 0;
     backend_ = std::make_unique<Backend>();
     if (kind_ == LinearSolverKind::fgmres)
-      backend_->krylov.emplace(settings_.schur, settings_.facet_contact, partition_, timers_);
+      backend_->krylov.emplace(settings_.schur, settings_.velocity_block, partition_, timers_);
     if (kind_ == LinearSolverKind::mumps) backend_->mumps.emplace(partition_, timers_, workspace);
     backend_->minres.setMaxIterations(20000);
   }

@@ -211,9 +211,11 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
 // bosses, not a body of revolution. To 3.6 mm: sunk die edges split from the
 // fifth increment, local and whole remeshes, creases pressed by the die
 // edges (a whole remesh takes off the flat tets CGAL leaves on them,
-// mesh/boundary_slivers.h). Solved by MUMPS: FGMRES needs about 70 Krylov
-// iterations a Newton iteration on this part, twice the time on one
-// process; the run to closure, over half an hour on one process
+// mesh/boundary_slivers.h). Solved by MUMPS: FGMRES with the three
+// translations as ML's near-null space needed about 70 Krylov iterations a
+// Newton iteration on this part, twice the time on one process (its
+// default, the six rigid-body modes, takes fewer); the run to closure, over
+// half an hour on one process
 // (cases/conrod.yaml), is beyond the tier. The load jump at equal geometry
 // is bounded above its measured worst, as for the closed-die forging
 // above. It follows the remesh path: in this run 0.89 % at worst (a split),

@@ -80,7 +80,10 @@ struct Scene {
   /// σ_n + Δt C:ε̇), not on the geometry it starts from as a flow's do.
   bool all_elastic = false;
   bool compensate_volume = false; ///< the volume_compensation effect
-  bool thermal = false;           ///< the heat effect: some body is solved for heat
+  /// Some body's conditions leave it a rotation (fewer than two symmetry
+  /// planes, no face whose velocity is prescribed): only contact holds it.
+  bool free_rotations = false;
+  bool thermal = false; ///< the heat effect: some body is solved for heat
   /// Nothing moves (no moving die, no prescribed velocity) in a thermal
   /// scene: the time loop solves heat alone (cooling, dwell, transfer).
   bool heat_only = false;

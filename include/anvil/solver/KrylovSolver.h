@@ -37,6 +37,18 @@ enum class SchurApproximation {
   mass, ///< −(C + M_p/η): the condensed-bubble block and the viscosity-scaled pressure mass
 };
 
+/// What the velocity block's AMG is told about the scene.
+struct VelocityBlockHints {
+  /// Facet contact between bodies couples a node weakly with many nodes of
+  /// the other body: ML aggregates on a distance Laplacian of the nodes (its
+  /// auxiliary matrix) instead of the block's own couplings, and smooths with SOR.
+  bool facet_contact = false;
+  /// A body's conditions leave a rotation free, so that only its contact
+  /// holds it: ML aggregates with the six rigid-body modes, not only the
+  /// three translations, whose aggregates cannot represent the rotation.
+  bool free_rotations = false;
+};
+
 struct KrylovOutcome {
   bool converged = false;
   int iterations = 0;
@@ -47,10 +59,8 @@ struct KrylovOutcome {
 class KrylovSolver {
 public:
   /// On the rows of `partition`; the matrix's creation timed in `timers`
-  /// (both must outlive the solver). With `facet_contact`, ML aggregates
-  /// the velocity block on a distance Laplacian of the nodes (its auxiliary
-  /// matrix) instead of the block's own couplings, and smooths it with SOR.
-  KrylovSolver(SchurApproximation schur, bool facet_contact, const fem::Partition& partition, Timers& timers);
+  /// (both must outlive the solver); the velocity AMG chosen after `hints`.
+  KrylovSolver(SchurApproximation schur, VelocityBlockHints hints, const fem::Partition& partition, Timers& timers);
   ~KrylovSolver();
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;

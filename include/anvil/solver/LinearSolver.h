@@ -55,11 +55,9 @@ struct LinearSolverSettings {
   /// --no-reuse`, set-up time over time per iteration). Counted, not timed,
   /// so that a run stays the same from one run to the next.
   double setup_cost = 16.0;
-  /// The scene has facet contact between bodies, whose rows couple a node
-  /// weakly with many nodes of the other body: ML aggregates the velocity
-  /// block on the nodes' geometry rather than on the matrix, and smooths it
-  /// with SOR (KrylovSolver).
-  bool facet_contact = false;
+  /// What the scene tells the velocity AMG (facet contact between bodies,
+  /// rotations only contact holds).
+  VelocityBlockHints velocity_block{};
 };
 
 class LinearSolver {
