@@ -89,8 +89,8 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
             processes::count(), processes::count() > 1 ? "es" : "", threads, threads > 1 ? "s" : "",
             blas_kernels::in_use().c_str());
   if (disc.solver->linear_solver().kind() == solver::LinearSolverKind::fgmres && scene.free_rotations)
-    log::info("  a body's rotation is held by contact alone (fewer than two symmetry planes): ML aggregates the "
-              "velocity block with the six rigid-body modes (-fieldsplit_0_pc_ml_nullspace user)");
+    log::info("  a body's rotation is held by contact alone (fewer than two symmetry planes): ML's near-null space "
+              "defaults to the six rigid-body modes (-fieldsplit_0_pc_ml_nullspace user)");
   if (c.time.enabled) {
     const TimeSpec& t = c.time;
     log::info(
