@@ -215,10 +215,9 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
 // translations as ML's near-null space needed about 70 Krylov iterations a
 // Newton iteration on this part, twice the time on one process (its
 // default, the six rigid-body modes, takes fewer); the run to closure, over
-// half an hour on one process
-// (cases/conrod.yaml), is beyond the tier. The load jump at equal geometry
-// is bounded above its measured worst, as for the closed-die forging
-// above. It follows the remesh path: in this run 0.89 % at worst (a split),
+// half an hour on one process (cases/conrod.yaml), is beyond the tier. The
+// load jump at equal geometry is bounded above its measured worst, as for
+// the closed-die forging above. It follows the remesh path: in this run 0.89 % at worst (a split),
 // -0.41 % at its one whole remesh, which a split follows; on other paths to
 // this stroke whole remeshes gave 3.4 % (two processes), 4.4 % (FGMRES) and
 // 5.7 %, and later in the run to closure about 10 % (docs/remeshing.md).
