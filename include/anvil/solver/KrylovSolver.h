@@ -3,16 +3,18 @@
 // block factorisation
 //   P = [ K̂  Bᵀ ]      K̂ ≈ K: one algebraic-multigrid V-cycle on the
 //       [ 0  Ŝ  ]      velocity block (ML by default, aggregating on the
-//                      nodes' geometry for facet contact; GAMG with the
-//                      rigid-body near-null space, or hypre BoomerAMG),
-//   Ŝ = −(C + M_p/η) ≈ S = −C − B K⁻¹ Bᵀ: the condensed-bubble block plus
-// the lumped viscosity-scaled pressure mass (Elman, Silvester, Wathen 2014,
-// §9.2), with the sign of the true Schur complement (the wrong sign costs 6x
-// the iterations). The velocity and pressure splits are given as index sets
-// (the C block defeats PETSc's saddle-point detection). Every choice is a
-// PETSc option default, so -ksp_*, -pc_fieldsplit_*, -fieldsplit_0_* and
-// -fieldsplit_1_* options on the command line or in solver.petsc_options
-// override it.
+//                      nodes' geometry for facet contact, with the six
+//                      rigid-body modes where only contact holds a
+//                      rotation; GAMG with the rigid-body near-null space,
+//                      or hypre BoomerAMG),
+//   Ŝ ≈ S = −C − B K⁻¹ Bᵀ: stabilised BFBT by default (bfbt_schur.h), or
+// −(C + M_p/η), the condensed-bubble block plus the lumped viscosity-scaled
+// pressure mass (Elman, Silvester, Wathen 2014, §9.2), with the sign of the
+// true Schur complement (the wrong sign costs 6x the iterations). The
+// velocity and pressure splits are given as index sets (the C block defeats
+// PETSc's saddle-point detection). Every choice is a PETSc option default,
+// so -ksp_*, -pc_fieldsplit_*, -fieldsplit_0_* and -fieldsplit_1_* options
+// on the command line or in solver.petsc_options override it.
 #pragma once
 #include "anvil/core/Timers.h"
 #include "anvil/fem/Assembler.h"
