@@ -217,10 +217,11 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
 // default, the six rigid-body modes, takes fewer); the run to closure, over
 // half an hour on one process (cases/conrod.yaml), is beyond the tier. The
 // load jump at equal geometry is bounded above its measured worst, as for
-// the closed-die forging above. It follows the remesh path: in this run 0.89 % at worst (a split),
-// -0.41 % at its one whole remesh, which a split follows; on other paths to
-// this stroke whole remeshes gave 3.4 % (two processes), 4.4 % (FGMRES) and
-// 5.7 %, and later in the run to closure about 10 % (docs/remeshing.md).
+// the closed-die forging above. It follows the remesh path: in this run
+// 0.89 % at worst (a split), -0.41 % at its one whole remesh, which a split
+// follows; on other paths to this stroke whole remeshes gave 3.4 % (two
+// processes), 4.4 % (FGMRES) and 5.7 %, and later in the run to closure
+// about 10 % (docs/remeshing.md).
 // Bounded at 6 %, above every path measured to this stroke.
 TEST_CASE("The connecting rod to 3.6 mm: every remesh improves its worst element and keeps volume and strain integral",
           "[hard][remesh]") {

@@ -81,7 +81,8 @@ struct Scene {
   bool all_elastic = false;
   bool compensate_volume = false; ///< the volume_compensation effect
   /// Some body's conditions leave it a rotation (fewer than two symmetry
-  /// planes, no face whose velocity is prescribed): only contact holds it.
+  /// planes of different normals, no face whose velocity is prescribed):
+  /// only contact holds it.
   bool free_rotations = false;
   bool thermal = false; ///< the heat effect: some body is solved for heat
   /// Nothing moves (no moving die, no prescribed velocity) in a thermal
