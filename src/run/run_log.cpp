@@ -90,7 +90,7 @@ void log_header(const Scene& scene, const Discretisation& disc, const RunState& 
             blas_kernels::in_use().c_str());
   if (disc.solver->linear_solver().kind() == solver::LinearSolverKind::fgmres && scene.free_rotations)
     log::info("  a body's rotation is held by contact alone (fewer than two symmetry planes): ML's near-null space "
-              "defaults to the six rigid-body modes (-fieldsplit_0_pc_ml_nullspace user)");
+              "is the six rigid-body modes, not only the translations, less the directions contact holds");
   if (c.time.enabled) {
     const TimeSpec& t = c.time;
     log::info(

@@ -3,6 +3,7 @@
 #include "anvil/core/interrupt.h"
 #include "anvil/solver/PetscSession.h"
 #include "bfbt_schur.h"
+#include "held_modes.h"
 #include "petsc_check.h"
 #include "petsc_matrix.h"
 
@@ -108,6 +109,7 @@ struct KrylovSolver::Impl {
   std::optional<PetscReal> user_tolerance; ///< -ksp_rtol's: it replaces the Newton-driven tolerance
   PetscInt max_iterations = 0;             ///< after the options (500, or -ksp_max_it)
   bool set_up = false;                     ///< the splits' solvers exist
+  bool velocity_ml = false;                ///< ML on the velocity block (not an expert's GAMG or hypre)
   bool ml_coordinates = false;             ///< ML aggregates on the geometry: it needs the coordinates
   bool sor_smoothing = false;              ///< ML's velocity levels smoothed with SOR (kFacetSmoothing)
 
@@ -145,12 +147,12 @@ struct KrylovSolver::Impl {
     // anvil's choices go in as defaults that the user's options override.
     set_default_option("-fieldsplit_0_ksp_type", "preonly");
     set_default_option("-fieldsplit_0_pc_type", "ml");
-    // ML aggregates with the block size's three translations: the six
-    // rigid-body modes (`user`, set_rigid_body_modes) make its set-up and
-    // V-cycle dearer for about one Krylov iteration less, except on a body
-    // only its dies hold in rotation, where they take a fraction of the
-    // iterations (docs/linear-solve.md).
-    set_default_option("-fieldsplit_0_pc_ml_nullspace", hints.free_rotations ? "user" : "block");
+    // ML aggregates with the modes set_near_null_space gives it: the three
+    // translations, or the six rigid-body modes on a body only its dies hold
+    // in rotation (the six make ML's set-up and V-cycle dearer for about one
+    // Krylov iteration less elsewhere, docs/linear-solve.md), less the
+    // directions a penalty holds (held_directions.h).
+    set_default_option("-fieldsplit_0_pc_ml_nullspace", "user");
     // Chebyshev smooths every ML level (velocity and BFBT's pressure
     // Laplacian): more Krylov iterations than PETSc's default (two SOR
     // sweeps), each about half the price, cheaper overall (docs/linear-solve.md).
@@ -167,7 +169,7 @@ struct KrylovSolver::Impl {
     char velocity_amg[32] = "";
     petsc::check_options(
         PetscOptionsGetString(nullptr, nullptr, "-fieldsplit_0_pc_type", velocity_amg, sizeof velocity_amg, nullptr));
-    const bool velocity_ml = std::string(velocity_amg) == "ml";
+    velocity_ml = std::string(velocity_amg) == "ml";
     set_default_option("-fieldsplit_0_mg_levels_pc_type", velocity_ml ? "pbjacobi" : "jacobi");
     sor_smoothing = velocity_ml && hints.facet_contact;
     // An expert's -fieldsplit_0_pc_ml_Aux decides; else the scene's contact.
@@ -271,18 +273,20 @@ struct KrylovSolver::Impl {
       check(PCSetType(schur_pc, PCJACOBI), "setting up the Schur preconditioner");
   }
 
-  /// The six rigid-body modes at the current coordinates: GAMG's near-null
-  /// space of the velocity block, and ML's when given
-  /// `-fieldsplit_0_pc_ml_nullspace user` (hypre uses the block size).
-  void set_rigid_body_modes(std::span<const mesh::Point> nodes) {
+  /// The velocity block's near-null space at the current coordinates and
+  /// the entries of `system`: the translations (the six rigid-body modes
+  /// with free rotations, or for an expert's GAMG) less the directions a
+  /// penalty holds (held_directions.h). ML's with `-fieldsplit_0_pc_ml_nullspace
+  /// user` (the default), GAMG's; hypre uses the block size.
+  void set_near_null_space(std::span<const mesh::Point> nodes, Mat system) {
     PetscScalar* x = nullptr;
     check(VecGetArray(coordinates, &x), "setting the rigid-body modes");
     for (int i = 0; i < partition.owned_count(); ++i)
       for (int c = 0; c < 3; ++c)
         x[3 * i + c] = nodes[partition.node[partition.first + i]][c];
     check(VecRestoreArray(coordinates, &x), "setting the rigid-body modes");
-    MatNullSpace modes = nullptr;
-    check(MatNullSpaceCreateRigidBody(coordinates, &modes), "setting the rigid-body modes");
+    MatNullSpace modes =
+        petsc::held_rigid_body_modes(system, coordinates, velocity_ml && !hints.free_rotations ? 3 : 6);
     check(PetscObjectCompose(reinterpret_cast<PetscObject>(velocity), "nearnullspace",
                              reinterpret_cast<PetscObject>(modes)),
           "setting the rigid-body modes");
@@ -355,7 +359,7 @@ void KrylovSolver::set_up(const SaddlePointData& data) {
   }
   // An expert's -pc_fieldsplit_schur_precondition (a11, selfp, ...) still wins.
   petsc::check_options(PCSetFromOptions(pc));
-  s.set_rigid_body_modes(data.nodes);
+  s.set_near_null_space(data.nodes, m);
   check(KSPSetOperators(s.ksp, m, m), "setting up the preconditioner");
   check(KSPSetReusePreconditioner(s.ksp, PETSC_FALSE), "setting up the preconditioner");
   // ML draws random vectors (its eigenvalue estimates) from one global seed
