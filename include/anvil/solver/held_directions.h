@@ -3,15 +3,18 @@
 //
 // Smoothed aggregation builds its coarse levels from modes of low energy,
 // Kz ≈ 0. A rigid-body mode is one only where nothing holds the body: at a
-// node where a die's contact penalty ρA n nᵀ (or sticking friction, or a
-// symmetry plane's) dominates its rows, moving the node along n costs ρA,
+// node where a die's contact penalty ρA n nᵀ (or sticking friction's on the
+// tangential velocity) dominates its rows, moving the node along n costs ρA,
 // and a coarse basis function that moves it so is far from the smooth
 // error there. As AMG does with Dirichlet conditions, the modes leave those
 // directions out: at each node, the component along every eigenvector of
 // the symmetric part of its 3×3 velocity block whose eigenvalue exceeds
 // kHeldDominance times the node's couplings to other nodes. The smoother
 // (point-block Jacobi inverts the node's block) corrects those directions,
-// and the coarse levels see the motion the penalty leaves free.
+// and the coarse levels see the motion the penalty leaves free. A
+// prescribed velocity component (a symmetry plane's: its row and column out
+// of the system, the mean diagonal on it) is not held by this rule, as the
+// node's other rows carry couplings; the modes keep it, as they did before.
 #pragma once
 #include <Eigen/Core>
 
