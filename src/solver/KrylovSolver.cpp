@@ -147,11 +147,7 @@ struct KrylovSolver::Impl {
     // anvil's choices go in as defaults that the user's options override.
     set_default_option("-fieldsplit_0_ksp_type", "preonly");
     set_default_option("-fieldsplit_0_pc_type", "ml");
-    // ML aggregates with the modes set_near_null_space gives it: the three
-    // translations, or the six rigid-body modes on a body only its dies hold
-    // in rotation (the six make ML's set-up and V-cycle dearer for about one
-    // Krylov iteration less elsewhere, docs/linear-solve.md), less the
-    // directions a penalty holds (held_directions.h).
+    // ML aggregates with the modes set_near_null_space gives it.
     set_default_option("-fieldsplit_0_pc_ml_nullspace", "user");
     // Chebyshev smooths every ML level (velocity and BFBT's pressure
     // Laplacian): more Krylov iterations than PETSc's default (two SOR
@@ -274,10 +270,13 @@ struct KrylovSolver::Impl {
   }
 
   /// The velocity block's near-null space at the current coordinates and
-  /// the entries of `system`: the translations (the six rigid-body modes
-  /// with free rotations, or for an expert's GAMG) less the directions a
-  /// penalty holds (held_directions.h). ML's with `-fieldsplit_0_pc_ml_nullspace
-  /// user` (the default), GAMG's; hypre uses the block size.
+  /// the entries of `system`, less the directions a penalty holds
+  /// (held_directions.h): the three translations, or the six rigid-body
+  /// modes on a body only its dies hold in rotation (elsewhere the six make
+  /// ML's set-up and V-cycle dearer for about one Krylov iteration less,
+  /// docs/linear-solve.md) and for an expert's GAMG. ML's with
+  /// `-fieldsplit_0_pc_ml_nullspace user` (the default), GAMG's; hypre uses
+  /// the block size.
   void set_near_null_space(std::span<const mesh::Point> nodes, Mat system) {
     PetscScalar* x = nullptr;
     check(VecGetArray(coordinates, &x), "setting the rigid-body modes");
