@@ -37,10 +37,10 @@ namespace {
 /// The first solve after the set changed (`set_changed`) is held to the
 /// same tolerance: its residual and the one before belong to two problems,
 /// so Eisenstat-Walker's ratio says nothing, and the clamp's loose 1e-2 met
-/// the changed node's own force in one or two Krylov iterations and left
-/// the flow's answer to it unsolved. On the connecting rod's increment
-/// 83 (8.19 mm) each of three such changes then cost 4-7 Newton iterations
-/// of half steps (23 for the increment; 15 with the tight solve).
+/// the changed node's own force in 1-7 Krylov iterations and left the
+/// flow's answer to it unsolved. On the connecting rod's increment 83
+/// (8.19 mm) each of three such changes then cost 4-7 Newton iterations of
+/// half steps (23 for the increment; 15 with the tight solve).
 double krylov_tolerance(const NewtonSettings& settings, bool linear_problem, bool set_follows, bool set_changed,
                         double residual, double previous_residual, double previous_forcing) {
   constexpr double kGamma = 0.9, kSmallest = 1e-12, kSetFollowing = 1e-4;
