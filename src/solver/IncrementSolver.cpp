@@ -22,7 +22,7 @@ namespace {
 /// solution, tight as Newton converges quadratically; never tighter than
 /// what brings the residual to half the Newton tolerance. A linear problem is
 /// solved in one step to a tenth of the tolerance. While a contact active
-/// set follows the iterates (`set_follows`), the set is a step function of
+/// set follows the iterates (`set_unsettled`), the set is a step function of
 /// the direction, and a loose solve lets the preconditioner (another one on
 /// another number of processes) choose it. Measured on hot_upsetting and
 /// upsetting_sticking over 1, 2 and 3 processes: at 1e-2 the runs picked
@@ -34,15 +34,15 @@ namespace {
 /// contact nodes at 1.46 mm, 3e-3 of the load). At 1e-4 they agree; it
 /// cost upsetting 7 % of wall time, and the hub flange 2 %, where it took
 /// fewer Newton iterations (5.4 against 6.1 an increment; tools/bench_case).
-/// The first solve after the set changed (`set_changed`) is held to the
-/// same tolerance: its residual and the one before belong to two problems,
-/// so Eisenstat-Walker's ratio says nothing, and the clamp's loose 1e-2 met
-/// the changed node's own force in 1-7 Krylov iterations and left the
-/// flow's answer to it unsolved. On the connecting rod's increment 83
+/// The first solve after the set changed is held to the same tolerance
+/// (`set_unsettled` too): its residual and the one before belong to two
+/// problems, so Eisenstat-Walker's ratio says nothing, and the clamp's loose
+/// 1e-2 met the changed node's own force in 1-7 Krylov iterations and left
+/// the flow's answer to it unsolved. On the connecting rod's increment 83
 /// (8.19 mm) each of three such changes then cost 4-7 Newton iterations of
 /// half steps (23 for the increment; 15 with the tight solve).
-double krylov_tolerance(const NewtonSettings& settings, bool linear_problem, bool set_follows, bool set_changed,
-                        double residual, double previous_residual, double previous_forcing) {
+double krylov_tolerance(const NewtonSettings& settings, bool linear_problem, bool set_unsettled, double residual,
+                        double previous_residual, double previous_forcing) {
   constexpr double kGamma = 0.9, kSmallest = 1e-12, kSetFollowing = 1e-4;
   const double no_oversolve = 0.5 * settings.tolerance / std::max(residual, 1e-300);
   double forcing = settings.krylov_tolerance_max;
@@ -55,7 +55,7 @@ double krylov_tolerance(const NewtonSettings& settings, bool linear_problem, boo
       forcing = std::max(forcing, safeguard);
     forcing = std::max(forcing, no_oversolve);
   }
-  if (set_follows || set_changed) forcing = std::min(forcing, kSetFollowing);
+  if (set_unsettled) forcing = std::min(forcing, kSetFollowing);
   return std::isfinite(forcing) ? std::clamp(forcing, kSmallest, settings.krylov_tolerance_max) : kSmallest;
 }
 
@@ -357,7 +357,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     } else {
       far_stalls = 0;
     }
-    forcing = krylov_tolerance(settings, linear_problem, set_follows(problem), set_changed, residual_now,
+    forcing = krylov_tolerance(settings, linear_problem, set_follows(problem) || set_changed, residual_now,
                                previous_residual, forcing);
     previous_residual = residual_now;
     const bool first_cut = it == 2 && !far && report.iterations.back().step <= kFarCut && residual_now > kNearSolution;

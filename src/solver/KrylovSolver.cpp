@@ -278,30 +278,31 @@ struct KrylovSolver::Impl {
   /// `-fieldsplit_0_pc_ml_nullspace user` (the default), GAMG's; hypre uses
   /// the block size.
   void set_near_null_space(std::span<const mesh::Point> nodes, Mat system) {
+    constexpr const char* doing = "setting the velocity block's near-null space";
     PetscScalar* x = nullptr;
-    check(VecGetArray(coordinates, &x), "setting the rigid-body modes");
+    check(VecGetArray(coordinates, &x), doing);
     for (int i = 0; i < partition.owned_count(); ++i)
       for (int c = 0; c < 3; ++c)
         x[3 * i + c] = nodes[partition.node[partition.first + i]][c];
-    check(VecRestoreArray(coordinates, &x), "setting the rigid-body modes");
+    check(VecRestoreArray(coordinates, &x), doing);
     MatNullSpace modes =
         petsc::held_rigid_body_modes(system, coordinates, velocity_ml && !hints.free_rotations ? 3 : 6);
     check(PetscObjectCompose(reinterpret_cast<PetscObject>(velocity), "nearnullspace",
                              reinterpret_cast<PetscObject>(modes)),
-          "setting the rigid-body modes");
+          doing);
     // After the first set-up the split's matrix exists: it takes the new modes directly.
     PC pc = nullptr;
-    check(KSPGetPC(ksp, &pc), "setting the rigid-body modes");
+    check(KSPGetPC(ksp, &pc), doing);
     PetscInt splits = 0;
     KSP* sub = nullptr;
     if (set_up) {
-      check(PCFieldSplitGetSubKSP(pc, &splits, &sub), "setting the rigid-body modes");
+      check(PCFieldSplitGetSubKSP(pc, &splits, &sub), doing);
       Mat velocity_block = nullptr;
-      check(KSPGetOperators(sub[0], nullptr, &velocity_block), "setting the rigid-body modes");
-      if (velocity_block) check(MatSetNearNullSpace(velocity_block, modes), "setting the rigid-body modes");
+      check(KSPGetOperators(sub[0], nullptr, &velocity_block), doing);
+      if (velocity_block) check(MatSetNearNullSpace(velocity_block, modes), doing);
       PetscFree(sub);
     }
-    check(MatNullSpaceDestroy(&modes), "setting the rigid-body modes");
+    check(MatNullSpaceDestroy(&modes), doing);
   }
 };
 
