@@ -55,19 +55,27 @@ bool RunWriter::write(const scene::Scene& scene, const scene::Discretisation& di
   return processes::on_root_answer([&] { return write_due(scene, disc, state, force, timers); });
 }
 
+void RunWriter::write_frame(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state,
+                            Timers& timers) {
+  processes::on_root([&] { write_frame_due(scene, disc, state, false, timers); });
+}
+
+void RunWriter::write_frame_due(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state,
+                                bool force, Timers& timers) {
+  Timers::Scope scope(timers, "output");
+  write_loads(scene, state);
+  const bool vtk_due = scene.input.write_vtk && (force || state.increment % scene.input.vtk_every == 0);
+  if (vtk_due && last_vtk_ != state.increment) {
+    write_vtk(scene, disc, state);
+    if (disc.pair_contact) write_interface(scene, disc, state);
+    state.outputs = series_.entries();
+    last_vtk_ = state.increment;
+  }
+}
+
 bool RunWriter::write_due(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state,
                           bool force, Timers& timers) {
-  {
-    Timers::Scope scope(timers, "output");
-    write_loads(scene, state);
-    const bool vtk_due = scene.input.write_vtk && (force || state.increment % scene.input.vtk_every == 0);
-    if (vtk_due && last_vtk_ != state.increment) {
-      write_vtk(scene, disc, state);
-      if (disc.pair_contact) write_interface(scene, disc, state);
-      state.outputs = series_.entries();
-      last_vtk_ = state.increment;
-    }
-  }
+  write_frame_due(scene, disc, state, force, timers);
   const int every = scene.input.checkpoint_every;
   const bool checkpoint_due =
       scene.input.time.enabled && every > 0 && !checkpoints_stopped_ && (force || state.increment % every == 0);

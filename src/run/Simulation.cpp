@@ -1,5 +1,5 @@
 // The time loop (docs/design.md §4): choose Δt → solve the increment → accept it →
-// remesh if due → write. A case without a `time` section is one increment on
+// write its frame → remesh if due → checkpoint. A case without a `time` section is one increment on
 // the initial geometry.
 #include "anvil/run/Simulation.h"
 
@@ -263,6 +263,7 @@ RunEnd run(const Case& c, const RunOptions& options, RunState* part) {
     log_progress(scene, disc, state, inc, time_left.update(clock.progress(state), seconds_since(start)),
                  (timers.seconds("effect heat") - heat_before) / seconds_since(increment_start));
     if (c.detect_folds) watch_folds(scene, disc, state, timers);
+    writer.write_frame(scene, disc, state, timers); // before a remesh renumbers the nodes the contact names
     if (c.remeshing.enabled) {
       if (clock.stop(state))
         state.remesh_check_at_stop = {inc.time_step, inc.fields.rate, disc.touching_die(state.unknowns.nodal)};

@@ -27,6 +27,15 @@ public:
   bool write(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state, bool force,
              Timers& timers);
 
+  /// The frame part of write (loads.csv, the VTK series, interface.csv) on
+  /// its own, for the loop to call before a remesh: the contact fields are
+  /// the increment's, on its mesh (a remesh renumbers the nodes its contact
+  /// candidates name), and the stresses those of its own solution, not of
+  /// velocities transferred onto a new mesh. write then finds the frame
+  /// written and adds the checkpoint, of the state after the remesh.
+  void write_frame(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state,
+                   Timers& timers);
+
   /// summary.json: the run's figures (`last` is the Newton report of the
   /// last increment, `total` the wall time in s).
   void write_summary(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state,
@@ -42,6 +51,8 @@ public:
 private:
   bool write_due(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state, bool force,
                  Timers& timers);
+  void write_frame_due(const scene::Scene& scene, const scene::Discretisation& disc, scene::RunState& state, bool force,
+                       Timers& timers);
   void write_loads(const scene::Scene& scene, const scene::RunState& state);
   void write_vtk(const scene::Scene& scene, const scene::Discretisation& disc, const scene::RunState& state);
   void write_interface(const scene::Scene& scene, const scene::Discretisation& disc,
