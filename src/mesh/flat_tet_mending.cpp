@@ -187,11 +187,15 @@ int mend_flat_tets(TetMesh& mesh, int first, double below) {
   std::vector<char> dead(mesh.tets.size(), 0);
   int mended = 0;
   // New tets can be poor too (only better than their ring): a later pass
-  // looks at them again.
+  // looks at them again, not this one. Mending the tets a pass makes within
+  // the same pass chained lifted splits, each a little better than the last
+  // and a node more, without end (an adaptive connecting-rod remesh ran for
+  // over an hour in this loop).
   bool changed = true;
   for (int pass = 0; pass < kPasses && changed; ++pass) {
     changed = false;
-    for (int e = first; e < mesh.tet_count(); ++e) {
+    const int pass_end = mesh.tet_count();
+    for (int e = first; e < pass_end; ++e) {
       if (dead[e] || quality(mesh, e) >= below) continue;
       if (around.empty()) around = tets_around_nodes(mesh);
       const Tet t = mesh.tets[e];
