@@ -187,10 +187,9 @@ int mend_flat_tets(TetMesh& mesh, int first, double below) {
   std::vector<char> dead(mesh.tets.size(), 0);
   int mended = 0;
   // New tets can be poor too (only better than their ring): a later pass
-  // looks at them again, not this one. Mending the tets a pass makes within
-  // the same pass chained lifted splits, each a little better than the last
-  // and a node more, without end (an adaptive connecting-rod remesh ran for
-  // over an hour in this loop).
+  // looks at them again, not this one: within one pass, lifted splits of
+  // the tets it makes can chain without end, each a little better than the
+  // last and a node more.
   bool changed = true;
   for (int pass = 0; pass < kPasses && changed; ++pass) {
     changed = false;

@@ -1,6 +1,6 @@
 // The time loop (docs/design.md §4): choose Δt → solve the increment → accept it →
-// write its frame → remesh if due → checkpoint. A case without a `time` section is one increment on
-// the initial geometry.
+// write its frame → remesh if due → checkpoint. A case without a `time`
+// section is one increment on the initial geometry.
 #include "anvil/run/Simulation.h"
 
 #include "anvil/core/Timers.h"
