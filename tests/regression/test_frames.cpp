@@ -28,11 +28,13 @@ TEST_CASE("a frame written at an increment followed by a remesh shows that incre
   const anvil::scene::RunState end = run.final_state();
   REQUIRE(!end.remeshes.empty());
   const std::vector<anvil::io::SeriesEntry> series = anvil::io::read_series(run.directory);
+  auto first_remesh_after = [&](int increment) {
+    return std::find_if(end.remeshes.begin(), end.remeshes.end(),
+                        [&](const anvil::scene::RemeshRecord& r) { return r.increment == increment; });
+  };
   int checked = 0;
   for (const anvil::io::SeriesEntry& frame : series) {
-    const auto first = std::find_if(end.remeshes.begin(), end.remeshes.end(), [&](const anvil::scene::RemeshRecord& r) {
-      return r.increment == frame.increment;
-    });
+    const auto first = first_remesh_after(frame.increment);
     if (first == end.remeshes.end()) continue;
     INFO("frame of increment " << frame.increment);
     const auto grid = anvil::io::read_grid(run.directory + "/" + frame.parts.front());
@@ -58,8 +60,7 @@ TEST_CASE("a frame written at an increment followed by a remesh shows that incre
     ++checked;
   }
   CHECK(checked == static_cast<int>(std::count_if(series.begin(), series.end(), [&](const anvil::io::SeriesEntry& f) {
-          return std::any_of(end.remeshes.begin(), end.remeshes.end(),
-                             [&](const anvil::scene::RemeshRecord& r) { return r.increment == f.increment; });
+          return first_remesh_after(f.increment) != end.remeshes.end();
         })));
   CHECK(checked > 0);
 }
