@@ -176,6 +176,13 @@ struct KrylovSolver::Impl {
     set_default_option("-fieldsplit_1_bfbt_mg_levels_pc_type", "jacobi");
     set_default_option("-fieldsplit_1_ksp_type", "preonly");
     set_default_option("-fieldsplit_1_bfbt_pc_type", "ml");
+    // BFBT's D is K's block diagonal, each node's 3×3 block, not its
+    // diagonal (bfbt_schur.h): a contact node's penalty ρA n nᵀ holds it
+    // along the die's normal only, where diag(K) spreads that stiffness over
+    // the components of n and holds the node's sliding too wherever n is
+    // off an axis (drafted walls, fillets).
+    if (schur == SchurApproximation::bfbt)
+      set_default_option("-fieldsplit_1_mat_schur_complement_ainv_type", "blockdiag");
 
     check(KSPCreate(PETSC_COMM_WORLD, &ksp), "creating the Krylov solver");
     check(KSPSetType(ksp, KSPFGMRES), "creating the Krylov solver"); // the AMG cycle varies: flexible

@@ -6,7 +6,7 @@ namespace anvil::solver::petsc {
 
 BfbtSchur::~BfbtSchur() {
   KSPDestroy(&laplacian_);
-  VecDestroy(&inverse_diagonal_);
+  MatDestroy(&inverse_blocks_);
   for (Vec* v : {&velocity_[0], &velocity_[1], &pressure_[0], &pressure_[1]})
     VecDestroy(v);
 }
@@ -37,14 +37,15 @@ PetscErrorCode BfbtSchur::set_up(PC pc) {
     PetscCall(KSPGetPC(self->laplacian_, &multigrid));
     PetscCall(PCSetType(multigrid, PCML));
     PetscCall(KSPSetFromOptions(self->laplacian_));
-    PetscCall(MatCreateVecs(self->k_, &self->inverse_diagonal_, &self->velocity_[0]));
-    PetscCall(VecDuplicate(self->velocity_[0], &self->velocity_[1]));
+    PetscCall(MatCreateVecs(self->k_, &self->velocity_[0], &self->velocity_[1]));
     PetscCall(MatCreateVecs(selfp, &self->pressure_[0], &self->pressure_[1]));
   }
   PetscCall(KSPSetOperators(self->laplacian_, selfp, selfp));
   PetscCall(KSPSetUp(self->laplacian_));
-  PetscCall(MatGetDiagonal(self->k_, self->inverse_diagonal_));
-  PetscCall(VecReciprocal(self->inverse_diagonal_));
+  PetscCall(MatDestroy(&self->inverse_blocks_));
+  PetscCall(MatCreate(PetscObjectComm(reinterpret_cast<PetscObject>(pc)), &self->inverse_blocks_));
+  PetscCall(MatSetType(self->inverse_blocks_, MATAIJ));
+  PetscCall(MatInvertBlockDiagonalMat(self->k_, self->inverse_blocks_));
   PetscFunctionReturn(0);
 }
 
@@ -56,11 +57,11 @@ PetscErrorCode BfbtSchur::apply(PC pc, Vec r, Vec y) {
   // With selfp = −L and M = B D⁻¹ K D⁻¹ Bᵀ + C: z = selfp⁻¹ r = −L⁻¹ r,
   // t = M z, y = −selfp⁻¹ t = −L⁻¹ M L⁻¹ r = Ŝ⁻¹ r.
   PetscCall(KSPSolve(self->laplacian_, r, z));
-  PetscCall(MatMult(self->bt_, z, u));
-  PetscCall(VecPointwiseMult(u, u, self->inverse_diagonal_));
+  PetscCall(MatMult(self->bt_, z, w));
+  PetscCall(MatMult(self->inverse_blocks_, w, u));
   PetscCall(MatMult(self->k_, u, w));
-  PetscCall(VecPointwiseMult(w, w, self->inverse_diagonal_));
-  PetscCall(MatMult(self->b_, w, t));
+  PetscCall(MatMult(self->inverse_blocks_, w, u));
+  PetscCall(MatMult(self->b_, u, t));
   PetscCall(MatMult(self->minus_c_, z, y));
   PetscCall(VecAXPY(t, -1.0, y));
   PetscCall(KSPSolve(self->laplacian_, t, y));

@@ -3,11 +3,15 @@
 // Shadid, Shuttleworth, Tuminaro 2006, SIAM J. Sci. Comput. 27; with the
 // stabilisation C as in Elman, Howle, Shadid, Silvester, Tuminaro 2007,
 // SIAM J. Sci. Comput. 30):
-//   Ŝ⁻¹ = −L⁻¹ (B D⁻¹ K D⁻¹ Bᵀ + C) L⁻¹,   L = B D⁻¹ Bᵀ + C,   D = diag(K),
-// exact when K is diagonal. Unlike the viscosity-scaled mass matrix, it
+//   Ŝ⁻¹ = −L⁻¹ (B D⁻¹ K D⁻¹ Bᵀ + C) L⁻¹,   L = B D⁻¹ Bᵀ + C,
+// D the block diagonal of K (a node's 3×3 block), exact when K is block
+// diagonal. A contact node's block holds the penalty ρA n nᵀ, stiff along
+// the die's normal alone: D⁻¹ keeps the node free to slide, where diag(K)
+// would hold it on drafted walls and fillets. Unlike the viscosity-scaled mass matrix, it
 // follows the lubrication modes of a layer squeezed between dies (the
 // pressure of a friction hill), whose Schur complement is far below M_p/η.
-// L is PETSc's "selfp" matrix (its negative); one AMG V-cycle (ML by
+// L is PETSc's "selfp" matrix (its negative, with the block-diagonal
+// inverse: KrylovSolver's default ainv_type blockdiag); one AMG V-cycle (ML by
 // default, options prefix fieldsplit_1_bfbt_) stands for each L⁻¹.
 #pragma once
 #include <petscksp.h>
@@ -32,7 +36,7 @@ private:
 
   KSP laplacian_ = nullptr;                                          ///< one V-cycle on selfp = −L
   Mat k_ = nullptr, bt_ = nullptr, b_ = nullptr, minus_c_ = nullptr; ///< blocks of S (not owned)
-  Vec inverse_diagonal_ = nullptr;                                   ///< D⁻¹
+  Mat inverse_blocks_ = nullptr;                                     ///< D⁻¹
   Vec velocity_[2] = {nullptr, nullptr}, pressure_[2] = {nullptr, nullptr};
 };
 
