@@ -4,15 +4,15 @@
 // stabilisation C as in Elman, Howle, Shadid, Silvester, Tuminaro 2007,
 // SIAM J. Sci. Comput. 30):
 //   Ŝ⁻¹ = −L⁻¹ (B D⁻¹ K D⁻¹ Bᵀ + C) L⁻¹,   L = B D⁻¹ Bᵀ + C,
-// D the block diagonal of K (a node's 3×3 block), exact when K is block
+// D the block diagonal of K (each node's 3×3 block), exact when K is block
 // diagonal. A contact node's block holds the penalty ρA n nᵀ, stiff along
-// the die's normal alone: D⁻¹ keeps the node free to slide, where diag(K)
-// would hold it on drafted walls and fillets. Unlike the viscosity-scaled mass matrix, it
-// follows the lubrication modes of a layer squeezed between dies (the
-// pressure of a friction hill), whose Schur complement is far below M_p/η.
-// L is PETSc's "selfp" matrix (its negative, with the block-diagonal
-// inverse: KrylovSolver's default ainv_type blockdiag); one AMG V-cycle (ML by
-// default, options prefix fieldsplit_1_bfbt_) stands for each L⁻¹.
+// the die's normal alone: D⁻¹ leaves the node free to slide, where diag(K)
+// would hold it on drafted walls and fillets. Unlike the viscosity-scaled
+// mass matrix, Ŝ follows the lubrication modes of a layer squeezed between
+// dies (the pressure of a friction hill), whose Schur complement is far
+// below M_p/η. L is PETSc's "selfp" matrix (its negative), formed with the
+// same blocks (KrylovSolver's default ainv_type blockdiag); one AMG V-cycle
+// (ML by default, options prefix fieldsplit_1_bfbt_) stands for each L⁻¹.
 #pragma once
 #include <petscksp.h>
 
