@@ -176,13 +176,6 @@ struct KrylovSolver::Impl {
     set_default_option("-fieldsplit_1_bfbt_mg_levels_pc_type", "jacobi");
     set_default_option("-fieldsplit_1_ksp_type", "preonly");
     set_default_option("-fieldsplit_1_bfbt_pc_type", "ml");
-    // BFBT's D is K's block diagonal, each node's 3×3 block, not its
-    // diagonal (bfbt_schur.h): a contact node's penalty ρA n nᵀ holds it
-    // along the die's normal only, where diag(K) spreads that stiffness over
-    // the components of n and holds the node's sliding too wherever n is
-    // off an axis (drafted walls, fillets).
-    if (schur == SchurApproximation::bfbt)
-      set_default_option("-fieldsplit_1_mat_schur_complement_ainv_type", "blockdiag");
 
     check(KSPCreate(PETSC_COMM_WORLD, &ksp), "creating the Krylov solver");
     check(KSPSetType(ksp, KSPFGMRES), "creating the Krylov solver"); // the AMG cycle varies: flexible
@@ -195,8 +188,12 @@ struct KrylovSolver::Impl {
     check(PCFieldSplitSetIS(pc, "1", pressure), "creating the preconditioner");
     check(PCFieldSplitSetType(pc, PC_COMPOSITE_SCHUR), "creating the preconditioner");
     check(PCFieldSplitSetSchurFactType(pc, PC_FIELDSPLIT_SCHUR_FACT_UPPER), "creating the preconditioner");
-    if (schur == SchurApproximation::bfbt) // PETSc forms L = B D⁻¹ Bᵀ + C (as −selfp) for BfbtSchur
+    if (schur == SchurApproximation::bfbt) {
+      // PETSc forms L = B D⁻¹ Bᵀ + C (as −selfp) for BfbtSchur, with D K's
+      // node blocks as in BFBT's middle term (bfbt_schur.h says why).
       check(PCFieldSplitSetSchurPre(pc, PC_FIELDSPLIT_SCHUR_PRE_SELFP, nullptr), "creating the preconditioner");
+      set_default_option("-fieldsplit_1_mat_schur_complement_ainv_type", "blockdiag");
+    }
     petsc::check_options(KSPSetFromOptions(ksp));
     void* converged = nullptr;
     check(KSPConvergedDefaultCreate(&converged), "creating the Krylov solver");

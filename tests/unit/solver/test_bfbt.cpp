@@ -7,8 +7,7 @@
 #include "anvil/fem/Partition.h"
 #include "anvil/mesh/generators.h"
 #include "anvil/solver/LinearSolver.h"
-
-#include <petscsys.h>
+#include "anvil/solver/PetscSession.h"
 
 #include <cmath>
 #include <vector>
@@ -49,11 +48,9 @@ TEST_CASE("BFBT is exact where K is block diagonal: with exact inner solves FGMR
   const Eigen::VectorXd pressure_mass = Eigen::VectorXd::Ones(nodes);
   const fem::Partition partition = fem::partition_mesh(box, 1, 0);
 
-  const char* exact[][2] = {{"-fieldsplit_0_pc_type", "lu"}, {"-fieldsplit_1_bfbt_pc_type", "lu"}};
-  for (const auto& [name, value] : exact)
-    PetscOptionsSetValue(nullptr, name, value);
   int iterations = -1;
   {
+    const solver::ScopedPetscOptions exact("-fieldsplit_0_pc_type lu -fieldsplit_1_bfbt_pc_type lu", "test");
     Timers timers;
     solver::LinearSolver solver({solver::LinearSolverKind::fgmres}, n, partition, timers);
     REQUIRE(solver.factorize(a, {box.nodes, pressure_mass, {}}));
@@ -61,8 +58,6 @@ TEST_CASE("BFBT is exact where K is block diagonal: with exact inner solves FGMR
     REQUIRE(solver.kind() == solver::LinearSolverKind::fgmres);
     iterations = solver.iterations();
   }
-  for (const auto& [name, value] : exact)
-    PetscOptionsClearValue(nullptr, name);
   INFO("FGMRES iterations " << iterations << ", residual " << (rhs - a * x).norm() / rhs.norm());
   CHECK(iterations <= 2);
   CHECK((rhs - a * x).norm() <= 1e-9 * rhs.norm()); // the tolerance asked, with room for round-off
