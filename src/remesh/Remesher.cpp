@@ -219,9 +219,10 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
 /// (the free surface moved `given_back`, mm) to `after`.
 void log_fit(const PutBack& put_back, double remeshed, double put_back_volume, double given_back, double after) {
   if (put_back.nodes + put_back.closed > 0)
-    log::info("    put onto the dies: %d new boundary nodes inside them (deepest %.3g mm), %d off them where the old "
-              "surface touched (widest gap %.3g mm): volume %+.4f%% (contact projection)",
-              put_back.nodes, put_back.deepest, put_back.closed, put_back.widest,
+    log::info("    put onto the dies: %d new boundary nodes inside them (deepest %.3g mm; %d with the interior under "
+              "them), %d off them where the old surface touched (widest gap %.3g mm): volume %+.4f%% (contact "
+              "projection)",
+              put_back.nodes, put_back.deepest, put_back.carried, put_back.closed, put_back.widest,
               100.0 * relative(put_back_volume, remeshed));
   if (put_back.left > 0)
     log::info("    left inside the dies: %d new boundary nodes (deepest %.3g mm): moving them would spoil an element",

@@ -10,6 +10,10 @@
 #include <map>
 
 namespace anvil::remesh {
+namespace {
+/// Element rings of interior nodes carried along by a node put onto a die.
+constexpr int kCarriedRings = 3;
+} // namespace
 
 PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<const int> touching_die,
                       const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
@@ -49,6 +53,11 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
   };
   const double widest_gap = 0.25 * element_size;
   PutBack done;
+  // Nodes inside a die whose own move would crush an element under them
+  // (a fine surface layer over a die edge the old coarse chord cut deep).
+  std::vector<int> stuck;
+  std::vector<mesh::Point> stuck_onto;
+  std::vector<double> stuck_depth;
   const double one_pass = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < fresh.nodes.size(); ++i) {
     if (!on_boundary[i] || (!movable.empty() && !movable[i])) continue;
@@ -66,7 +75,8 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
       if (!inside && !across_gap) continue;
       const mesh::Point onto = shift + die::project_keeping(surface, x - shift, free, one_pass);
       if (!guard.move(fresh, int(i), onto, quality_floor)) {
-        if (inside) ++done.left, done.deepest_left = std::max(done.deepest_left, -p.distance);
+        if (inside && (stuck.empty() || stuck.back() != int(i)))
+          stuck.push_back(int(i)), stuck_onto.push_back(onto), stuck_depth.push_back(-p.distance);
         continue;
       }
       x = onto; // a later die projects the node from where it now is
@@ -75,6 +85,22 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
       else
         ++done.closed, done.widest = std::max(done.widest, p.distance);
     }
+  }
+  // Moved with the interior under them, the elements between keep their
+  // shape; what is still inside after a part of the move is left to the
+  // next increment's contact.
+  std::vector<char> fixed = on_boundary;
+  if (!movable.empty())
+    for (std::size_t i = 0; i < fixed.size(); ++i)
+      fixed[i] = fixed[i] || !movable[i];
+  const std::vector<double> taken = guard.move_carrying(fresh, stuck, stuck_onto, fixed, kCarriedRings, quality_floor);
+  for (std::size_t k = 0; k < stuck.size(); ++k) {
+    if (taken[k] == 1.0) {
+      ++done.nodes, ++done.carried, done.deepest = std::max(done.deepest, stuck_depth[k]);
+      continue;
+    }
+    ++done.left;
+    done.deepest_left = std::max(done.deepest_left, (1.0 - taken[k]) * stuck_depth[k]);
   }
   return done;
 }

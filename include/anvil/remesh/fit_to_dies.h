@@ -19,6 +19,7 @@ struct PutBack {
   double deepest = 0.0;      ///< the deepest of them was (mm)
   int closed = 0;            ///< boundary nodes put onto a die across a gap, where the old surface touched it
   double widest = 0.0;       ///< the widest such gap (mm)
+  int carried = 0;           ///< of `nodes`, those whose move carried the interior under them along
   int left = 0;              ///< boundary nodes left inside a die: moving them would spoil an element
   double deepest_left = 0.0; ///< the deepest of them (mm)
 };
@@ -27,11 +28,12 @@ struct PutBack {
 /// at `dies_now`: those inside a die (by less than `element_size`, mm), and
 /// those within a quarter element of a die where the old mesh `old` touched
 /// it (`touching_die`, per node of `old`: the die it presses on, or −1).
-/// Nodes on a symmetry plane of the body stay on it. A move that would leave
-/// an element around the node worse than `quality_floor` (or than it was) is
-/// not made (PutBack::left): the next increment's contact pushes that node
-/// out, no faster than ContactIncrement::recovery_speed, and the update
-/// after it projects the node where it can. With `movable`
+/// Nodes on a symmetry plane of the body stay on it. A node whose move alone
+/// would leave an element around it worse than `quality_floor` (or than it
+/// was) is moved with the free interior under it (QualityGuard::move_carrying),
+/// in full or in part; what is still inside (PutBack::left) the next
+/// increment's contact pushes out, no faster than ContactIncrement::recovery_speed,
+/// and the update after it projects the node where it can. With `movable`
 /// (a flag per node of `fresh`) only the flagged nodes move (a local remesh's new ones).
 PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<const int> touching_die,
                       const scene::Scene& scene, int body, std::span<const scene::DieState> dies_now,
