@@ -86,14 +86,21 @@ PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<
         ++done.closed, done.widest = std::max(done.widest, p.distance);
     }
   }
-  // Moved with the interior under them, the elements between keep their
-  // shape; what is still inside after a part of the move is left to the
-  // next increment's contact.
-  std::vector<char> fixed = on_boundary;
-  if (!movable.empty())
-    for (std::size_t i = 0; i < fixed.size(); ++i)
-      fixed[i] = fixed[i] || !movable[i];
-  const std::vector<double> taken = guard.move_carrying(fresh, stuck, stuck_onto, fixed, kCarriedRings, quality_floor);
+  // Under an adaptive size field, moved with the interior under them: the
+  // elements between keep their shape; what is still inside after a part
+  // of the move is left to the next increment's contact. A uniform remesh
+  // samples its surface at the old spacing and leaves few such nodes, and
+  // shallow ones (1-16 a whole remesh on the connecting rod, against 40-199
+  // under the adaptive field): carried too, they moved the hub flange's
+  // path onto one whose overlap remesh near closure jumps 10 %.
+  std::vector<double> taken(stuck.size(), 0.0);
+  if (scene.input.remeshing.adaptive) {
+    std::vector<char> fixed = on_boundary;
+    if (!movable.empty())
+      for (std::size_t i = 0; i < fixed.size(); ++i)
+        fixed[i] = fixed[i] || !movable[i];
+    taken = guard.move_carrying(fresh, stuck, stuck_onto, fixed, kCarriedRings, quality_floor);
+  }
   for (std::size_t k = 0; k < stuck.size(); ++k) {
     if (taken[k] == 1.0) {
       ++done.nodes, ++done.carried, done.deepest = std::max(done.deepest, stuck_depth[k]);

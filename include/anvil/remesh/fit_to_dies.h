@@ -30,8 +30,9 @@ struct PutBack {
 /// it (`touching_die`, per node of `old`: the die it presses on, or −1).
 /// Nodes on a symmetry plane of the body stay on it. A node whose move alone
 /// would leave an element around it worse than `quality_floor` (or than it
-/// was) is moved with the free interior under it (QualityGuard::move_carrying),
-/// in full or in part; what is still inside (PutBack::left) the next
+/// was) is moved, under an adaptive size field, with the free interior under
+/// it (QualityGuard::move_carrying), in full or in part; what is still
+/// inside (PutBack::left) the next
 /// increment's contact pushes out, no faster than ContactIncrement::recovery_speed,
 /// and the update after it projects the node where it can. With `movable`
 /// (a flag per node of `fresh`) only the flagged nodes move (a local remesh's new ones).
