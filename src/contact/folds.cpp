@@ -1,10 +1,10 @@
 #include "anvil/contact/folds.h"
 
 #include "anvil/contact/SurfaceSearch.h"
+#include "anvil/core/DisjointSets.h"
 #include "anvil/mesh/triangle_geometry.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace anvil::contact {
 namespace {
@@ -25,14 +25,9 @@ FoldScan find_folds(const mesh::TetMesh& mesh, std::span<const mesh::MeshRange> 
   FoldScan scan;
   scan.faces.assign(faces.size(), 0);
   // Union-find over nodes: a fold's faces, and the faces they meet, are one fold.
-  std::vector<int> parent(mesh.nodes.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](int n) {
-    while (parent[n] != n)
-      n = parent[n] = parent[parent[n]];
-    return n;
-  };
-  auto join = [&](int a, int b) { parent[root(a)] = root(b); };
+  DisjointSets sets(mesh.nodes.size());
+  auto root = [&](int n) { return sets.root(n); };
+  auto join = [&](int a, int b) { sets.join(a, b); };
   const SurfaceSearch search(mesh.nodes, faces);
   std::vector<int> near;
   const double around = std::max(reach, depth);

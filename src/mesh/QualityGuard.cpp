@@ -1,9 +1,9 @@
 #include "anvil/mesh/QualityGuard.h"
 
+#include "anvil/core/DisjointSets.h"
 #include "anvil/mesh/tet_geometry.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace anvil::mesh {
 
@@ -32,20 +32,14 @@ std::vector<double> QualityGuard::move_carrying(TetMesh& mesh, std::span<const i
   std::vector<int> slot(mesh.nodes.size(), -1); // a node's index in `nodes`
   for (std::size_t k = 0; k < nodes.size(); ++k)
     slot[nodes[k]] = static_cast<int>(k);
-  std::vector<int> parent(nodes.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](int k) {
-    while (parent[k] != k)
-      k = parent[k] = parent[parent[k]];
-    return k;
-  };
+  DisjointSets sets(nodes.size());
   for (std::size_t k = 0; k < nodes.size(); ++k)
     for (int e : tets_of_[nodes[k]])
       for (int other : mesh.tets[e])
-        if (slot[other] >= 0) parent[root(slot[other])] = root(static_cast<int>(k));
+        if (slot[other] >= 0) sets.join(slot[other], static_cast<int>(k));
   std::vector<std::vector<int>> groups(nodes.size());
   for (std::size_t k = 0; k < nodes.size(); ++k)
-    groups[root(static_cast<int>(k))].push_back(static_cast<int>(k));
+    groups[sets.root(static_cast<int>(k))].push_back(static_cast<int>(k));
 
   std::vector<int> ring(mesh.nodes.size(), -1);
   std::vector<Eigen::Vector3d> by(mesh.nodes.size(), Eigen::Vector3d::Zero());

@@ -1,5 +1,6 @@
 #include "anvil/mesh/manifold.h"
 
+#include "anvil/core/DisjointSets.h"
 #include "anvil/mesh/flat_tags.h"
 #include "anvil/mesh/tet_geometry.h"
 
@@ -7,7 +8,6 @@
 #include <array>
 #include <initializer_list>
 #include <map>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -105,19 +105,14 @@ std::vector<int> pinched_nodes(const std::vector<Triangle>& boundary, std::size_
 /// through faces that hold those nodes too (two such tets share three
 /// nodes); flags in `remove` all but the group of largest volume.
 void keep_largest_group(const TetMesh& mesh, const std::vector<int>& star, std::vector<char>& remove) {
-  std::vector<int> group(star.size());
-  std::iota(group.begin(), group.end(), 0);
-  auto root = [&](int i) {
-    while (group[i] != i)
-      i = group[i] = group[group[i]];
-    return i;
-  };
+  DisjointSets group(star.size());
+  auto root = [&](int i) { return group.root(i); };
   for (std::size_t i = 0; i < star.size(); ++i)
     for (std::size_t j = i + 1; j < star.size(); ++j) {
       int common = 0;
       for (int v : mesh.tets[star[i]])
         common += static_cast<int>(std::count(mesh.tets[star[j]].begin(), mesh.tets[star[j]].end(), v));
-      if (common == 3) group[root(int(i))] = root(int(j));
+      if (common == 3) group.join(int(i), int(j));
     }
   std::vector<double> volume(star.size(), 0.0);
   for (std::size_t i = 0; i < star.size(); ++i)
