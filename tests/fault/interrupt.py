@@ -42,7 +42,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 # sets a kept preconditioner up anew part-way through most increments.
 with open(os.path.join(ROOT, "cases", "closed_die_flash.yaml")) as f:
     CLOSED_DIE = (f.read().replace("../dies/", ROOT + "/dies/").replace("../materials/", ROOT + "/materials/")
-                  .replace("stop: {stroke: 10.7}", "stop: {stroke: 1.5}").replace("check_load: true", "check_load: false")
+                  .replace("stop: {stroke: 10.7}", "stop: {stroke: 1.5}")
                   .replace("\noutput:\n", "\noutput:\n  vtk: false\n  picture: false\n  checkpoint_every: 1000\n"))
 MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_btl="self,vader")
 

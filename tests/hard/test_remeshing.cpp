@@ -143,7 +143,8 @@ void check_load_trend(const RemeshedRun& run, const std::string& surface, double
 // by a few increments, and the worst jump of a run lies between 1.4 and
 // 3.4 % over such variants.
 TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[hard][remesh]") {
-  const RemeshedRun run = run_remeshed("cases/upsetting_75.yaml", "anvil_hard_upsetting_75"); // 20 s
+  const RemeshedRun run =
+      run_remeshed("cases/upsetting_75.yaml", "anvil_hard_upsetting_75", {"remeshing.check_load=true"}); // 20 s
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume(run);
   check_max_strain(run);
@@ -172,7 +173,8 @@ TEST_CASE("Upsetting to 75 % remeshes and keeps volume and strain integral", "[h
 // (ContactIncrement::closing_time), so a Δt cut can save its elements.
 TEST_CASE("Closed-die forging with flash (STL dies) reaches full stroke, remeshes keep volume and strain integral",
           "[hard][remesh]") {
-  const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash"); // 1.5 min
+  const RemeshedRun run = run_remeshed("cases/closed_die_flash.yaml", "anvil_hard_closed_die_flash",
+                                       {"remeshing.check_load=true"}); // 1.5 min
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume_with_overlap(run);
   check_max_strain(run);
@@ -225,8 +227,9 @@ TEST_CASE("Closed-die forging with the adaptive size field reaches closure, reme
 // Bounded at 6 %, above every path measured to this stroke.
 TEST_CASE("The connecting rod to 3.6 mm: every remesh improves its worst element and keeps volume and strain integral",
           "[hard][remesh]") {
-  const RemeshedRun run = run_remeshed("cases/conrod.yaml", "anvil_hard_conrod",
-                                       {"time.stop.stroke=3.6", "solver.linear_solver=mumps"}); // 3.5 min
+  const RemeshedRun run =
+      run_remeshed("cases/conrod.yaml", "anvil_hard_conrod",
+                   {"time.stop.stroke=3.6", "solver.linear_solver=mumps", "remeshing.check_load=true"}); // 3.5 min
   check_remeshes_keep_volume_and_strain(run);
   check_run_volume(run);
   check_max_strain(run);
