@@ -400,8 +400,8 @@ int study(int argc, char** argv) {
   const ErrorKind kind = named->second;
   if (kind == ErrorKind::remesh_jump) {
     if (!c.remeshing.enabled) throw InputError(case_file + ": --error remesh-jump needs a case with remeshing");
-    fixed.emplace_back(
-        "remeshing.check_load=true"); // the jump it measures (off in the cases: three more solves a remesh)
+    // The jump it measures; the cases leave it off (three more solves a remesh).
+    fixed.emplace_back("remeshing.check_load=true");
   }
   std::optional<ExactUpsetting> exact;
   if (kind == ErrorKind::exact_upsetting) exact.emplace(c);
