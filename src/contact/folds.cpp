@@ -26,8 +26,6 @@ FoldScan find_folds(const mesh::TetMesh& mesh, std::span<const mesh::MeshRange> 
   scan.faces.assign(faces.size(), 0);
   // Union-find over nodes: a fold's faces, and the faces they meet, are one fold.
   DisjointSets sets(mesh.nodes.size());
-  auto root = [&](int n) { return sets.root(n); };
-  auto join = [&](int a, int b) { sets.join(a, b); };
   const SurfaceSearch search(mesh.nodes, faces);
   std::vector<int> near;
   const double around = std::max(reach, depth);
@@ -49,19 +47,19 @@ FoldScan find_folds(const mesh::TetMesh& mesh, std::span<const mesh::MeshRange> 
       const bool behind = (centre - on).dot(other) < 0.0;
       if (distance <= reach || (behind && distance <= depth)) {
         scan.faces[f] = scan.faces[g] = 1;
-        join(t[0], u[0]);
+        sets.join(t[0], u[0]);
       }
     }
   }
   for (std::size_t f = 0; f < faces.size(); ++f)
     if (scan.faces[f])
       for (int k = 1; k < 3; ++k)
-        join(faces[f][k], faces[f][0]);
+        sets.join(faces[f][k], faces[f][0]);
   std::vector<int> fold_of(mesh.nodes.size(), -1);
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (!scan.faces[f]) continue;
     const mesh::Triangle& t = faces[f];
-    int& index = fold_of[root(t[0])];
+    int& index = fold_of[sets.root(t[0])];
     if (index < 0) {
       index = static_cast<int>(scan.folds.size());
       scan.folds.push_back({body_of(bodies, int(f)), mesh::Point::Zero(), 0.0, 0});

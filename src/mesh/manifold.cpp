@@ -106,7 +106,6 @@ std::vector<int> pinched_nodes(const std::vector<Triangle>& boundary, std::size_
 /// nodes); flags in `remove` all but the group of largest volume.
 void keep_largest_group(const TetMesh& mesh, const std::vector<int>& star, std::vector<char>& remove) {
   DisjointSets group(star.size());
-  auto root = [&](int i) { return group.root(i); };
   for (std::size_t i = 0; i < star.size(); ++i)
     for (std::size_t j = i + 1; j < star.size(); ++j) {
       int common = 0;
@@ -116,10 +115,10 @@ void keep_largest_group(const TetMesh& mesh, const std::vector<int>& star, std::
     }
   std::vector<double> volume(star.size(), 0.0);
   for (std::size_t i = 0; i < star.size(); ++i)
-    volume[root(int(i))] += signed_volume(mesh, star[i]);
+    volume[group.root(int(i))] += signed_volume(mesh, star[i]);
   const int keep = static_cast<int>(std::max_element(volume.begin(), volume.end()) - volume.begin());
   for (std::size_t i = 0; i < star.size(); ++i)
-    if (root(int(i)) != keep) remove[star[i]] = 1;
+    if (group.root(int(i)) != keep) remove[star[i]] = 1;
 }
 
 /// Removes the tets `remove` flags (mesh::remove_tets). A face

@@ -32,8 +32,8 @@ struct PutBack {
 /// would leave an element around it worse than `quality_floor` (or than it
 /// was) is moved, under an adaptive size field, with the free interior under
 /// it (QualityGuard::move_carrying), in full or in part; what is still
-/// inside (PutBack::left) the next
-/// increment's contact pushes out, no faster than ContactIncrement::recovery_speed,
+/// inside (PutBack::left) the next increment's contact pushes out, no faster
+/// than ContactIncrement::recovery_speed,
 /// and the update after it projects the node where it can. With `movable`
 /// (a flag per node of `fresh`) only the flagged nodes move (a local remesh's new ones).
 PutBack put_onto_dies(mesh::TetMesh& fresh, const mesh::TetMesh& old, std::span<const int> touching_die,
