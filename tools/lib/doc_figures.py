@@ -61,6 +61,22 @@ def write_block(page, tool, name, text):
     print(f"wrote block '{name}' of {os.path.relpath(path, ROOT)}")
 
 
+def block_rows(page, tool, name):
+    """The table rows of block `name` of `tool` in docs/`page` as lists of
+    cells, and the date its stamp gives ('' when none): what a tool that
+    rewrites some of its rows keeps of the others."""
+    with open(os.path.join(ROOT, "docs", page), encoding="utf-8") as f:
+        doc = f.read()
+    begin = f"<!-- figures: {tool} ({name}) -->"
+    found = re.search(re.escape(begin) + r"\n(.*?)<!-- end figures -->", doc, re.S)
+    if not found:
+        return [], ""
+    lines = [line for line in found.group(1).splitlines() if line.startswith("| ")]
+    rows = [[cell.strip() for cell in line.strip().strip("|").split(" | ")] for line in lines[1:]]
+    date = re.search(r"on (\d{4}-\d{2}-\d{2}),", found.group(1))
+    return rows, date.group(1) if date else ""
+
+
 if __name__ == "__main__":
     if len(sys.argv) != 4:
         sys.exit("usage: doc_figures.py PAGE TOOL NAME < TEXT")
