@@ -1,10 +1,12 @@
 """The agreement table of docs/parallel-runs.md, from tools/mpi_agreement's runs.
 
-    mpi_tables.py DIR CASE ...   DIR/<case>/np1, np2, np3 (loads.csv, summary.json)
+    mpi_tables.py [--block NAME] DIR CASE ...   DIR/<case>/np1, np2, np3 (loads.csv, summary.json)
 
 Per case and process count: the largest difference of a force component
 from the one-process run over its peak load (and of the press load Fz), up to
-the first remesh; past it, at equal time (tests/mpi/compare_loads.py).
+the first remesh; past it, at equal time (tests/mpi/compare_loads.py), the
+largest and the mean. Into block NAME of docs/parallel-runs.md (default:
+agreement, the table of every case).
 """
 import os
 import sys
