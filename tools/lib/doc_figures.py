@@ -42,13 +42,19 @@ def table(header, lines):
                      + ["| " + " | ".join(line) + " |" for line in lines])
 
 
-def write_block(page, tool, name, text):
-    """Puts `text` (Markdown) in block `name` of `tool` in docs/`page`."""
+def block_in(page, tool, name):
+    """docs/`page`'s path and text, block `name` of `tool`'s opening marker,
+    and a pattern whose group 1 is what the block holds."""
     path = os.path.join(ROOT, "docs", page)
     with open(path, encoding="utf-8") as f:
         doc = f.read()
     begin = f"<!-- figures: {tool} ({name}) -->"
-    pattern = re.compile(re.escape(begin) + r"\n.*?<!-- end figures -->", re.S)
+    return path, doc, begin, re.compile(re.escape(begin) + r"\n(.*?)<!-- end figures -->", re.S)
+
+
+def write_block(page, tool, name, text):
+    """Puts `text` (Markdown) in block `name` of `tool` in docs/`page`."""
+    path, doc, begin, pattern = block_in(page, tool, name)
     if not pattern.search(doc):
         sys.exit(f"{path}: no block '{begin}' ... '<!-- end figures -->' to write")
     stamp = f"_Written by `{tool}` on {datetime.date.today().isoformat()}, {machine()}._"
@@ -65,10 +71,8 @@ def block_rows(page, tool, name):
     """The table rows of block `name` of `tool` in docs/`page` as lists of
     cells, and the date its stamp gives ('' when none): what a tool that
     rewrites some of its rows keeps of the others."""
-    with open(os.path.join(ROOT, "docs", page), encoding="utf-8") as f:
-        doc = f.read()
-    begin = f"<!-- figures: {tool} ({name}) -->"
-    found = re.search(re.escape(begin) + r"\n(.*?)<!-- end figures -->", doc, re.S)
+    _, doc, _, pattern = block_in(page, tool, name)
+    found = pattern.search(doc)
     if not found:
         return [], ""
     lines = [line for line in found.group(1).splitlines() if line.startswith("| ")]

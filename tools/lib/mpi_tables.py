@@ -42,9 +42,8 @@ def main(directory, cases, block="agreement"):
             lines.append([case, "failed", "failed"])
             continue
         lines.append([case, cell(runs[0], runs[1]), cell(runs[0], runs[2])])
-    text = "\n".join(["| case | 2 processes | 3 processes |", "|---|---|---|"]
-                     + ["| " + " | ".join(line) + " |" for line in lines])
-    doc_figures.write_block("parallel-runs.md", "tools/mpi_agreement", block, text)
+    doc_figures.write_block("parallel-runs.md", "tools/mpi_agreement", block,
+                            doc_figures.table(["case", "2 processes", "3 processes"], lines))
 
 
 if __name__ == "__main__":
