@@ -447,6 +447,7 @@ NewtonReport IncrementSolver::solve(const IncrementProblem& problem, const Newto
     // accept(): with a changed set the next direction and its line search
     // would see two problems (a step of 2^-10 and a lost iteration).
     if (set_changed) evaluate_with_new_set();
+    if (nonlinear) linear_solver_.newton_step(record.increment); // a linear law's tangent does not follow the velocity
     // A full step of a linear problem is its solution: no further step to measure.
     const bool increment_small =
         record.increment <= settings.increment_tolerance || (linear_problem && step == 1.0 && !set_changed);

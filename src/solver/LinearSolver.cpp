@@ -124,6 +124,14 @@ template <class Solver> bool factorize_with(Solver& s, const ColumnMatrix& a, bo
 /// beyond what the set-up's first solve took (LinearSolver::solve).
 constexpr double kStaleSetups = 2.0;
 
+/// A Newton step that changes the velocity by more than this (|Δv|/|v|)
+/// changes the tangent with it (a viscoplastic law's viscosity follows the
+/// strain rate as ε̄̇^(m−1)): the set-up kept from before it is made anew.
+/// Kept, about a quarter of the solves after such steps on the closed-die
+/// runs went stale, against almost none after shorter steps
+/// (tools/stale_setups, docs/linear-solve.md).
+constexpr double kLongNewtonStep = 0.03;
+
 /// Decades of residual reduction to `reduction` (at least one).
 double decades(double reduction) {
   return std::max(1.0, -std::log10(std::max(reduction, 1e-300)));
@@ -243,6 +251,10 @@ void LinearSolver::take_over_direct() {
   backend_->krylov.reset();
   backend_->mumps.emplace(partition_, timers_);
   kind_ = LinearSolverKind::mumps;
+}
+
+void LinearSolver::newton_step(double relative_change) {
+  if (relative_change > kLongNewtonStep) refresh_ = true;
 }
 
 bool LinearSolver::factorize(const fem::SparseMatrix& a, const SaddlePointData& data) {

@@ -188,6 +188,41 @@ TEST_CASE("A kept preconditioner gone stale is stopped at its budget and set up 
   CHECK(before_stop < wide.second);
 }
 
+TEST_CASE("A long Newton step has the kept preconditioner set up again", "[verification]") {
+  // LinearSolver::newton_step: after a step that changed the velocity by
+  // 1 % the set-up is kept; after one of 5 % (above kLongNewtonStep, 3 %)
+  // the next factorize() sets it up anew. The set-up's cost is set high so
+  // that the iteration count cannot renew it.
+  const material::NortonHoff law(100.0, 0.1, 1e-4);
+  const Punch p = punch_block();
+  const fem::Partition partition = fem::partition_mesh(p.mesh, 1, 0);
+  fem::BodyUnknowns u{p.imposed.values, Eigen::VectorXd::Zero(3 * p.mesh.tet_count())};
+  fem::Assembler assembler(p.mesh, fem::DofMap(p.imposed.prescribed), partition);
+  assembler.assemble(p.mesh, fem::ElementLaws(p.mesh.tet_count(), &law),
+                     std::vector<material::PointState>(p.mesh.tet_count()), u, p.imposed.nodal_forces, {}, true);
+  assembler.finish_tangent();
+  const fem::SparseMatrix& tangent = assembler.tangent();
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(tangent.rows()), x;
+  for (int d = 0; d < rhs.size(); ++d)
+    if (!p.imposed.prescribed[d]) rhs[d] = std::sin(0.37 * d);
+  Timers timers;
+  solver::LinearSolverSettings settings{solver::LinearSolverKind::fgmres};
+  settings.setup_cost = 16000.0;
+  solver::LinearSolver solver(settings, static_cast<int>(rhs.size()), partition, timers);
+  const solver::SaddlePointData data{p.mesh.nodes, assembler.pressure_mass(), {}};
+  REQUIRE(solver.factorize(tangent, data));
+  REQUIRE(solver.solve(rhs, x, 1e-6));
+  solver.newton_step(0.01);
+  REQUIRE(solver.factorize(tangent, data));
+  CHECK(solver.kept_preconditioner());
+  CHECK(solver.setups() == 1);
+  REQUIRE(solver.solve(rhs, x, 1e-6));
+  solver.newton_step(0.05);
+  REQUIRE(solver.factorize(tangent, data));
+  CHECK_FALSE(solver.kept_preconditioner());
+  CHECK(solver.setups() == 2);
+}
+
 TEST_CASE("Facet contact between bodies: the velocity AMG's defaults keep facet near nodal contact's Krylov "
           "iterations, same answer",
           "[verification]") {

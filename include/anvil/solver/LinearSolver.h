@@ -48,7 +48,8 @@ struct LinearSolverSettings {
   /// while it pays: set it up again once the Krylov iterations the kept
   /// set-up has cost beyond a fresh one's (at the iterations per decade of
   /// residual reduction right after the last set-up) add up to
-  /// `setup_cost` iterations, when a solve fails, or when the pattern changes.
+  /// `setup_cost` iterations, after a long Newton step (newton_step), when a
+  /// solve fails, or when the pattern changes.
   bool reuse_preconditioner = true;
   /// A set-up's cost in Krylov iterations (ML and BFBT on the Norton-Hoff
   /// block: 16 at 13k nodes, 19 at 53k; `anvil_bench norton_hoff N fgmres
@@ -85,6 +86,10 @@ public:
   /// after the predictor's Newtonian stand-in): a kept preconditioner is set
   /// up again.
   void operator_changed() { refresh_ = true; }
+  /// Newton moved the velocity by `relative_change` (|Δv|/|v|) since the
+  /// last factorize(): beyond kLongNewtonStep a kept preconditioner is set
+  /// up again at the next one.
+  void newton_step(double relative_change);
   /// Back to the state of a new solver: no kept preconditioner, no MUMPS
   /// fallback. The run restarts its solver after each periodic checkpoint, as
   /// a run resumed from it starts with a new one, so both solve the next
