@@ -9,6 +9,7 @@
 #include "anvil/solver/IncrementSolver.h"
 
 #include <cmath>
+#include <utility>
 
 using namespace anvil;
 
@@ -48,6 +49,24 @@ solver::NewtonSettings quiet_newton(int iterations) {
   newton.max_iterations = iterations;
   newton.verbose = false;
   return newton;
+}
+
+/// The tangent of `law` at `u` on the punch block (the prescribed dofs
+/// decoupled) and its lumped pressure mass, assembled by `assembler`.
+std::pair<fem::SparseMatrix, Eigen::VectorXd> punch_tangent(const Punch& p, fem::Assembler& assembler,
+                                                            const material::Material& law, const fem::BodyUnknowns& u) {
+  assembler.assemble(p.mesh, fem::ElementLaws(p.mesh.tet_count(), &law),
+                     std::vector<material::PointState>(p.mesh.tet_count()), u, p.imposed.nodal_forces, {}, true);
+  assembler.finish_tangent();
+  return {assembler.tangent(), assembler.pressure_mass()};
+}
+
+/// Any right-hand side of `rows` rows, zero on the punch block's prescribed dofs.
+Eigen::VectorXd any_right_hand_side(const Punch& p, Eigen::Index rows) {
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(rows);
+  for (Eigen::Index d = 0; d < rows; ++d)
+    if (!p.imposed.prescribed[d]) rhs[d] = std::sin(0.37 * static_cast<double>(d));
+  return rhs;
 }
 
 } // namespace
@@ -142,17 +161,10 @@ TEST_CASE("A kept preconditioner gone stale is stopped at its budget and set up 
     REQUIRE(flow.solve(p.mesh, rigid_plastic, {}, p.imposed.nodal_forces, {}, quiet_newton(60), u).converged);
   }
   fem::Assembler assembler(p.mesh, fem::DofMap(p.imposed.prescribed), partition);
-  auto tangent = [&](const material::Material& law) {
-    assembler.assemble(p.mesh, fem::ElementLaws(p.mesh.tet_count(), &law),
-                       std::vector<material::PointState>(p.mesh.tet_count()), u, p.imposed.nodal_forces, {}, true);
-    assembler.finish_tangent(); // the prescribed dofs decoupled
-    return std::pair{assembler.tangent(), assembler.pressure_mass()};
-  };
-  const auto [first, first_mass] = tangent(uniform);
-  const auto [second, second_mass] = tangent(rigid_plastic);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(first.rows()), x;
-  for (int d = 0; d < rhs.size(); ++d)
-    if (!p.imposed.prescribed[d]) rhs[d] = std::sin(0.37 * d); // any right-hand side
+  const auto [first, first_mass] = punch_tangent(p, assembler, uniform, u);
+  const auto [second, second_mass] = punch_tangent(p, assembler, rigid_plastic, u);
+  const Eigen::VectorXd rhs = any_right_hand_side(p, first.rows());
+  Eigen::VectorXd x;
   constexpr double kTolerance = 1e-6;
   struct Solves {
     int first, second, setups;
@@ -198,18 +210,14 @@ TEST_CASE("A long Newton step has the kept preconditioner set up again", "[verif
   const fem::Partition partition = fem::partition_mesh(p.mesh, 1, 0);
   fem::BodyUnknowns u{p.imposed.values, Eigen::VectorXd::Zero(3 * p.mesh.tet_count())};
   fem::Assembler assembler(p.mesh, fem::DofMap(p.imposed.prescribed), partition);
-  assembler.assemble(p.mesh, fem::ElementLaws(p.mesh.tet_count(), &law),
-                     std::vector<material::PointState>(p.mesh.tet_count()), u, p.imposed.nodal_forces, {}, true);
-  assembler.finish_tangent();
-  const fem::SparseMatrix& tangent = assembler.tangent();
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(tangent.rows()), x;
-  for (int d = 0; d < rhs.size(); ++d)
-    if (!p.imposed.prescribed[d]) rhs[d] = std::sin(0.37 * d);
+  const auto [tangent, mass] = punch_tangent(p, assembler, law, u);
+  const Eigen::VectorXd rhs = any_right_hand_side(p, tangent.rows());
+  Eigen::VectorXd x;
   Timers timers;
   solver::LinearSolverSettings settings{solver::LinearSolverKind::fgmres};
   settings.setup_cost = 16000.0;
   solver::LinearSolver solver(settings, static_cast<int>(rhs.size()), partition, timers);
-  const solver::SaddlePointData data{p.mesh.nodes, assembler.pressure_mass(), {}};
+  const solver::SaddlePointData data{p.mesh.nodes, mass, {}};
   REQUIRE(solver.factorize(tangent, data));
   REQUIRE(solver.solve(rhs, x, 1e-6));
   solver.newton_step(0.01);
