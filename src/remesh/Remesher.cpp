@@ -6,6 +6,7 @@
 #include "anvil/die/overlap_volume.h"
 #include "anvil/io/Checkpoint.h"
 #include "anvil/mesh/TetMesh.h"
+#include "anvil/mesh/grid_snap.h"
 #include "anvil/mesh/manifold.h"
 #include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
@@ -116,6 +117,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
     settings.feature_angle = feature_angle;
     settings.iterations = spec.iterations;
     settings.quality_floor = spec.quality;
+    settings.grid = mesh::snap_spacing(body.remesh_size);
     if (size_field) {
       settings.smallest_edge_length = coarsen * scale * smallest;
       settings.size = [&size_field, s = coarsen * scale](const mesh::Point& x) { return size_field(x, s); };

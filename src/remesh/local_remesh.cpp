@@ -3,6 +3,7 @@
 #include "anvil/core/error.h"
 #include "anvil/mesh/boundary_slivers.h"
 #include "anvil/mesh/edge_bisection.h"
+#include "anvil/mesh/grid_snap.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/field_transfer.h"
 #include "anvil/remesh/quality.h"
@@ -316,6 +317,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   settings.feature_angle = spec.feature_angle;
   settings.iterations = spec.iterations;
   settings.quality_floor = spec.quality;
+  settings.grid = mesh::snap_spacing(body.remesh_size);
   settings.deadline = deadline_in(spec.time_limit);
   RegionRemesh local;
   mesh::TetMesh before_fit; // CGAL's mesh of the old region, before the fit to the dies: ε̄ is remapped on it

@@ -11,6 +11,7 @@
 #include "anvil/mesh/boundary_slivers.h"
 #include "anvil/mesh/edge_bisection.h"
 #include "anvil/mesh/flat_tet_mending.h"
+#include "anvil/mesh/grid_snap.h"
 #include "anvil/mesh/manifold.h"
 #include "anvil/mesh/tet_geometry.h"
 #include "anvil/remesh/quality.h"
@@ -164,11 +165,12 @@ namespace {
 
 /// remesh_body at settings.edge_length everywhere.
 mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& settings) {
+  const mesh::GridSnap on_grid(body, settings.grid);
   Triangulation tr;
   std::vector<VertexHandle> handles;
   std::vector<int> patch;
   const std::vector<int> tag_of_patch = build(
-      body, settings, [](std::size_t) { return 1; }, tr, handles, patch);
+      on_grid.snapped(), settings, [](std::size_t) { return 1; }, tr, handles, patch);
 
   StoppableSelection selection(settings, tr);
   remesh_pass(tr, settings.edge_length, settings.iterations, selection.map());
@@ -218,6 +220,7 @@ mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& se
     return *std::min_element(a.begin(), a.end()) < *std::min_element(b.begin(), b.end());
   });
   mesh::build_boundary(out, tagged, tags);
+  on_grid.restore(out);
   settle_on_old_surface(out, body, patch, tag_of_patch, std::vector<char>(out.nodes.size(), 1), mesh::volume(body),
                         settings.quality_floor);
   const double volume = mesh::volume(out);
@@ -289,11 +292,13 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
   // moves and no collapse removes, and a constrained edge is not flipped.
   // CGAL may still split one longer than 4/3 of the length asked: that
   // border is then not the kept tets' any more, and the remesh is refused.
+  const mesh::GridSnap on_grid(body, settings.grid);
+  const mesh::TetMesh& given = on_grid.snapped(); // what CGAL is given
   Triangulation tr;
   std::vector<VertexHandle> handles;
   std::vector<int> patch;
   const std::vector<int> tag_of_patch = build(
-      body, settings, [&](std::size_t e) { return rebuilt[e] ? 1 : 0; }, tr, handles, patch);
+      given, settings, [&](std::size_t e) { return rebuilt[e] ? 1 : 0; }, tr, handles, patch);
   const int n = body.node_count();
   // The border between the region and the kept tets, as sorted node triples.
   std::set<std::array<int, 3>> border;
@@ -311,7 +316,7 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
     double longest = 0.0;
     for (const std::array<int, 3>& f : border)
       for (int a = 0; a < 3; ++a)
-        longest = std::max(longest, (body.nodes[f[a]] - body.nodes[f[(a + 1) % 3]]).norm());
+        longest = std::max(longest, (given.nodes[f[a]] - given.nodes[f[(a + 1) % 3]]).norm());
     const double length = std::max(settings.edge_length, kBorderMargin * 0.75 * longest);
     if (length > settings.edge_length)
       log::detail("    local remesh at %.3g mm (asked %.3g): its border with the kept elements has an edge of %.3g mm",
@@ -362,8 +367,9 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
         const auto& x = c->vertex(i)->point();
         const mesh::Point at(x.x(), x.y(), x.z());
         const auto was = original.find(c->vertex(i));
-        out.mesh.nodes.push_back(at);
-        out.old_node.push_back(was != original.end() && body.nodes[was->second] == at ? was->second : -1);
+        const bool unmoved = was != original.end() && given.nodes[was->second] == at;
+        out.mesh.nodes.push_back(unmoved ? body.nodes[was->second] : at);
+        out.old_node.push_back(unmoved ? was->second : -1);
       }
       t[i] = it->second;
     }

@@ -1,6 +1,8 @@
 """The agreement table of docs/parallel-runs.md, from tools/mpi_agreement's runs.
 
-    mpi_tables.py [--block NAME] DIR CASE ...   DIR/<case>/np1, np2, np3 (loads.csv, summary.json)
+    mpi_tables.py [--block NAME [--command TEXT]] DIR CASE ...
+        DIR/<case>/np1, np2, np3 (loads.csv, summary.json); TEXT, the
+        command that made the runs, heads the block
 
 Per case and process count: the largest difference of a force component
 from the one-process run over its peak load (and of the press load Fz), up to
@@ -34,7 +36,7 @@ def cell(reference_path, other_path):
     return text
 
 
-def main(directory, cases, block="agreement"):
+def main(directory, cases, block="agreement", command=""):
     lines = []
     for case in cases:
         runs = [os.path.join(directory, case, f"np{n}", "loads.csv") for n in (1, 2, 3)]
@@ -42,15 +44,18 @@ def main(directory, cases, block="agreement"):
             lines.append([case, "failed", "failed"])
             continue
         lines.append([case, cell(runs[0], runs[1]), cell(runs[0], runs[2])])
+    table = doc_figures.table(["case", "2 processes", "3 processes"], lines)
     doc_figures.write_block("parallel-runs.md", "tools/mpi_agreement", block,
-                            doc_figures.table(["case", "2 processes", "3 processes"], lines))
+                            f"`{command}`:\n\n{table}" if command else table)
 
 
 if __name__ == "__main__":
     arguments = sys.argv[1:]
-    block = "agreement"
+    block, command = "agreement", ""
     if arguments[:1] == ["--block"] and len(arguments) > 1:
         block, arguments = arguments[1], arguments[2:]
+    if arguments[:1] == ["--command"] and len(arguments) > 1:
+        command, arguments = arguments[1], arguments[2:]
     if len(arguments) < 2:
         sys.exit(__doc__)
-    main(arguments[0], arguments[1:], block)
+    main(arguments[0], arguments[1:], block, command)

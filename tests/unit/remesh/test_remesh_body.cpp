@@ -1,5 +1,6 @@
 // remesh_body: a new mesh of the same volume, tags kept on flat faces.
 #include "anvil/mesh/generators.h"
+#include "anvil/mesh/grid_snap.h"
 #include "anvil/mesh/manifold.h"
 #include "anvil/mesh/node_budget.h"
 #include "anvil/mesh/tet_geometry.h"
@@ -7,6 +8,7 @@
 #include "anvil/remesh/quality.h"
 #include "anvil/remesh/region_window.h"
 #include "anvil/remesh/remesh_body.h"
+#include "shaken_mesh.h"
 
 #include <catch2/catch.hpp>
 
@@ -320,4 +322,34 @@ TEST_CASE("A region inside a kept surface is remeshed in a window cut out of the
   for (int e = 0; e < box.tet_count(); ++e)
     slab[e] = mesh::centroid(box, e).x() < 6.0;
   CHECK_FALSE(remesh::region_window(box, slab));
+}
+
+TEST_CASE("Two meshes of a body that differ by round-off are remeshed alike on the grid", "[unit][remesh]") {
+  // The squeezed box as two process counts would carry it: every coordinate
+  // apart by up to 1e-9 mm. On the grid (mesh/grid_snap.h) CGAL is given
+  // the same numbers for both, and makes the same mesh, whole and local;
+  // the nodes it left where they were keep their own coordinates.
+  const mesh::TetMesh one = shaken(squeezed_box(), 1e-9, 1), other = shaken(squeezed_box(), 1e-9, 2);
+  remesh::RemeshSettings settings;
+  settings.grid = mesh::snap_spacing(1.0);
+  settings.edge_length = 0.8;
+  const mesh::TetMesh whole = remesh::remesh_body(one, settings), whole_other = remesh::remesh_body(other, settings);
+  CHECK(whole.tets == whole_other.tets);
+  double apart = 0.0; // the nodes: the same, but for what settles onto each body's own surface
+  for (std::size_t n = 0; n < whole.nodes.size() && whole.nodes.size() == whole_other.nodes.size(); ++n)
+    apart = std::max(apart, (whole.nodes[n] - whole_other.nodes[n]).norm());
+  CHECK(whole.nodes.size() == whole_other.nodes.size());
+  CHECK(apart < 1e-8);
+
+  std::vector<char> rebuilt(one.tets.size(), 0);
+  for (int e = 0; e < one.tet_count(); ++e)
+    rebuilt[e] = mesh::centroid(one, e).x() < 3.0;
+  settings.edge_length = 1.0;
+  const remesh::RegionRemesh local = remesh::remesh_region(one, rebuilt, settings);
+  const remesh::RegionRemesh local_other = remesh::remesh_region(other, rebuilt, settings);
+  CHECK(local.mesh.tets == local_other.mesh.tets);
+  check_kept_bit_for_bit(one, rebuilt, local);
+  for (std::size_t n = 0; n < local.mesh.nodes.size(); ++n)
+    if (local.old_node[n] >= 0) CHECK(local.mesh.nodes[n] == one.nodes[local.old_node[n]]);
+  CHECK(mesh::volume(local.mesh) == Approx(mesh::volume(one)).epsilon(1e-12));
 }

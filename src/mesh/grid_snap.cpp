@@ -1,0 +1,96 @@
+#include "anvil/mesh/grid_snap.h"
+
+#include "anvil/mesh/tet_geometry.h"
+
+#include <cmath>
+#include <vector>
+
+namespace anvil::mesh {
+namespace {
+
+/// Grid steps per element length at most. Runs on 1 and 2 processes part by
+/// what the Newton tolerance leaves, up to a micron or so over the
+/// increments between two remeshes at a millimetre; the chance that a remesh
+/// sees other numbers falls as the grid coarsens. h/64 kept both hub
+/// flanges' remeshes alike on 1 and 2 processes to within their last few on
+/// three stroke increments each (docs/remeshing.md); h/128 parted one run a
+/// fifth before its end.
+constexpr double kCellsPerElement = 64.0;
+/// Share of its own volume a tet keeps when its nodes move to or from the grid.
+constexpr double kKeptVolume = 0.5;
+
+std::array<double, 3> key(const Point& x) {
+  return {x.x(), x.y(), x.z()};
+}
+
+/// Nodes of `mesh` whose move from `before` leaves one of their tets below
+/// kKeptVolume of its volume there.
+std::vector<char> spoiling(const TetMesh& mesh, const std::vector<Point>& before) {
+  std::vector<char> out(mesh.nodes.size(), 0);
+  for (const Tet& t : mesh.tets) {
+    const double was = signed_volume(before[t[0]], before[t[1]], before[t[2]], before[t[3]]);
+    const double now = signed_volume(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]);
+    if (now < kKeptVolume * was)
+      for (int v : t)
+        if (mesh.nodes[v] != before[v]) out[v] = 1;
+  }
+  return out;
+}
+
+/// Moves the nodes of `mesh` to `to` where they may, back to `from` where
+/// a tet would be spoiled, until none is. Returns the nodes moved.
+int move_where_possible(TetMesh& mesh, const std::vector<Point>& from, const std::vector<Point>& to,
+                        const std::vector<char>& wanted) {
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    if (wanted[i]) mesh.nodes[i] = to[i];
+  for (bool again = true; again;) {
+    again = false;
+    const std::vector<char> back = spoiling(mesh, from);
+    for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+      if (back[i]) {
+        mesh.nodes[i] = from[i];
+        again = true;
+      }
+  }
+  int moved = 0;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    moved += mesh.nodes[i] != from[i];
+  return moved;
+}
+
+} // namespace
+
+double snap_spacing(double h) {
+  return std::ldexp(1.0, static_cast<int>(std::floor(std::log2(h / kCellsPerElement))));
+}
+
+GridSnap::GridSnap(const TetMesh& body, double spacing) : snapped_(body) {
+  if (!(spacing > 0.0)) return; // no grid: the nodes as they are, nothing to give back
+  const std::size_t n = body.nodes.size();
+  std::vector<Point> rounded(n);
+  std::map<std::array<double, 3>, int> on_point;
+  for (std::size_t i = 0; i < n; ++i) {
+    rounded[i] = (body.nodes[i] / spacing).array().round().matrix() * spacing;
+    ++on_point[key(rounded[i])];
+  }
+  std::vector<char> wanted(n);
+  for (std::size_t i = 0; i < n; ++i)
+    wanted[i] = on_point[key(rounded[i])] == 1;
+  move_where_possible(snapped_, body.nodes, rounded, wanted);
+  for (std::size_t i = 0; i < n; ++i)
+    exact_.emplace(key(snapped_.nodes[i]), body.nodes[i]);
+}
+
+int GridSnap::restore(TetMesh& remeshed) const {
+  const std::vector<Point> before = remeshed.nodes;
+  std::vector<Point> exact = before;
+  std::vector<char> wanted(before.size(), 0);
+  for (std::size_t i = 0; i < before.size(); ++i)
+    if (const auto at = exact_.find(key(before[i])); at != exact_.end()) {
+      exact[i] = at->second;
+      wanted[i] = 1;
+    }
+  return move_where_possible(remeshed, before, exact, wanted);
+}
+
+} // namespace anvil::mesh

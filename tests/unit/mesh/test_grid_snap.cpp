@@ -1,0 +1,76 @@
+// GridSnap: a body's nodes on a grid for a remesh, the same numbers from
+// meshes that differ by round-off, and the nodes a remesh kept given back.
+#include "anvil/mesh/generators.h"
+#include "anvil/mesh/grid_snap.h"
+#include "anvil/mesh/tet_geometry.h"
+#include "shaken_mesh.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace anvil;
+
+namespace {
+/// One tet on the plane z = 0 with its apex at `apex`.
+mesh::TetMesh one_tet(const mesh::Point& apex) {
+  mesh::TetMesh m;
+  m.nodes = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, apex};
+  m.tets = {{0, 1, 2, 3}};
+  mesh::build_boundary(m);
+  return m;
+}
+} // namespace
+
+TEST_CASE("The grid is a power of two between h/128 and h/64", "[unit][mesh]") {
+  for (const double h : {0.1, 0.7, 1.0, 1.2, 3.0}) {
+    const double q = mesh::snap_spacing(h);
+    int exponent = 0;
+    CHECK(std::frexp(q, &exponent) == 0.5); // a power of two
+    CHECK(q <= h / 64.0);
+    CHECK(q > h / 128.0);
+  }
+}
+
+TEST_CASE("Meshes that differ by round-off are the same on the grid, and get their own nodes back", "[unit][mesh]") {
+  const mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
+  const mesh::TetMesh one = shaken(box, 1e-9, 1), other = shaken(box, 1e-9, 2);
+  const double q = mesh::snap_spacing(1.0);
+  const mesh::GridSnap on_grid(one, q), other_on_grid(other, q);
+  CHECK(on_grid.snapped().nodes == other_on_grid.snapped().nodes);
+  for (const mesh::Point& x : on_grid.snapped().nodes)
+    for (int k = 0; k < 3; ++k)
+      CHECK(x[k] == std::round(x[k] / q) * q);
+  // A remesh that kept every node where the grid put it but one, which it moved.
+  mesh::TetMesh remeshed = on_grid.snapped();
+  remeshed.nodes[7].x() += 0.01;
+  CHECK(on_grid.restore(remeshed) == one.node_count() - 1);
+  for (int i = 0; i < one.node_count(); ++i)
+    if (i != 7) CHECK(remeshed.nodes[i] == one.nodes[i]); // bit for bit
+  CHECK(remeshed.nodes[7] == on_grid.snapped().nodes[7] + mesh::Point(0.01, 0, 0));
+}
+
+TEST_CASE("A node whose rounding would flatten a tet stays where it is", "[unit][mesh]") {
+  const double q = mesh::snap_spacing(1.0);
+  // The apex 0.3 q above the base rounds onto it: the tet would be flat.
+  const mesh::TetMesh low = one_tet({0.3, 0.3, 0.3 * q});
+  const mesh::GridSnap low_on_grid(low, q);
+  CHECK(low_on_grid.snapped().nodes[3] == low.nodes[3]);
+  CHECK(mesh::signed_volume(low_on_grid.snapped(), 0) == mesh::signed_volume(low, 0));
+  // Ten steps up, rounding changes the tet's volume by a few per cent: it goes onto the grid.
+  const mesh::TetMesh high = one_tet({0.3, 0.3, 10.3 * q});
+  const mesh::GridSnap high_on_grid(high, q);
+  CHECK(high_on_grid.snapped().nodes[3] == mesh::Point(std::round(0.3 / q) * q, std::round(0.3 / q) * q, 10 * q));
+}
+
+TEST_CASE("Two nodes that would round onto one grid point stay where they are", "[unit][mesh]") {
+  const double q = mesh::snap_spacing(1.0);
+  // A tet whose apex lies within a tenth of the grid of a point of the base's
+  // own grid point: on a body such an edge is crushed flat, but the grid must
+  // not join its ends (restore would not know which node is which).
+  mesh::TetMesh m = one_tet({0.1 * q, 0.1 * q, 0.5});
+  m.nodes.push_back({0.1 * q, -0.1 * q, 0.0}); // near node 0, in no tet
+  const mesh::GridSnap on_grid(m, q);
+  CHECK(on_grid.snapped().nodes[0] == m.nodes[0]);
+  CHECK(on_grid.snapped().nodes[4] == m.nodes[4]);
+}
