@@ -65,12 +65,12 @@ TEST_CASE("A node whose rounding would flatten a tet stays where it is", "[unit]
 
 TEST_CASE("Two nodes that would round onto one grid point stay where they are", "[unit][mesh]") {
   const double q = mesh::snap_spacing(1.0);
-  // A tet whose apex lies within a tenth of the grid of a point of the base's
-  // own grid point: on a body such an edge is crushed flat, but the grid must
-  // not join its ends (restore would not know which node is which).
-  mesh::TetMesh m = one_tet({0.1 * q, 0.1 * q, 0.5});
-  m.nodes.push_back({0.1 * q, -0.1 * q, 0.0}); // near node 0, in no tet
+  // Node 4 lies a tenth of a step from node 0 (on a body: the ends of an
+  // edge crushed to nothing). Rounded, both would land on one grid point,
+  // and restore could not tell which node was which.
+  mesh::TetMesh m = one_tet({0.3, 0.3, 0.5});
+  m.nodes.push_back({0.1 * q, -0.1 * q, 0.0});
   const mesh::GridSnap on_grid(m, q);
-  CHECK(on_grid.snapped().nodes[0] == m.nodes[0]);
   CHECK(on_grid.snapped().nodes[4] == m.nodes[4]);
+  CHECK(on_grid.snapped().nodes[3] != m.nodes[3]); // the apex, alone on its point, is rounded
 }
