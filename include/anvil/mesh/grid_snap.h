@@ -3,6 +3,7 @@
 #include "anvil/mesh/TetMesh.h"
 
 #include <array>
+#include <cstddef>
 #include <map>
 
 namespace anvil::mesh {
@@ -11,6 +12,14 @@ namespace anvil::mesh {
 /// of two at most h/64, 16 microns at a millimetre. A power of two makes
 /// the rounding exact in floating point, so every process rounds alike.
 double snap_spacing(double h);
+
+/// Where the grid of the `k`-th remesh of a run lies: its points at (n + the
+/// share returned) steps. CGAL splits an edge at its midpoint, and the
+/// midpoint of two points of a grid lies on a half step of that grid, where
+/// rounding parts two runs whose nodes drift apart; each remesh's grid is
+/// shifted by frac(k (φ − 1)/2) of a step (φ the golden ratio), so that the
+/// last grids' midpoints lie away from this one's half steps.
+double grid_offset(std::size_t k);
 
 /// The nodes of a body rounded to a grid of `spacing` for a remesh
 /// (docs/remeshing.md, the same mesh on any number of processes). A remesh
@@ -23,8 +32,9 @@ double snap_spacing(double h);
 /// half its volume, or two nodes on one grid point.
 class GridSnap {
 public:
-  /// `spacing` 0: no grid, the body as it is.
-  GridSnap(const TetMesh& body, double spacing);
+  /// The grid's points at (n + `offset`) × `spacing`; `spacing` 0: no grid,
+  /// the body as it is.
+  GridSnap(const TetMesh& body, double spacing, double offset = 0.0);
   /// The body on the grid: what the remesh is given.
   const TetMesh& snapped() const { return snapped_; }
   /// The nodes of `remeshed` that lie where a node of snapped() lies (a

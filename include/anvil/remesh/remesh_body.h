@@ -47,6 +47,8 @@ struct RemeshSettings {
   /// the nodes it leaves where they were get their own coordinates back.
   /// 0: as they are.
   double grid = 0.0;
+  /// Where the grid's points lie, a share of its step (mesh::grid_offset).
+  double grid_offset = 0.0;
 };
 
 /// The deadline `seconds` from now (a RemeshSettings::deadline).

@@ -32,6 +32,23 @@ TEST_CASE("The grid is a power of two between h/128 and h/64", "[unit][mesh]") {
   }
 }
 
+TEST_CASE("Each remesh's grid keeps its half steps away from the last three grids' midpoints", "[unit][mesh]") {
+  // A midpoint of grid j lies at (m/2 + offset j) steps, a half step of grid
+  // k at (n + 1/2 + offset k): their distance is that of offset j − offset k
+  // from a multiple of 1/2.
+  for (std::size_t k = 1; k < 200; ++k)
+    for (std::size_t j = k >= 3 ? k - 3 : 0; j < k; ++j) {
+      const double apart = std::fmod(std::abs(mesh::grid_offset(j) - mesh::grid_offset(k)), 0.5);
+      INFO("remesh " << k << " against " << j);
+      CHECK(std::min(apart, 0.5 - apart) > 0.07);
+    }
+  const double q = mesh::snap_spacing(1.0), offset = mesh::grid_offset(1);
+  const mesh::GridSnap on_grid(mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0), q, offset);
+  for (const mesh::Point& x : on_grid.snapped().nodes)
+    for (int k = 0; k < 3; ++k)
+      CHECK(std::abs(x[k] / q - offset - std::round(x[k] / q - offset)) < 1e-9);
+}
+
 TEST_CASE("Meshes that differ by round-off are the same on the grid, and get their own nodes back", "[unit][mesh]") {
   const mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
   const mesh::TetMesh one = shaken(box, 1e-9, 1), other = shaken(box, 1e-9, 2);
