@@ -22,14 +22,14 @@ std::array<double, 3> key(const Point& x) {
   return {x.x(), x.y(), x.z()};
 }
 
-/// Nodes of `mesh` whose move from `before` leaves one of their tets below
-/// kKeptVolume of its volume there.
-std::vector<char> spoiling(const TetMesh& mesh, const std::vector<Point>& before) {
+/// Nodes of `mesh` moved from `before` that leave one of their tets below
+/// kKeptVolume of its volume `was` there (one per tet).
+std::vector<char> spoiling(const TetMesh& mesh, const std::vector<Point>& before, const std::vector<double>& was) {
   std::vector<char> out(mesh.nodes.size(), 0);
-  for (const Tet& t : mesh.tets) {
-    const double was = signed_volume(before[t[0]], before[t[1]], before[t[2]], before[t[3]]);
+  for (std::size_t e = 0; e < mesh.tets.size(); ++e) {
+    const Tet& t = mesh.tets[e];
     const double now = signed_volume(mesh.nodes[t[0]], mesh.nodes[t[1]], mesh.nodes[t[2]], mesh.nodes[t[3]]);
-    if (now < kKeptVolume * was)
+    if (now < kKeptVolume * was[e])
       for (int v : t)
         if (mesh.nodes[v] != before[v]) out[v] = 1;
   }
@@ -40,11 +40,14 @@ std::vector<char> spoiling(const TetMesh& mesh, const std::vector<Point>& before
 /// a tet would be spoiled, until none is. Returns the nodes moved.
 int move_where_possible(TetMesh& mesh, const std::vector<Point>& from, const std::vector<Point>& to,
                         const std::vector<char>& wanted) {
+  std::vector<double> was(mesh.tets.size());
+  for (std::size_t e = 0; e < was.size(); ++e)
+    was[e] = signed_volume(mesh, static_cast<int>(e)); // mesh.nodes are `from` here
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
     if (wanted[i]) mesh.nodes[i] = to[i];
   for (bool again = true; again;) {
     again = false;
-    const std::vector<char> back = spoiling(mesh, from);
+    const std::vector<char> back = spoiling(mesh, from, was);
     for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
       if (back[i]) {
         mesh.nodes[i] = from[i];
@@ -71,7 +74,12 @@ double grid_offset(std::size_t k) {
   return share - std::floor(share);
 }
 
-GridSnap::GridSnap(const TetMesh& body, double spacing, double offset) : snapped_(body) {
+Grid remesh_grid(double h, std::size_t k) {
+  return {snap_spacing(h), grid_offset(k)};
+}
+
+GridSnap::GridSnap(const TetMesh& body, Grid grid) : snapped_(body) {
+  const auto [spacing, offset] = grid;
   if (!(spacing > 0.0)) return; // no grid: the nodes as they are, nothing to give back
   const std::size_t n = body.nodes.size();
   std::vector<Point> rounded(n);

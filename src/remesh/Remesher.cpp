@@ -117,8 +117,7 @@ std::optional<Remeshed> remesh_part(const scene::Scene& scene, const scene::RunS
     settings.feature_angle = feature_angle;
     settings.iterations = spec.iterations;
     settings.quality_floor = spec.quality;
-    settings.grid = mesh::snap_spacing(body.remesh_size);
-    settings.grid_offset = mesh::grid_offset(state.remeshes.size());
+    settings.grid = mesh::remesh_grid(body.remesh_size, state.remeshes.size());
     if (size_field) {
       settings.smallest_edge_length = coarsen * scale * smallest;
       settings.size = [&size_field, s = coarsen * scale](const mesh::Point& x) { return size_field(x, s); };

@@ -317,8 +317,7 @@ std::optional<LocalRemesh> remesh_locally(const scene::Scene& scene, const scene
   settings.feature_angle = spec.feature_angle;
   settings.iterations = spec.iterations;
   settings.quality_floor = spec.quality;
-  settings.grid = mesh::snap_spacing(body.remesh_size);
-  settings.grid_offset = mesh::grid_offset(state.remeshes.size());
+  settings.grid = mesh::remesh_grid(body.remesh_size, state.remeshes.size());
   settings.deadline = deadline_in(spec.time_limit);
   RegionRemesh local;
   mesh::TetMesh before_fit; // CGAL's mesh of the old region, before the fit to the dies: ε̄ is remapped on it

@@ -165,7 +165,7 @@ namespace {
 
 /// remesh_body at settings.edge_length everywhere.
 mesh::TetMesh remesh_uniform(const mesh::TetMesh& body, const RemeshSettings& settings) {
-  const mesh::GridSnap on_grid(body, settings.grid, settings.grid_offset);
+  const mesh::GridSnap on_grid(body, settings.grid);
   Triangulation tr;
   std::vector<VertexHandle> handles;
   std::vector<int> patch;
@@ -292,7 +292,7 @@ RegionRemesh remesh_region_in(const mesh::TetMesh& body, std::span<const char> r
   // moves and no collapse removes, and a constrained edge is not flipped.
   // CGAL may still split one longer than 4/3 of the length asked: that
   // border is then not the kept tets' any more, and the remesh is refused.
-  const mesh::GridSnap on_grid(body, settings.grid, settings.grid_offset);
+  const mesh::GridSnap on_grid(body, settings.grid);
   const mesh::TetMesh& given = on_grid.snapped(); // what CGAL is given
   Triangulation tr;
   std::vector<VertexHandle> handles;

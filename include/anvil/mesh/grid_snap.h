@@ -8,9 +8,15 @@
 
 namespace anvil::mesh {
 
-/// The grid a body of element size `h` (mm) is rounded to: the largest power
-/// of two at most h/64, 16 microns at a millimetre. A power of two makes
-/// the rounding exact in floating point, so every process rounds alike.
+/// A grid of points (n + offset) × spacing along each axis (mm); spacing 0:
+/// no grid.
+struct Grid {
+  double spacing = 0.0;
+  double offset = 0.0; ///< a share of the step
+};
+
+/// The step of the grid a body of element size `h` (mm) is rounded to: the
+/// largest power of two at most h/64, 16 microns at a millimetre.
 double snap_spacing(double h);
 
 /// Where the grid of the `k`-th remesh of a run lies: its points at (n + the
@@ -20,6 +26,9 @@ double snap_spacing(double h);
 /// shifted by frac(k (φ − 1)/2) of a step (φ the golden ratio), so that the
 /// last grids' midpoints lie away from this one's half steps.
 double grid_offset(std::size_t k);
+
+/// The grid of the `k`-th remesh of a run, for a body of element size `h`.
+Grid remesh_grid(double h, std::size_t k);
 
 /// The nodes of a body rounded to a grid of `spacing` for a remesh
 /// (docs/remeshing.md, the same mesh on any number of processes). A remesh
@@ -32,9 +41,8 @@ double grid_offset(std::size_t k);
 /// half its volume, or two nodes on one grid point.
 class GridSnap {
 public:
-  /// The grid's points at (n + `offset`) × `spacing`; `spacing` 0: no grid,
-  /// the body as it is.
-  GridSnap(const TetMesh& body, double spacing, double offset = 0.0);
+  /// `grid.spacing` 0: the body as it is.
+  GridSnap(const TetMesh& body, Grid grid);
   /// The body on the grid: what the remesh is given.
   const TetMesh& snapped() const { return snapped_; }
   /// The nodes of `remeshed` that lie where a node of snapped() lies (a

@@ -4,6 +4,7 @@
 // loses volume (4 % on a unit cube, docs/libraries.md §2).
 #pragma once
 #include "anvil/mesh/TetMesh.h"
+#include "anvil/mesh/grid_snap.h"
 
 #include <chrono>
 #include <functional>
@@ -42,13 +43,11 @@ struct RemeshSettings {
   std::size_t most_looks_per_cell_pass = 1000;
   double quality_floor =
       0.0; ///< putting a node back onto the old surface may not leave an element below this (or below what it was)
-  /// mm: CGAL is given the nodes rounded to this grid (mesh/grid_snap.h),
-  /// so that the same body carried by other round-off gives the same mesh;
-  /// the nodes it leaves where they were get their own coordinates back.
-  /// 0: as they are.
-  double grid = 0.0;
-  /// Where the grid's points lie, a share of its step (mesh::grid_offset).
-  double grid_offset = 0.0;
+  /// CGAL is given the nodes rounded to this grid (mesh/grid_snap.h), so
+  /// that the same body carried by other round-off gives the same mesh; the
+  /// nodes it leaves where they were get their own coordinates back. A
+  /// spacing of 0: as they are.
+  mesh::Grid grid;
 };
 
 /// The deadline `seconds` from now (a RemeshSettings::deadline).

@@ -43,7 +43,7 @@ TEST_CASE("Each remesh's grid keeps its half steps away from the last three grid
       CHECK(std::min(apart, 0.5 - apart) > 0.07);
     }
   const double q = mesh::snap_spacing(1.0), offset = mesh::grid_offset(1);
-  const mesh::GridSnap on_grid(mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0), q, offset);
+  const mesh::GridSnap on_grid(mesh::make_box({0, 0, 0}, {2, 2, 2}, 1.0), {q, offset});
   for (const mesh::Point& x : on_grid.snapped().nodes)
     for (int k = 0; k < 3; ++k)
       CHECK(std::abs(x[k] / q - offset - std::round(x[k] / q - offset)) < 1e-9);
@@ -53,7 +53,7 @@ TEST_CASE("Meshes that differ by round-off are the same on the grid, and get the
   const mesh::TetMesh box = mesh::make_box({0, 0, 0}, {10, 6, 4}, 1.0);
   const mesh::TetMesh one = shaken(box, 1e-9, 1), other = shaken(box, 1e-9, 2);
   const double q = mesh::snap_spacing(1.0);
-  const mesh::GridSnap on_grid(one, q), other_on_grid(other, q);
+  const mesh::GridSnap on_grid(one, {q, 0.0}), other_on_grid(other, {q, 0.0});
   CHECK(on_grid.snapped().nodes == other_on_grid.snapped().nodes);
   for (const mesh::Point& x : on_grid.snapped().nodes)
     for (int k = 0; k < 3; ++k)
@@ -71,12 +71,12 @@ TEST_CASE("A node whose rounding would flatten a tet stays where it is", "[unit]
   const double q = mesh::snap_spacing(1.0);
   // The apex 0.3 q above the base rounds onto it: the tet would be flat.
   const mesh::TetMesh low = one_tet({0.3, 0.3, 0.3 * q});
-  const mesh::GridSnap low_on_grid(low, q);
+  const mesh::GridSnap low_on_grid(low, {q, 0.0});
   CHECK(low_on_grid.snapped().nodes[3] == low.nodes[3]);
   CHECK(mesh::signed_volume(low_on_grid.snapped(), 0) == mesh::signed_volume(low, 0));
   // Ten steps up, rounding changes the tet's volume by a few per cent: it goes onto the grid.
   const mesh::TetMesh high = one_tet({0.3, 0.3, 10.3 * q});
-  const mesh::GridSnap high_on_grid(high, q);
+  const mesh::GridSnap high_on_grid(high, {q, 0.0});
   CHECK(high_on_grid.snapped().nodes[3] == mesh::Point(std::round(0.3 / q) * q, std::round(0.3 / q) * q, 10 * q));
 }
 
@@ -87,7 +87,7 @@ TEST_CASE("Two nodes that would round onto one grid point stay where they are", 
   // and restore could not tell which node was which.
   mesh::TetMesh m = one_tet({0.3, 0.3, 0.5});
   m.nodes.push_back({0.1 * q, -0.1 * q, 0.0});
-  const mesh::GridSnap on_grid(m, q);
+  const mesh::GridSnap on_grid(m, {q, 0.0});
   CHECK(on_grid.snapped().nodes[4] == m.nodes[4]);
   CHECK(on_grid.snapped().nodes[3] != m.nodes[3]); // the apex, alone on its point, is rounded
 }

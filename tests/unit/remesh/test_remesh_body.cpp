@@ -331,7 +331,7 @@ TEST_CASE("Two meshes of a body that differ by round-off are remeshed alike on t
   // the nodes it left where they were keep their own coordinates.
   const mesh::TetMesh one = shaken(squeezed_box(), 1e-9, 1), other = shaken(squeezed_box(), 1e-9, 2);
   remesh::RemeshSettings settings;
-  settings.grid = mesh::snap_spacing(1.0);
+  settings.grid = {mesh::snap_spacing(1.0), 0.0};
   settings.edge_length = 0.8;
   const mesh::TetMesh whole = remesh::remesh_body(one, settings), whole_other = remesh::remesh_body(other, settings);
   CHECK(whole.tets == whole_other.tets);
