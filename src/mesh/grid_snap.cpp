@@ -8,12 +8,12 @@
 namespace anvil::mesh {
 namespace {
 
-/// Grid steps per element length at most. Runs on 1 and 2 processes part by
-/// what the Newton tolerance leaves, up to a micron or so at some nodes over
-/// the increments between two remeshes at a millimetre: a step of h/64 (16
-/// µm) is seldom crossed by that, and rounding by half a step spoils only a
-/// tet flatter than about quality 0.02. A grid of h/32 parted the hub
-/// flange's runs as early (docs/remeshing.md).
+/// Grid steps per element length at most. Runs on 1 and 2 processes carry
+/// the nodes apart by round-off, under a nanometre, until the contact's
+/// active set takes another side at one node (docs/remeshing.md): a step of
+/// h/64 (16 µm) is seldom crossed by the first, and rounding by half a step
+/// spoils only a tet flatter than about quality 0.02. A grid of h/32 parted
+/// the hub flange's runs as early.
 constexpr double kCellsPerElement = 64.0;
 /// Share of its own volume a tet keeps when its nodes move to or from the grid.
 constexpr double kKeptVolume = 0.5;
